@@ -1,0 +1,29 @@
+// Unmodelled effects of contract section 4: each one small unit that extends
+// the baseline system and leaves it unchanged with its parameters at zero.
+#ifndef RINGID_MODEL_EFFECTS_H_
+#define RINGID_MODEL_EFFECTS_H_
+
+#include <string>
+#include <vector>
+
+#include "model/parameters.h"
+#include "model/system.h"
+
+namespace ringid {
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual const char* name() const = 0;
+  // The parameters the effect adds (baseline value 0 unless noted).
+  virtual std::vector<Param> parameters() const = 0;
+  virtual void Apply(const Parameters& p, MechanicalSystem* s) const = 0;
+};
+
+// The catalogue, in contract order; pointers live for the program's life.
+const std::vector<const Effect*>& EffectCatalogue();
+const Effect* FindEffect(const std::string& name);
+
+}  // namespace ringid
+
+#endif  // RINGID_MODEL_EFFECTS_H_

@@ -1,0 +1,56 @@
+// The state-space modal solution of eqs. (13) and (17), with robust labels.
+#ifndef RINGID_MODEL_MODAL_H_
+#define RINGID_MODEL_MODAL_H_
+
+#include <array>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "model/names.h"
+#include "model/system.h"
+
+namespace ringid {
+
+using ShapeVector = Eigen::Matrix<std::complex<double>, kNumDofs, 1>;
+using RealShapeVector = Eigen::Matrix<double, kNumDofs, 1>;
+
+struct Mode {
+  ModeLabel label;
+  // The eigenvalue lambda of A = [[0, I], [-M^-1 K, -M^-1 C]] with Im > 0.
+  std::complex<double> eigenvalue;
+  double frequency_hz;   // damped: Im(lambda) / 2 pi (contract section 2)
+  double damping_ratio;  // -Re(lambda) / |lambda|
+  // Displacement eigenvector, rotated so its largest-magnitude component is
+  // real and positive, scaled so that component is 1; zero off its block.
+  ShapeVector shape;
+  // Share of the mode's generalised strain energy |w^T K_label v| carried by
+  // the elements of each label (w the left eigenvector); sums to <= 1.
+  std::array<double, kNumLabels> energy;
+
+  Plane plane() const { return LabelPlane(label); }
+  // Contract convention for comparison with a measured real shape.
+  RealShapeVector RealShape() const { return shape.real(); }
+  // The paper's Tables 4-5 convention: real part of the displacement half of
+  // the state vector [v; lambda v] scaled to unit 2-norm, largest entry real.
+  RealShapeVector PaperShape() const;
+};
+
+struct ModalSolution {
+  bool ok = false;
+  std::string error;            // why, when !ok
+  std::vector<Mode> modes;      // ascending frequency
+  std::vector<ModeLabel> vanished;  // labels whose pair of roots is real
+
+  const Mode* Find(ModeLabel label) const;
+};
+
+// Solves each block of coupled active degrees of freedom, and labels its modes
+// by the one-to-one assignment that maximises the product of energy shares.
+ModalSolution SolveModes(const MechanicalSystem& system);
+
+}  // namespace ringid
+
+#endif  // RINGID_MODEL_MODAL_H_

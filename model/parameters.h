@@ -1,0 +1,92 @@
+// The parameter catalogue (contract section 1 and 4) and a parameter set.
+#ifndef RINGID_MODEL_PARAMETERS_H_
+#define RINGID_MODEL_PARAMETERS_H_
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace ringid {
+
+// How a parameter may vary. Estimation works in log space for kPositive.
+enum class Domain { kPositive, kNonNegative, kReal };
+
+// Which part of the model a parameter belongs to.
+enum class Group { kInertia, kInPlane, kOutOfPlane, kEffect };
+
+// name, unit, domain, group, description. Order fixes the Param enum.
+#define RINGID_PARAMETERS(X)                                                   \
+  X(m_b, "kg", kPositive, kInertia, "belt (ring) mass")                        \
+  X(I_ay, "kg m^2", kPositive, kInertia, "rim moment of inertia about y")      \
+  X(I_by, "kg m^2", kPositive, kInertia, "belt moment of inertia about y")     \
+  X(I_bx, "kg m^2", kPositive, kInertia, "belt moment of inertia about x")     \
+  X(I_bz, "kg m^2", kPositive, kInertia, "belt moment of inertia about z")     \
+  X(F_cz0, "N", kPositive, kInertia, "static vertical load")                   \
+  X(c_bx, "N s/m", kPositive, kInPlane, "sidewall damping, longitudinal")      \
+  X(c_bz, "N s/m", kPositive, kInPlane, "sidewall damping, vertical")          \
+  X(c_btheta, "N m s/rad", kPositive, kInPlane, "sidewall damping, rotation")  \
+  X(k_bx, "N/m", kPositive, kInPlane, "sidewall stiffness, longitudinal")      \
+  X(k_bz, "N/m", kPositive, kInPlane, "sidewall stiffness, vertical")          \
+  X(k_btheta, "N m/rad", kPositive, kInPlane, "sidewall stiffness, rotation")  \
+  X(K_cx, "N", kPositive, kInPlane, "longitudinal slip stiffness of contact")  \
+  X(sigma_cx, "m", kPositive, kInPlane, "longitudinal relaxation length")      \
+  X(r_e0, "m", kPositive, kInPlane, "effective rolling radius")                \
+  X(k_cz, "N/m", kPositive, kInPlane, "vertical residual stiffness")           \
+  X(c_by, "N s/m", kPositive, kOutOfPlane, "sidewall damping, lateral")        \
+  X(c_bgamma, "N m s/rad", kPositive, kOutOfPlane, "sidewall damping, camber") \
+  X(c_bpsi, "N m s/rad", kPositive, kOutOfPlane, "sidewall damping, yaw")      \
+  X(k_by, "N/m", kPositive, kOutOfPlane, "sidewall stiffness, lateral")        \
+  X(k_bgamma, "N m/rad", kPositive, kOutOfPlane, "sidewall stiffness, camber") \
+  X(k_bpsi, "N m/rad", kPositive, kOutOfPlane, "sidewall stiffness, yaw")      \
+  X(K_cy, "N", kPositive, kOutOfPlane, "lateral slip stiffness of contact")    \
+  X(sigma_cy, "m", kPositive, kOutOfPlane, "lateral relaxation length")        \
+  X(r_l0, "m", kPositive, kOutOfPlane, "loaded radius")                        \
+  X(t_0, "m", kPositive, kOutOfPlane, "pneumatic trail")                       \
+  X(m_a, "kg", kPositive, kEffect, "hub mass (hub_compliance)")                \
+  X(dk_bz, "N/m", kReal, kEffect, "k_bz - k_bx (anisotropic_sidewall)")        \
+  X(dk_bpsi, "N m/rad", kReal, kEffect, "k_bpsi - k_bgamma (anisotropic_sidewall)") \
+  X(s_h, "m/N", kNonNegative, kEffect, "hub compliance (hub_compliance)")      \
+  X(k_cpsi, "N m/rad", kNonNegative, kEffect, "contact yaw stiffness")         \
+  X(k_atheta, "N m/rad", kNonNegative, kEffect, "rim torsional restraint (axle_torsion)") \
+  X(dm, "kg", kNonNegative, kEffect, "sensor mass on the tread (sensor_mass)") \
+  X(k_xy, "N/m", kReal, kEffect, "x_b-y_b coupling stiffness (lug_coupling)")
+
+enum class Param : int {
+#define RINGID_ENUM(name, unit, domain, group, text) name,
+  RINGID_PARAMETERS(RINGID_ENUM)
+#undef RINGID_ENUM
+};
+
+#define RINGID_COUNT(name, unit, domain, group, text) +1
+inline constexpr int kNumParams = 0 RINGID_PARAMETERS(RINGID_COUNT);
+#undef RINGID_COUNT
+
+struct ParameterInfo {
+  const char* name;
+  const char* unit;
+  Domain domain;
+  Group group;
+  const char* description;
+};
+
+const ParameterInfo& Info(Param p);
+inline const char* ParamName(Param p) { return Info(p).name; }
+std::optional<Param> ParseParam(const std::string& name);
+inline Param ParamAt(int i) { return static_cast<Param>(i); }
+
+// A value for every parameter of the catalogue; effect parameters default to
+// their baseline value 0, everything else to NaN (unset).
+class Parameters {
+ public:
+  Parameters();
+  double operator[](Param p) const { return v_[static_cast<int>(p)]; }
+  double& operator[](Param p) { return v_[static_cast<int>(p)]; }
+  bool IsSet(Param p) const;
+
+ private:
+  std::array<double, kNumParams> v_;
+};
+
+}  // namespace ringid
+
+#endif  // RINGID_MODEL_PARAMETERS_H_

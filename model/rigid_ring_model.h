@@ -1,0 +1,40 @@
+// The standing rigid-ring model of ERRATA.md, optionally extended by effects.
+#ifndef RINGID_MODEL_RIGID_RING_MODEL_H_
+#define RINGID_MODEL_RIGID_RING_MODEL_H_
+
+#include <vector>
+
+#include "model/effects.h"
+#include "model/modal.h"
+#include "model/parameters.h"
+#include "model/system.h"
+
+namespace ringid {
+
+// The one interface estimation sees: parameters in, labelled modes out.
+class ModalModel {
+ public:
+  virtual ~ModalModel() = default;
+  virtual ModalSolution Solve(const Parameters& p) const = 0;
+  // The parameters Solve reads, in catalogue order.
+  virtual std::vector<Param> parameters() const = 0;
+};
+
+class RigidRingModel final : public ModalModel {
+ public:
+  explicit RigidRingModel(std::vector<const Effect*> effects = {});
+
+  // Eqs. (12) and (15) as corrected in ERRATA.md, then each effect.
+  MechanicalSystem Assemble(const Parameters& p) const;
+  ModalSolution Solve(const Parameters& p) const override;
+  std::vector<Param> parameters() const override;
+  const std::vector<const Effect*>& effects() const { return effects_; }
+
+ private:
+  std::vector<const Effect*> effects_;
+  std::vector<Param> used_;
+};
+
+}  // namespace ringid
+
+#endif  // RINGID_MODEL_RIGID_RING_MODEL_H_
