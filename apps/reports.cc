@@ -1,0 +1,228 @@
+#include "apps/reports.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace ringid {
+namespace {
+
+using nlohmann::json;
+
+json Finite(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json Matrix(const Eigen::MatrixXd& m) {
+  json rows = json::array();
+  for (int i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (int j = 0; j < m.cols(); ++j) row.push_back(Finite(m(i, j)));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+json ShapeJson(const ShapeVector& shape) {
+  json o = json::object();
+  for (int i = 0; i < kNumDofs; ++i) {
+    if (shape[i] == std::complex<double>(0, 0)) continue;
+    o[DofName(static_cast<Dof>(i))] = {{"re", shape[i].real()},
+                                       {"im", shape[i].imag()}};
+  }
+  return o;
+}
+
+}  // namespace
+
+json IdentifyReport(const IdentifySummary& s, const Dataset& d,
+                    const IdentifyOptions& o) {
+  json r;
+  r["report"] = "identify";
+  r["dataset"] = d.name;
+  r["method"] = MethodName(s.method);
+  r["success"] = s.success;
+  r["converged"] = s.converged;
+  r["message"] = s.message;
+  r["cost"] = Finite(s.cost);
+  r["evaluations"] = s.evaluations;
+  r["seconds"] = s.seconds;
+  r["starts"] = s.starts;
+  json costs = json::array();
+  for (double c : s.start_costs) costs.push_back(Finite(c));
+  r["start_costs"] = costs;
+  r["frequency_weighting"] =
+      o.residuals.frequency_weighting == FrequencyWeighting::kSigma ? "sigma"
+                                                                     : "relative";
+  r["relative_error"] = {{"in_plane_eq19", Finite(s.relative_error_in_plane)},
+                         {"out_of_plane_eq20", Finite(s.relative_error_out_of_plane)}};
+  json params = json::object();
+  for (const ParameterEstimate& e : s.estimates) {
+    json p;
+    p["value"] = e.value;
+    p["unit"] = Info(e.param).unit;
+    p["free"] = e.free;
+    if (e.tied_to) p["tied_to"] = ParamName(*e.tied_to);
+    p["std"] = e.std ? json(*e.std) : json(nullptr);
+    p["identifiable"] = IdentifiabilityName(e.identifiable);
+    p["reason"] = e.reason;
+    params[ParamName(e.param)] = p;
+  }
+  r["parameters"] = params;
+  const Uncertainty& u = s.uncertainty;
+  json cov;
+  cov["names"] = s.coordinate_names;
+  cov["coordinates"] = "log for positive parameters";
+  cov["rank"] = u.rank;
+  cov["computed"] = u.covariance_ok;
+  if (!u.covariance_ok) cov["error"] = u.ok ? u.covariance_error : u.error;
+  cov["matrix"] = u.covariance_ok ? Matrix(u.covariance) : json(nullptr);
+  json sv = json::array();
+  for (int i = 0; i < u.singular_values.size(); ++i) {
+    sv.push_back(u.singular_values[i]);
+  }
+  cov["singular_values"] = sv;
+  cov["condition_number"] = Finite(u.condition_number);
+  r["covariance"] = cov;
+  json modes = json::array();
+  for (const ModeFit& m : s.modes) {
+    json j;
+    j["label"] = LabelName(m.label);
+    j["measured_hz"] = m.measured_hz;
+    j["model_hz"] = m.model_hz;
+    j["model_label"] = LabelName(m.model_label);
+    j["model_damping_ratio"] = m.model_damping;
+    if (m.measured_damping) j["measured_damping_ratio"] = *m.measured_damping;
+    if (m.mac) j["mac"] = *m.mac;
+    modes.push_back(j);
+  }
+  r["modes"] = modes;
+  return r;
+}
+
+json PredictReport(const ModalSolution& s) {
+  json r;
+  r["report"] = "predict";
+  r["ok"] = s.ok;
+  if (!s.ok) r["error"] = s.error;
+  json modes = json::array();
+  for (const Mode& m : s.modes) {
+    json j;
+    j["label"] = LabelName(m.label);
+    j["plane"] = PlaneName(m.plane());
+    j["model_hz"] = m.frequency_hz;
+    j["damping_ratio"] = m.damping_ratio;
+    j["label_energy_share"] = m.energy[static_cast<int>(m.label)];
+    j["shape"] = ShapeJson(m.shape);
+    json paper = json::object();
+    const RealShapeVector ps = m.PaperShape();
+    for (int i = 0; i < kNumDofs; ++i) {
+      if (m.shape[i] != std::complex<double>(0, 0)) {
+        paper[DofName(static_cast<Dof>(i))] = ps[i];
+      }
+    }
+    j["paper_eigenvector"] = paper;
+    modes.push_back(j);
+  }
+  r["modes"] = modes;
+  json gone = json::array();
+  for (ModeLabel l : s.vanished) gone.push_back(LabelName(l));
+  r["overdamped"] = gone;
+  return r;
+}
+
+json ParameterSetJson(const IdentifySummary& s, const std::string& name,
+                      const std::string& description) {
+  json r;
+  r["format"] = "ringid-parameters/1";
+  r["name"] = name;
+  r["description"] = description;
+  json params = json::object();
+  for (const ParameterEstimate& e : s.estimates) {
+    params[ParamName(e.param)] = {
+        {"value", e.value}, {"std", e.std ? json(*e.std) : json(nullptr)}};
+  }
+  r["parameters"] = params;
+  return r;
+}
+
+bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error) {
+  error->file = path;
+  error->field = "";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error->message = "cannot open file";
+    return false;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(text.str());
+  } catch (const json::exception& e) {
+    error->message = "not valid JSON";
+    return false;
+  }
+  auto fail = [&](const std::string& field, const std::string& message) {
+    error->field = field;
+    error->message = message;
+    return false;
+  };
+  if (!j.is_object()) return fail("", "top level must be a JSON object");
+  if (!j.contains("parameters") || !j["parameters"].is_object()) {
+    return fail("parameters", "missing or not an object");
+  }
+  if (j.contains("format") && j["format"] != "ringid-parameters/1") {
+    return fail("format", "must be \"ringid-parameters/1\"");
+  }
+  *p = Parameters{};
+  const json& ps = j["parameters"];
+  for (auto it = ps.begin(); it != ps.end(); ++it) {
+    const std::string field = "parameters." + it.key();
+    const auto param = ParseParam(it.key());
+    if (!param) return fail(field, "unknown parameter '" + it.key() + "'");
+    const json& v = it.value().is_object() && it.value().contains("value")
+                        ? it.value()["value"]
+                        : it.value();
+    if (!v.is_number() || !std::isfinite(v.get<double>())) {
+      return fail(field, "value must be a finite number");
+    }
+    (*p)[*param] = v.get<double>();
+  }
+  return true;
+}
+
+bool CanWrite(const std::string& path, std::string* error) {
+  const std::string probe = path + ".ringid-probe";
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) {
+    *error = path + ": cannot write: " + std::strerror(errno);
+    return false;
+  }
+  std::fclose(f);
+  std::remove(probe.c_str());
+  return true;
+}
+
+bool WriteFileAtomically(const std::string& path, const std::string& text,
+                         std::string* error) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) {
+    *error = path + ": cannot write: " + std::strerror(errno);
+    return false;
+  }
+  const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const bool closed = std::fclose(f) == 0;
+  if (!wrote || !closed || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    *error = path + ": cannot write: " + std::strerror(errno);
+    std::remove(tmp.c_str());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ringid

@@ -1,0 +1,36 @@
+// JSON reports of contract section 6, parameter-set files, atomic writes.
+#ifndef RINGID_APPS_REPORTS_H_
+#define RINGID_APPS_REPORTS_H_
+
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "datasets/dataset.h"
+#include "estimation/identify.h"
+#include "model/modal.h"
+
+namespace ringid {
+
+nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
+                              const IdentifyOptions& o);
+nlohmann::json PredictReport(const ModalSolution& s);
+
+// A parameter set: {"format": "ringid-parameters/1", "name", "description",
+// "parameters": {NAME: {"value": V, "std": S or null}}}. An identify report's
+// "parameters" object has the same form, so a report can be read back.
+nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,
+                                const std::string& description);
+bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
+
+// Writes via a temporary file beside `path` and a rename: a reader never sees
+// a half-written report. False with a one-line message on failure.
+bool WriteFileAtomically(const std::string& path, const std::string& text,
+                         std::string* error);
+// Whether `path` could be written, checked before a long run starts.
+bool CanWrite(const std::string& path, std::string* error);
+
+}  // namespace ringid
+
+#endif  // RINGID_APPS_REPORTS_H_

@@ -1,0 +1,241 @@
+// ringid: identify rigid-ring tire parameters from modal data.
+// A thin layer: parse flags, load, call the library, print, write the report.
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "apps/reports.h"
+#include "datasets/dataset.h"
+#include "estimation/identify.h"
+#include "model/effects.h"
+#include "model/rigid_ring_model.h"
+
+DEFINE_string(dataset, "", "modal dataset (contract section 3)");
+DEFINE_string(parameters, "", "parameter set (ringid-parameters/1 or an identify report)");
+DEFINE_string(output, "", "write the JSON report here");
+DEFINE_string(save_parameters, "", "identify: also write the fitted parameter set here");
+DEFINE_string(method, "lm", "identify: lm (Levenberg-Marquardt) or simplex (Downhill Simplex)");
+DEFINE_int32(starts, 4, "identify: number of starts (the initial point and starts-1 random ones)");
+DEFINE_int32(seed, 1, "identify: seed of the random starts");
+DEFINE_string(weighting, "sigma", "identify: frequency weighting, sigma or relative (eqs. 19-20)");
+DEFINE_double(relative_sigma, 0.01, "identify: relative frequency sigma where none is given");
+DEFINE_bool(shapes, true, "identify: use measured mode shapes");
+DEFINE_bool(damping, true, "identify: use measured damping ratios");
+DEFINE_string(shape_convention, "contract",
+              "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
+DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
+
+namespace ringid {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;   // the analysis ran but failed numerically
+constexpr int kExitUsage = 2;     // bad input: file, field or flag
+
+const char kHelp[] =
+    "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
+    "\n"
+    "usage: ringid COMMAND [--flag=value ...]\n"
+    "\n"
+    "commands:\n"
+    "  help       this text\n"
+    "  predict    modes of a parameter set, as a table and JSON\n"
+    "             --parameters=FILE | --dataset=FILE  [--effects=LIST] [--output=FILE]\n"
+    "  identify   fit parameters to a dataset, with covariance and identifiability\n"
+    "             --dataset=FILE [--method=lm|simplex] [--starts=N] [--seed=N]\n"
+    "             [--weighting=sigma|relative] [--relative_sigma=X] [--shapes=BOOL]\n"
+    "             [--damping=BOOL] [--shape_convention=contract|paper]\n"
+    "             [--effects=LIST] [--output=FILE] [--save_parameters=FILE]\n"
+    "\n"
+    "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
+    "         axle_torsion, sensor_mass, lug_coupling\n"
+    "\n"
+    "exit status:\n"
+    "  0  success\n"
+    "  1  the run finished but the analysis failed (the report says why)\n"
+    "  2  bad input: unreadable or malformed file, unknown or bad flag,\n"
+    "     unwritable --output; one line on stderr, nothing written\n";
+
+int Usage(const std::string& line) {
+  std::fprintf(stderr, "ringid: %s\n", line.c_str());
+  return kExitUsage;
+}
+
+// Sets the flags of argv[2..] one by one, so that a bad flag is a one-line
+// error with exit status 2 rather than gflags' own exit.
+bool SetFlags(int argc, char** argv, const std::set<std::string>& allowed,
+              std::string* error) {
+  for (int i = 2; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.rfind("--", 0) != 0) {
+      *error = "unexpected argument '" + arg + "'";
+      return false;
+    }
+    arg = arg.substr(2);
+    const size_t eq = arg.find('=');
+    const std::string name = arg.substr(0, eq);
+    std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
+    gflags::CommandLineFlagInfo info;
+    if (!allowed.count(name) || !gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
+      *error = "--" + name + ": unknown flag for '" + argv[1] + "'";
+      return false;
+    }
+    if (eq == std::string::npos) {
+      if (info.type != "bool") {
+        *error = "--" + name + ": needs a value (--" + name + "=...)";
+        return false;
+      }
+      value = "true";
+    }
+    if (gflags::SetCommandLineOption(name.c_str(), value.c_str()).empty()) {
+      *error = "--" + name + ": bad value '" + value + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ParseEffects(std::vector<const Effect*>* effects, std::string* error) {
+  std::stringstream list(FLAGS_effects);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    if (name.empty()) continue;
+    const Effect* e = FindEffect(name);
+    if (!e) {
+      *error = "--effects: unknown effect '" + name + "'";
+      return false;
+    }
+    effects->push_back(e);
+  }
+  return true;
+}
+
+int Write(const std::string& path, const nlohmann::json& report) {
+  std::string error;
+  if (!WriteFileAtomically(path, report.dump(2) + "\n", &error)) {
+    return Usage(error);
+  }
+  return kExitOk;
+}
+
+int Predict(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, {"parameters", "dataset", "effects", "output"}, &error)) {
+    return Usage(error);
+  }
+  std::vector<const Effect*> effects;
+  if (!ParseEffects(&effects, &error)) return Usage(error);
+  if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
+    return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
+  }
+  if (!FLAGS_output.empty() && !CanWrite(FLAGS_output, &error)) return Usage(error);
+  Parameters p;
+  LoadError load;
+  if (!FLAGS_parameters.empty()) {
+    if (!LoadParameterSet(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+  } else {
+    Dataset d;
+    if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
+    for (const auto& [k, v] : d.known) p[k] = v;
+    for (const auto& [k, v] : d.initial) p[k] = v;
+    for (const auto& [from, to] : d.ties) p[from] = p[to];
+  }
+  const RigidRingModel model(effects);
+  const ModalSolution s = model.Solve(p);
+  if (!s.ok) {
+    std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
+  } else {
+    std::printf("%-22s %-13s %10s %8s\n", "mode", "plane", "Hz", "zeta");
+    for (const Mode& m : s.modes) {
+      std::printf("%-22s %-13s %10.3f %8.4f\n", LabelName(m.label),
+                  PlaneName(m.plane()), m.frequency_hz, m.damping_ratio);
+    }
+    for (ModeLabel l : s.vanished) {
+      std::printf("%-22s overdamped: no oscillating mode\n", LabelName(l));
+    }
+  }
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, PredictReport(s));
+    if (rc != kExitOk) return rc;
+  }
+  return s.ok ? kExitOk : kExitFailure;
+}
+
+int IdentifyCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv,
+                {"dataset", "method", "starts", "seed", "weighting",
+                 "relative_sigma", "shapes", "damping", "shape_convention",
+                 "effects", "output", "save_parameters"},
+                &error)) {
+    return Usage(error);
+  }
+  IdentifyOptions o;
+  if (FLAGS_method == "lm") o.method = Method::kLevenbergMarquardt;
+  else if (FLAGS_method == "simplex") o.method = Method::kSimplex;
+  else return Usage("--method: must be lm or simplex");
+  if (FLAGS_weighting == "sigma") o.residuals.frequency_weighting = FrequencyWeighting::kSigma;
+  else if (FLAGS_weighting == "relative") o.residuals.frequency_weighting = FrequencyWeighting::kRelative;
+  else return Usage("--weighting: must be sigma or relative");
+  if (FLAGS_shape_convention == "contract") o.residuals.shape_convention = ShapeConvention::kContract;
+  else if (FLAGS_shape_convention == "paper") o.residuals.shape_convention = ShapeConvention::kPaper;
+  else return Usage("--shape_convention: must be contract or paper");
+  o.starts = FLAGS_starts;
+  o.seed = static_cast<unsigned>(FLAGS_seed);
+  o.residuals.relative_sigma = FLAGS_relative_sigma;
+  o.residuals.use_shapes = FLAGS_shapes;
+  o.residuals.use_damping = FLAGS_damping;
+  if (!o.IsValid(&error)) return Usage("bad option: " + error);
+  std::vector<const Effect*> effects;
+  if (!ParseEffects(&effects, &error)) return Usage(error);
+  if (FLAGS_dataset.empty()) return Usage("identify needs --dataset=FILE");
+  for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
+    if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
+  }
+  Dataset d;
+  LoadError load;
+  if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
+  const RigidRingModel model(effects);
+  IdentifySummary s;
+  Identify(model, d, o, &s);
+  // A setup the model cannot use (a free parameter without a value) is bad input.
+  if (!s.success && s.evaluations == 0 && s.starts == 0) {
+    return Usage(FLAGS_dataset + ": " + s.message);
+  }
+  std::printf("%s", s.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, IdentifyReport(s, d, o));
+    if (rc != kExitOk) return rc;
+  }
+  if (!FLAGS_save_parameters.empty() && s.success) {
+    const int rc = Write(FLAGS_save_parameters,
+                         ParameterSetJson(s, d.name, "identified by ringid from " + FLAGS_dataset));
+    if (rc != kExitOk) return rc;
+  }
+  return s.success ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+}  // namespace ringid
+
+int main(int argc, char** argv) {
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = 2;
+  google::InitGoogleLogging(argv[0]);
+  gflags::SetUsageMessage("see 'ringid help'");
+  const std::string command = argc > 1 ? argv[1] : "help";
+  if (command == "help" || command == "--help" || command == "-h") {
+    std::fputs(ringid::kHelp, stdout);
+    return 0;
+  }
+  if (command == "predict") return ringid::Predict(argc, argv);
+  if (command == "identify") return ringid::IdentifyCommand(argc, argv);
+  return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
+}

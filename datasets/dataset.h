@@ -1,0 +1,61 @@
+// The modal dataset of contract section 3 and its strict loader.
+#ifndef RINGID_DATASETS_DATASET_H_
+#define RINGID_DATASETS_DATASET_H_
+
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/names.h"
+#include "model/parameters.h"
+
+namespace ringid {
+
+struct MeasuredMode {
+  ModeLabel label;
+  double frequency_hz = 0;
+  std::optional<double> frequency_sigma_hz;
+  std::optional<double> damping_ratio;
+  std::optional<double> damping_sigma;
+  std::vector<std::pair<Dof, double>> shape;  // empty: no shape measured
+  std::optional<double> shape_sigma;
+};
+
+struct Dataset {
+  std::string path;  // where it was loaded from, for messages
+  std::string name;
+  std::string description;
+  std::map<Param, double> known;
+  std::map<Param, double> initial;
+  std::map<Param, Param> ties;  // parameter -> the one whose value it shares
+  std::vector<MeasuredMode> modes;
+};
+
+// Limits the loader enforces (README "Limits").
+inline constexpr int kMaxModes = 64;
+inline constexpr int kMaxJsonDepth = 16;
+inline constexpr long kMaxFileBytes = 4 << 20;
+
+// What went wrong, as one line: "FILE: FIELD: MESSAGE".
+struct LoadError {
+  std::string file;
+  std::string field;  // JSON path, e.g. "modes[2].frequency_hz"; may be empty
+  std::string message;
+  std::string OneLine() const;
+};
+
+// Loads and checks a dataset. On failure returns false and fills `error`;
+// `dataset` is then unspecified.
+bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);
+// The same from text in memory; `path` only names it in messages.
+bool ParseDataset(const std::string& text, const std::string& path,
+                  Dataset* dataset, LoadError* error);
+
+// Writes a dataset back to the contract's JSON form.
+std::string DatasetToJson(const Dataset& dataset);
+
+}  // namespace ringid
+
+#endif  // RINGID_DATASETS_DATASET_H_

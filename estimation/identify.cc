@@ -1,0 +1,316 @@
+#include "estimation/identify.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include <ceres/ceres.h>
+
+namespace ringid {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Fit {
+  Eigen::VectorXd x;
+  double cost = kInf;
+  bool converged = false;
+  std::string message;
+};
+
+Fit FitLevenbergMarquardt(const ModalResiduals& residuals,
+                          const Eigen::VectorXd& x0,
+                          const Eigen::VectorXd& lower,
+                          const Eigen::VectorXd& upper,
+                          const IdentifyOptions& o) {
+  Fit fit;
+  fit.x = x0;
+  const int n = static_cast<int>(x0.size());
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
+                                                         ceres::CENTRAL>(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
+  cost->AddParameterBlock(n);
+  cost->SetNumResiduals(residuals.num_residuals());
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, fit.x.data());
+  for (int i = 0; i < n; ++i) {
+    problem.SetParameterLowerBound(fit.x.data(), i, lower[i]);
+    problem.SetParameterUpperBound(fit.x.data(), i, upper[i]);
+  }
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = o.max_iterations;
+  so.function_tolerance = 1e-14;
+  so.gradient_tolerance = 1e-14;
+  so.parameter_tolerance = 1e-12;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.num_threads = 1;
+  ceres::Solver::Summary summary;
+  // Ceres checks the initial point itself; an unsolvable start fails cleanly.
+  std::vector<double> r(residuals.num_residuals());
+  if (!residuals.Evaluate(fit.x.data(), r.data())) {
+    fit.message = "the model cannot be solved at this start";
+    return fit;
+  }
+  ceres::Solve(so, &problem, &summary);
+  fit.cost = summary.IsSolutionUsable() ? summary.final_cost : kInf;
+  fit.converged = summary.termination_type == ceres::CONVERGENCE;
+  fit.message = summary.message;
+  return fit;
+}
+
+Fit FitSimplex(const ModalResiduals& residuals, const Eigen::VectorXd& x0,
+               const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
+               const IdentifyOptions& o) {
+  std::vector<double> r(residuals.num_residuals());
+  auto f = [&](const Eigen::VectorXd& x) {
+    if (!residuals.Evaluate(x.data(), r.data())) return kInf;
+    double c = 0;
+    for (double v : r) c += v * v;
+    return 0.5 * c;
+  };
+  const SimplexResult s = MinimizeNelderMead(f, x0, lower, upper, o.simplex);
+  Fit fit;
+  fit.x = s.x;
+  fit.cost = s.cost;
+  fit.converged = s.converged;
+  fit.message = s.message;
+  return fit;
+}
+
+double Seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+      .count();
+}
+
+}  // namespace
+
+const char* MethodName(Method m) {
+  return m == Method::kSimplex ? "simplex" : "lm";
+}
+
+bool IdentifyOptions::IsValid(std::string* why) const {
+  if (starts < 1 || starts > 100000) {
+    *why = "starts must lie in [1, 100000]";
+    return false;
+  }
+  if (!(start_spread >= 0 && start_spread <= 10)) {
+    *why = "start_spread must lie in [0, 10]";
+    return false;
+  }
+  if (!(bound_factor > 1 && std::isfinite(bound_factor))) {
+    *why = "bound_factor must be finite and greater than 1";
+    return false;
+  }
+  if (max_iterations < 1) {
+    *why = "max_iterations must be at least 1";
+    return false;
+  }
+  return simplex.IsValid(why) && residuals.IsValid(why) &&
+         uncertainty.IsValid(why);
+}
+
+void Identify(const ModalModel& model, const Dataset& dataset,
+              const IdentifyOptions& o, IdentifySummary* s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *s = IdentifySummary{};
+  s->method = o.method;
+  std::string why;
+  if (!o.IsValid(&why)) {
+    s->message = "invalid options: " + why;
+    return;
+  }
+  ParameterSetup setup;
+  if (!ParameterSetup::Build(model, dataset, &setup, &why)) {
+    s->message = why;
+    return;
+  }
+  ModalResiduals residuals(model, dataset, setup, o.residuals);
+  const int n = setup.size();
+  const Eigen::VectorXd x0 = setup.Encode(setup.start());
+  Eigen::VectorXd lower(n), upper(n);
+  const double log_bound = std::log(o.bound_factor);
+  for (int i = 0; i < n; ++i) {
+    const Param p = setup.free()[i];
+    if (setup.is_log(i)) {
+      lower[i] = x0[i] - log_bound;
+      upper[i] = x0[i] + log_bound;
+    } else {
+      const double span = std::max(std::abs(x0[i]), 1.0) * o.bound_factor;
+      lower[i] = Info(p).domain == Domain::kNonNegative ? 0.0 : x0[i] - span;
+      upper[i] = x0[i] + span;
+    }
+  }
+
+  std::mt19937_64 rng(o.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Fit best;
+  for (int k = 0; k < o.starts; ++k) {
+    Eigen::VectorXd start = x0;
+    if (k > 0) {
+      for (int i = 0; i < n; ++i) {
+        const double step = o.start_spread * normal(rng);
+        start[i] = setup.is_log(i) ? x0[i] + step
+                                   : x0[i] + step * std::max(std::abs(x0[i]), 1.0);
+      }
+      start = start.cwiseMax(lower).cwiseMin(upper);
+    }
+    Fit fit = (n == 0) ? Fit{x0, kInf, true, "nothing free"}
+              : o.method == Method::kSimplex
+                  ? FitSimplex(residuals, start, lower, upper, o)
+                  : FitLevenbergMarquardt(residuals, start, lower, upper, o);
+    if (n == 0) {
+      std::vector<double> r(residuals.num_residuals());
+      if (residuals.Evaluate(x0.data(), r.data())) {
+        double c = 0;
+        for (double v : r) c += v * v;
+        fit.cost = 0.5 * c;
+      } else {
+        fit.message = "the model cannot be solved at the given parameters";
+      }
+    }
+    s->start_costs.push_back(fit.cost);
+    if (fit.cost < best.cost) best = fit;
+    if (n == 0) break;
+  }
+  s->starts = static_cast<int>(s->start_costs.size());
+  s->evaluations = residuals.evaluations();
+  if (!(best.cost < kInf)) {
+    s->message = "no start produced a usable fit: " + best.message;
+    s->seconds = Seconds(t0);
+    return;
+  }
+  s->success = true;
+  s->converged = best.converged;
+  s->message = best.message;
+  s->cost = best.cost;
+  s->parameters = setup.Decode(best.x.data());
+  s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
+  for (Param p : setup.free()) s->coordinate_names.push_back(ParamName(p));
+
+  for (Param p : model.parameters()) {
+    ParameterEstimate e;
+    e.param = p;
+    e.value = s->parameters[p];
+    const auto tie = setup.ties().find(p);
+    if (tie != setup.ties().end()) e.tied_to = tie->second;
+    const int i = setup.CoordinateOf(p);
+    e.free = i >= 0 && !e.tied_to;
+    if (i < 0) {
+      e.identifiable = Identifiability::kYes;
+      e.reason = e.tied_to ? "tied to a fixed parameter" : "fixed (known)";
+    } else if (s->uncertainty.ok) {
+      e.identifiable = s->uncertainty.classes[i];
+      e.reason = s->uncertainty.reasons[i];
+      if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
+      const double sd = s->uncertainty.std[i];
+      if (std::isfinite(sd)) e.std = setup.is_log(i) ? e.value * sd : sd;
+    } else {
+      e.identifiable = Identifiability::kNo;
+      e.reason = s->uncertainty.error;
+    }
+    s->estimates.push_back(e);
+  }
+
+  ModalSolution solution;
+  std::vector<int> pairs;
+  double e_in = 0, e_out = 0;
+  int n_in = 0, n_out = 0;
+  if (residuals.Pair(best.x.data(), &solution, &pairs, &why)) {
+    for (size_t i = 0; i < dataset.modes.size(); ++i) {
+      const MeasuredMode& m = dataset.modes[i];
+      const Mode& mode = solution.modes[pairs[i]];
+      ModeFit f;
+      f.label = m.label;
+      f.model_label = mode.label;
+      f.measured_hz = m.frequency_hz;
+      f.model_hz = mode.frequency_hz;
+      f.measured_damping = m.damping_ratio;
+      f.model_damping = mode.damping_ratio;
+      if (!m.shape.empty()) {
+        f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention), m.shape);
+      }
+      const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
+      if (LabelPlane(m.label) == Plane::kInPlane) {
+        e_in += rel * rel;
+        ++n_in;
+      } else {
+        e_out += rel * rel;
+        ++n_out;
+      }
+      s->modes.push_back(f);
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s->relative_error_in_plane = n_in ? e_in : nan;
+  s->relative_error_out_of_plane = n_out ? e_out : nan;
+  s->seconds = Seconds(t0);
+}
+
+std::string IdentifySummary::BriefReport() const {
+  std::ostringstream o;
+  o << "ringid identify (" << MethodName(method) << "): "
+    << (success ? (converged ? "converged" : "not converged") : "FAILED")
+    << ", cost " << cost << ", " << evaluations << " model evaluations in "
+    << starts << " start(s), " << seconds * 1e3 << " ms";
+  if (!success) o << ": " << message;
+  return o.str();
+}
+
+std::string IdentifySummary::FullReport() const {
+  std::ostringstream o;
+  char line[256];
+  o << BriefReport() << "\n";
+  if (!success) return o.str();
+  o << "  termination: " << message << "\n";
+  std::snprintf(line, sizeof line,
+                "  eq. (19) in-plane error %.3e, eq. (20) out-of-plane error %.3e\n",
+                relative_error_in_plane, relative_error_out_of_plane);
+  o << line << "\n  mode                  measured Hz   model Hz   zeta   MAC\n";
+  for (const ModeFit& m : modes) {
+    std::snprintf(line, sizeof line, "  %-20s %10.3f %10.3f %6.3f %5s%s\n",
+                  LabelName(m.label), m.measured_hz, m.model_hz,
+                  m.model_damping,
+                  m.mac ? std::to_string(*m.mac).substr(0, 5).c_str() : "-",
+                  m.model_label != m.label
+                      ? (std::string("  (paired with model ") +
+                         LabelName(m.model_label) + ")").c_str()
+                      : "");
+    o << line;
+  }
+  o << "\n  parameter        value         std          identifiable\n";
+  for (const ParameterEstimate& e : estimates) {
+    std::string sd = e.std ? std::to_string(*e.std) : "-";
+    if (e.std) {
+      std::snprintf(line, sizeof line, "%.3e", *e.std);
+      sd = line;
+    }
+    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-11s  %-15s %s\n",
+                  ParamName(e.param), e.value, sd.c_str(),
+                  e.free || e.tied_to ? IdentifiabilityName(e.identifiable)
+                                      : "(fixed)",
+                  e.tied_to ? (std::string("= ") + ParamName(*e.tied_to)).c_str()
+                            : "");
+    o << line;
+  }
+  if (uncertainty.ok) {
+    o << "\n  Jacobian rank " << uncertainty.rank << " of "
+      << uncertainty.jacobian.cols() << " free coordinates ("
+      << uncertainty.jacobian.rows() << " residuals)";
+    if (!uncertainty.covariance_ok) {
+      o << "; covariance unavailable: " << uncertainty.covariance_error;
+    }
+    o << "\n";
+  } else {
+    o << "\n  uncertainty: " << uncertainty.error << "\n";
+  }
+  return o.str();
+}
+
+}  // namespace ringid

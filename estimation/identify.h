@@ -1,0 +1,89 @@
+// Identification of rigid-ring parameters from modal data.
+#ifndef RINGID_ESTIMATION_IDENTIFY_H_
+#define RINGID_ESTIMATION_IDENTIFY_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "datasets/dataset.h"
+#include "estimation/residuals.h"
+#include "estimation/setup.h"
+#include "estimation/simplex.h"
+#include "estimation/uncertainty.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid {
+
+enum class Method { kLevenbergMarquardt, kSimplex };
+const char* MethodName(Method m);  // "lm", "simplex"
+
+struct IdentifyOptions {
+  Method method = Method::kLevenbergMarquardt;
+  // Fits from the dataset's initial point and from starts - 1 points drawn
+  // around it (log-normal, spread start_spread); the lowest cost wins.
+  int starts = 4;
+  double start_spread = 0.5;
+  unsigned seed = 1;
+  // Free coordinates stay within a factor bound_factor of their start.
+  double bound_factor = 1e3;
+  int max_iterations = 200;  // Levenberg-Marquardt, per start
+  SimplexOptions simplex;
+  ResidualOptions residuals;
+  UncertaintyOptions uncertainty;
+
+  bool IsValid(std::string* why) const;
+};
+
+struct ParameterEstimate {
+  Param param;
+  double value = 0;
+  bool free = false;
+  std::optional<Param> tied_to;
+  Identifiability identifiable = Identifiability::kYes;
+  std::string reason;
+  std::optional<double> std;  // physical units; none where not defined
+};
+
+struct ModeFit {
+  ModeLabel label;     // the measured mode's label
+  ModeLabel model_label;  // the label of the model mode it was paired with
+  double measured_hz = 0;
+  double model_hz = 0;
+  std::optional<double> measured_damping;
+  double model_damping = 0;
+  std::optional<double> mac;  // where a shape was measured
+};
+
+struct IdentifySummary {
+  bool success = false;     // a fit was obtained (false: see message)
+  bool converged = false;   // the winning start met its convergence test
+  std::string message;
+  Method method = Method::kLevenbergMarquardt;
+  double cost = 0;          // 1/2 sum of squared weighted residuals
+  long evaluations = 0;     // model solutions, all starts
+  double seconds = 0;
+  int starts = 0;
+  std::vector<double> start_costs;
+  Parameters parameters;
+  std::vector<ParameterEstimate> estimates;  // model parameters, in order
+  Uncertainty uncertainty;
+  std::vector<std::string> coordinate_names;
+  std::vector<ModeFit> modes;
+  // Eq. (19) over in-plane modes and eq. (20) over out-of-plane modes:
+  // sum ((f_exp - f_cal) / f_exp)^2; NaN where the plane has no mode.
+  double relative_error_in_plane = 0;
+  double relative_error_out_of_plane = 0;
+
+  std::string BriefReport() const;
+  std::string FullReport() const;
+};
+
+// Never aborts: invalid setups and numerical failures come back in
+// summary->success / message.
+void Identify(const ModalModel& model, const Dataset& dataset,
+              const IdentifyOptions& options, IdentifySummary* summary);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_IDENTIFY_H_

@@ -1,0 +1,93 @@
+// Weighted residuals of measured against model modes: the functor behind the
+// Ceres cost function and the simplex objective.
+#ifndef RINGID_ESTIMATION_RESIDUALS_H_
+#define RINGID_ESTIMATION_RESIDUALS_H_
+
+#include <atomic>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "datasets/dataset.h"
+#include "estimation/setup.h"
+#include "model/modal.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid {
+
+enum class FrequencyWeighting {
+  kSigma,     // 1 / frequency_sigma_hz (relative_sigma * f where absent)
+  kRelative,  // 1 / (relative_sigma * f): eqs. (19)-(20) up to a constant
+};
+
+// How a measured real shape was made from a complex eigenvector.
+enum class ShapeConvention {
+  kContract,  // contract section 2: largest displacement real, real part
+  kPaper,     // the paper's Tables 4-5 (Mode::PaperShape)
+};
+
+struct ResidualOptions {
+  FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
+  // Relative frequency standard error used where no sigma is given.
+  double relative_sigma = 0.01;
+  // Damping and shape residuals are used where the dataset gives them.
+  bool use_damping = true;
+  bool use_shapes = true;
+  double default_damping_sigma = 0.02;  // where damping_sigma is absent
+  double default_shape_sigma = 0.05;    // where shape_sigma is absent
+  ShapeConvention shape_convention = ShapeConvention::kContract;
+
+  bool IsValid(std::string* why) const;
+};
+
+// The model's real shape under a convention.
+RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
+// MAC of a real model shape against a measured shape on its components.
+double Mac(const RealShapeVector& model,
+           const std::vector<std::pair<Dof, double>>& measured);
+
+class ModalResiduals {
+ public:
+  ModalResiduals(const ModalModel& model, const Dataset& dataset,
+                 const ParameterSetup& setup, const ResidualOptions& options);
+
+  int num_residuals() const { return num_residuals_; }
+  int num_parameters() const { return setup_.size(); }
+
+  // r(x). False when the model cannot be solved or a measured mode has no
+  // model counterpart (say, its pair of roots became real).
+  bool Evaluate(const double* x, double* residuals) const;
+  // For ceres::DynamicNumericDiffCostFunction.
+  bool operator()(double const* const* x, double* residuals) const {
+    return Evaluate(x[0], residuals);
+  }
+
+  // The model solution at x and, for each measured mode, the index of the
+  // model mode paired with it. False (with `why`) as for Evaluate.
+  bool Pair(const double* x, ModalSolution* solution, std::vector<int>* pairs,
+            std::string* why) const;
+
+  // Which residuals belong to which measured mode and observable.
+  struct Slot {
+    int mode;                  // index into dataset.modes
+    enum Kind { kFrequency, kDamping, kShape } kind;
+    Dof dof = Dof::kXb;        // for kShape
+  };
+  const std::vector<Slot>& slots() const { return slots_; }
+
+  long evaluations() const { return evaluations_.load(); }
+  void reset_evaluations() { evaluations_ = 0; }
+
+ private:
+  const ModalModel& model_;
+  const Dataset& dataset_;
+  const ParameterSetup& setup_;
+  ResidualOptions options_;
+  std::vector<Slot> slots_;
+  int num_residuals_ = 0;
+  mutable std::atomic<long> evaluations_{0};
+};
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_RESIDUALS_H_

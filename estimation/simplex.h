@@ -1,0 +1,39 @@
+// Downhill Simplex (Nelder and Mead 1965), the method of the paper, on the
+// same objective as Levenberg-Marquardt for a like-for-like comparison.
+#ifndef RINGID_ESTIMATION_SIMPLEX_H_
+#define RINGID_ESTIMATION_SIMPLEX_H_
+
+#include <functional>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace ringid {
+
+struct SimplexOptions {
+  int max_evaluations = 20000;
+  double initial_step = 0.1;  // edge of the first simplex, per coordinate
+  // Stops when the spread of values over the simplex is below
+  // f_tolerance * (|f_best| + tiny) and its diameter below x_tolerance.
+  double f_tolerance = 1e-14;
+  double x_tolerance = 1e-10;
+  bool IsValid(std::string* why) const;
+};
+
+struct SimplexResult {
+  Eigen::VectorXd x;
+  double cost = 0;
+  int evaluations = 0;
+  bool converged = false;
+  std::string message;
+};
+
+// Minimises f over the box [lower, upper]; f may return +inf where undefined.
+SimplexResult MinimizeNelderMead(
+    const std::function<double(const Eigen::VectorXd&)>& f,
+    const Eigen::VectorXd& x0, const Eigen::VectorXd& lower,
+    const Eigen::VectorXd& upper, const SimplexOptions& options);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_SIMPLEX_H_

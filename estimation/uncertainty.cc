@@ -1,0 +1,141 @@
+#include "estimation/uncertainty.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/SVD>
+#include <ceres/ceres.h>
+
+namespace ringid {
+
+const char* IdentifiabilityName(Identifiability c) {
+  switch (c) {
+    case Identifiability::kYes: return "yes";
+    case Identifiability::kPracticallyNo: return "practically_no";
+    case Identifiability::kNo: return "no";
+  }
+  return "no";
+}
+
+bool UncertaintyOptions::IsValid(std::string* why) const {
+  if (!(rank_tolerance > 0 && rank_tolerance < 1)) {
+    *why = "rank_tolerance must lie in (0, 1)";
+  } else if (!(null_projection > 0 && null_projection < 1)) {
+    *why = "null_projection must lie in (0, 1)";
+  } else if (!(practical_relative_std > 0)) {
+    *why = "practical_relative_std must be positive";
+  } else {
+    return true;
+  }
+  return false;
+}
+
+Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
+                               const ParameterSetup& setup,
+                               const Eigen::VectorXd& x_in,
+                               const UncertaintyOptions& options) {
+  Uncertainty u;
+  const int n = setup.size();
+  const int m = residuals.num_residuals();
+  u.classes.assign(n, Identifiability::kNo);
+  u.reasons.assign(n, "");
+  u.std.assign(n, std::numeric_limits<double>::quiet_NaN());
+  if (n == 0) {
+    u.ok = true;
+    u.error = "no free parameters";
+    return u;
+  }
+  // The same cost function as the fit: central differences through the
+  // eigen-solution.
+  Eigen::VectorXd x = x_in;
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
+                                                         ceres::CENTRAL>(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
+  cost->AddParameterBlock(n);
+  cost->SetNumResiduals(m);
+  ceres::Problem::Options problem_options;
+  ceres::Problem problem(problem_options);
+  problem.AddResidualBlock(cost, nullptr, x.data());
+
+  Eigen::VectorXd r(m);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
+  double* jac[] = {J.data()};
+  const double* params[] = {x.data()};
+  if (!cost->Evaluate(params, r.data(), jac) || !J.allFinite()) {
+    u.error = "the Jacobian could not be evaluated at the fitted point";
+    return u;
+  }
+  u.ok = true;
+  u.jacobian = J;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(u.jacobian, Eigen::ComputeFullV);
+  u.singular_values = svd.singularValues();
+  const double smax = u.singular_values.size() ? u.singular_values[0] : 0;
+  u.rank = 0;
+  for (int i = 0; i < u.singular_values.size(); ++i) {
+    if (u.singular_values[i] > options.rank_tolerance * smax) ++u.rank;
+  }
+  u.condition_number =
+      (u.rank == n && n > 0) ? smax / u.singular_values[n - 1]
+                             : std::numeric_limits<double>::infinity();
+  u.null_space = svd.matrixV().rightCols(n - u.rank);
+
+  // Ceres' covariance on a rank-deficient problem: dense SVD, dropping the
+  // eigenvalues of J^T J below the same cut. Never read it if Compute fails.
+  ceres::Covariance::Options copt;
+  copt.algorithm_type = ceres::DENSE_SVD;
+  copt.null_space_rank = -1;
+  copt.min_reciprocal_condition_number =
+      options.rank_tolerance * options.rank_tolerance;
+  ceres::Covariance covariance(copt);
+  std::vector<std::pair<const double*, const double*>> blocks = {
+      {x.data(), x.data()}};
+  if (covariance.Compute(blocks, &problem)) {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(n, n);
+    if (covariance.GetCovarianceBlock(x.data(), x.data(), c.data()) &&
+        c.allFinite()) {
+      u.covariance = c;
+      u.covariance_ok = true;
+    } else {
+      u.covariance_error = "covariance block could not be read";
+    }
+  } else {
+    u.covariance_error = "ceres::Covariance::Compute failed";
+  }
+
+  for (int i = 0; i < n; ++i) {
+    const double in_null =
+        u.null_space.cols() ? u.null_space.row(i).norm() : 0.0;
+    std::ostringstream why;
+    if (in_null > options.null_projection) {
+      u.classes[i] = Identifiability::kNo;
+      why << "moves along a direction the data leaves free ("
+          << static_cast<int>(std::round(100 * in_null * in_null))
+          << " % of it in the null space; rank " << u.rank << " of " << n
+          << ")";
+      u.reasons[i] = why.str();
+      continue;
+    }
+    if (!u.covariance_ok) {
+      u.classes[i] = Identifiability::kPracticallyNo;
+      u.reasons[i] = "covariance not available: " + u.covariance_error;
+      continue;
+    }
+    u.std[i] = std::sqrt(std::max(0.0, u.covariance(i, i)));
+    const double relative =
+        setup.is_log(i) ? u.std[i]
+                        : u.std[i] / std::max(std::abs(x[i]), 1e-300);
+    if (relative > options.practical_relative_std) {
+      u.classes[i] = Identifiability::kPracticallyNo;
+      why << "determined, but its relative standard deviation " << relative
+          << " makes the 95 % interval wider than a factor of 2";
+    } else {
+      u.classes[i] = Identifiability::kYes;
+      why << "relative standard deviation " << relative;
+    }
+    u.reasons[i] = why.str();
+  }
+  return u;
+}
+
+}  // namespace ringid

@@ -1,0 +1,56 @@
+// Covariance, rank and identifiability at a fitted point.
+#ifndef RINGID_ESTIMATION_UNCERTAINTY_H_
+#define RINGID_ESTIMATION_UNCERTAINTY_H_
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "estimation/residuals.h"
+#include "estimation/setup.h"
+
+namespace ringid {
+
+enum class Identifiability { kYes, kPracticallyNo, kNo };
+const char* IdentifiabilityName(Identifiability c);
+
+struct UncertaintyOptions {
+  // Singular values below rank_tolerance * largest count as zero; the same
+  // cut (squared) drops eigenvalues in ceres::Covariance.
+  double rank_tolerance = 1e-7;
+  // A coordinate whose unit vector has at least this much of its length in
+  // the null space moves without changing any residual: class "no".
+  double null_projection = 1e-3;
+  // Relative standard deviation (of the value; log-space std for positive
+  // parameters) above which a determined parameter is "practically_no":
+  // 0.354 makes the 95 % interval wider than a factor of 2 either way.
+  double practical_relative_std = 0.354;
+  bool IsValid(std::string* why) const;
+};
+
+struct Uncertainty {
+  bool ok = false;           // the Jacobian could be evaluated
+  std::string error;
+  bool covariance_ok = false;  // ceres::Covariance::Compute succeeded
+  std::string covariance_error;
+  Eigen::MatrixXd jacobian;        // weighted residuals by coordinates
+  Eigen::VectorXd singular_values;  // descending, min(m, n) of them
+  int rank = 0;
+  double condition_number = 0;  // largest / smallest of n; inf if rank < n
+  Eigen::MatrixXd null_space;   // columns: coordinate directions left free
+  // Pseudo-inverse of J^T J on the determined subspace, in coordinates.
+  Eigen::MatrixXd covariance;
+  std::vector<Identifiability> classes;  // per coordinate
+  std::vector<std::string> reasons;
+  std::vector<double> std;  // per coordinate; NaN where not defined
+};
+
+Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
+                               const ParameterSetup& setup,
+                               const Eigen::VectorXd& x,
+                               const UncertaintyOptions& options);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_UNCERTAINTY_H_
