@@ -176,7 +176,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       }
     }
     s->start_costs.push_back(fit.cost);
-    if (fit.cost < best.cost) best = fit;
+    if (fit.cost < best.cost || (k == 0 && !(best.cost < kInf))) best = fit;
     if (n == 0) break;
   }
   s->starts = static_cast<int>(s->start_costs.size());

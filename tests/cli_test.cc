@@ -1,0 +1,108 @@
+// The ringid tool end to end: reports, and the error contract.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct RunResult {
+  int status;
+  std::string err;
+};
+
+RunResult Ringid(const std::string& args) {
+  const std::string err = ::testing::TempDir() + "ringid_stderr.txt";
+  const std::string cmd = std::string(RINGID_BINARY) + " " + args +
+                          " > /dev/null 2> " + err;
+  const int raw = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text};
+}
+
+bool Exists(const std::string& path) {
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+std::string Source(const std::string& f) {
+  return std::string(RINGID_SOURCE_DIR) + "/" + f;
+}
+
+TEST(CliTest, IdentifyWritesTheContractReport) {
+  const std::string out = ::testing::TempDir() + "identify.json";
+  std::remove(out.c_str());
+  const RunResult r = Ringid("identify --dataset=" + Source("datasets/paper/table1.json") +
+                       " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  for (const char* key : {"method", "converged", "cost", "evaluations", "seconds",
+                          "parameters", "covariance", "modes"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["parameters"]["K_cx"]["identifiable"], "no");
+  EXPECT_TRUE(j["parameters"]["K_cx"]["std"].is_null());
+  EXPECT_EQ(j["covariance"]["rank"], 7);
+  EXPECT_EQ(j["modes"].size(), 7u);
+}
+
+TEST(CliTest, PredictReproducesTable3Vertical) {
+  const std::string out = ::testing::TempDir() + "predict.json";
+  const RunResult r = Ringid("predict --parameters=" + Source("datasets/paper/parameters.json") +
+                       " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  bool found = false;
+  for (const auto& m : j["modes"]) {
+    if (m["label"] == "vertical") {
+      found = true;
+      EXPECT_NEAR(m["model_hz"].get<double>(), 72.1, 0.1);
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
+  const std::string dir = ::testing::TempDir();
+  const std::string bad = dir + "bad_dataset.json";
+  std::ofstream(bad) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
+                        R"("modes":[{"label":"vertical","frequency_hz":-3}]})";
+  const std::string out = dir + "never_written.json";
+  std::remove(out.c_str());
+  const std::string cases[] = {
+      "identify --dataset=" + bad + " --output=" + out,
+      "identify --dataset=/nonexistent.json --output=" + out,
+      "identify --dataset=" + Source("datasets/paper/table1.json") + " --bogus=1 --output=" + out,
+      "identify --dataset=" + Source("datasets/paper/table1.json") + " --starts=abc --output=" + out,
+      "identify --dataset=" + Source("datasets/paper/table1.json") + " --method=newton --output=" + out,
+      "predict --parameters=" + bad + " --output=" + out,
+      "frobnicate",
+  };
+  for (const std::string& c : cases) {
+    const RunResult r = Ringid(c);
+    EXPECT_EQ(r.status, 2) << c;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << c;
+  }
+  const RunResult r = Ringid("identify --dataset=" + bad);
+  EXPECT_NE(r.err.find("bad_dataset.json"), std::string::npos);
+  EXPECT_NE(r.err.find("modes[0].frequency_hz"), std::string::npos);
+}
+
+TEST(CliTest, UnwritableOutputIsRefusedBeforeTheRun) {
+  const RunResult r = Ringid("identify --dataset=" + Source("datasets/paper/table1.json") +
+                       " --output=/nonexistent-dir/report.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent-dir/report.json"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,28 @@
+// Shared fixtures: the paper's published numbers and synthetic datasets.
+#ifndef RINGID_TESTS_TEST_SUPPORT_H_
+#define RINGID_TESTS_TEST_SUPPORT_H_
+
+#include <random>
+#include <string>
+
+#include "datasets/dataset.h"
+#include "model/parameters.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid::testing {
+
+std::string SourcePath(const std::string& relative);
+// Table 2 of the paper (with its ties), typed in from the paper.
+Parameters Table2();
+// Table 2 plus the inertias shipped in datasets/paper/parameters.json.
+Parameters PaperIdentified();
+
+// A dataset of all seven modes of `truth` with frequencies, damping ratios and
+// contract-convention shapes, perturbed by Gaussian noise of the given sigmas.
+Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
+                         double freq_rel_sigma, double damping_sigma,
+                         double shape_sigma, std::mt19937_64* rng);
+
+}  // namespace ringid::testing
+
+#endif  // RINGID_TESTS_TEST_SUPPORT_H_
