@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include <unistd.h>
 
@@ -150,18 +148,11 @@ json ParameterSetJson(const IdentifySummary& s, const std::string& name,
 }
 
 bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error) {
-  error->file = path;
-  error->field = "";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error->message = "cannot open file";
-    return false;
-  }
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  if (!ReadInputFile(path, &text, error)) return false;
   json j;
   try {
-    j = json::parse(text.str());
+    j = json::parse(text);
   } catch (const json::exception& e) {
     error->message = "not valid JSON";
     return false;

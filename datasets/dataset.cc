@@ -252,7 +252,8 @@ bool ParseDataset(const std::string& text, const std::string& path,
   return true;
 }
 
-bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
+bool ReadInputFile(const std::string& path, std::string* text,
+                   LoadError* error) {
   error->file = path;
   error->field = "";
   std::ifstream in(path, std::ios::binary);
@@ -260,18 +261,24 @@ bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
     error->message = "cannot open file";
     return false;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
   if (in.bad()) {
     error->message = "cannot read file";
     return false;
   }
-  const std::string s = text.str();
-  if (static_cast<long>(s.size()) > kMaxFileBytes) {
+  *text = buffer.str();
+  if (static_cast<long>(text->size()) > kMaxFileBytes) {
     error->message = "larger than " + std::to_string(kMaxFileBytes) + " bytes";
     return false;
   }
-  return ParseDataset(s, path, dataset, error);
+  return true;
+}
+
+bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
+  std::string text;
+  return ReadInputFile(path, &text, error) &&
+         ParseDataset(text, path, dataset, error);
 }
 
 std::string DatasetToJson(const Dataset& d) {

@@ -46,6 +46,9 @@ struct LoadError {
   std::string OneLine() const;
 };
 
+// Reads a whole input file (at most kMaxFileBytes). False with `error` set.
+bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
+
 // Loads and checks a dataset. On failure returns false and fills `error`;
 // `dataset` is then unspecified.
 bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);
