@@ -148,6 +148,12 @@ int Predict(int argc, char** argv) {
     for (const auto& [from, to] : d.ties) p[from] = p[to];
   }
   const RigidRingModel model(effects);
+  const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
+  for (Param q : model.parameters()) {
+    if (!p.IsSet(q)) {
+      return Usage(source + ": parameters." + ParamName(q) + ": missing (the model needs it)");
+    }
+  }
   const ModalSolution s = model.Solve(p);
   if (!s.ok) {
     std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());

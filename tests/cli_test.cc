@@ -76,6 +76,8 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
   const std::string bad = dir + "bad_dataset.json";
   std::ofstream(bad) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
                         R"("modes":[{"label":"vertical","frequency_hz":-3}]})";
+  const std::string partial = dir + "partial_parameters.json";
+  std::ofstream(partial) << R"({"format":"ringid-parameters/1","parameters":{"m_b":{"value":2.4}}})";
   const std::string out = dir + "never_written.json";
   std::remove(out.c_str());
   const std::string cases[] = {
@@ -85,6 +87,8 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
       "identify --dataset=" + Source("datasets/paper/table1.json") + " --starts=abc --output=" + out,
       "identify --dataset=" + Source("datasets/paper/table1.json") + " --method=newton --output=" + out,
       "predict --parameters=" + bad + " --output=" + out,
+      "predict --dataset=" + bad + " --output=" + out,
+      "predict --parameters=" + partial + " --output=" + out,
       "frobnicate",
   };
   for (const std::string& c : cases) {
