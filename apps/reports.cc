@@ -147,45 +147,6 @@ json ParameterSetJson(const IdentifySummary& s, const std::string& name,
   return r;
 }
 
-bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error) {
-  std::string text;
-  if (!ReadInputFile(path, &text, error)) return false;
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {
-    error->message = "not valid JSON";
-    return false;
-  }
-  auto fail = [&](const std::string& field, const std::string& message) {
-    error->field = field;
-    error->message = message;
-    return false;
-  };
-  if (!j.is_object()) return fail("", "top level must be a JSON object");
-  if (!j.contains("parameters") || !j["parameters"].is_object()) {
-    return fail("parameters", "missing or not an object");
-  }
-  if (j.contains("format") && j["format"] != "ringid-parameters/1") {
-    return fail("format", "must be \"ringid-parameters/1\"");
-  }
-  *p = Parameters{};
-  const json& ps = j["parameters"];
-  for (auto it = ps.begin(); it != ps.end(); ++it) {
-    const std::string field = "parameters." + it.key();
-    const auto param = ParseParam(it.key());
-    if (!param) return fail(field, "unknown parameter '" + it.key() + "'");
-    const json& v = it.value().is_object() && it.value().contains("value")
-                        ? it.value()["value"]
-                        : it.value();
-    if (!v.is_number() || !std::isfinite(v.get<double>())) {
-      return fail(field, "value must be a finite number");
-    }
-    (*p)[*param] = v.get<double>();
-  }
-  return true;
-}
-
 bool CanWrite(const std::string& path, std::string* error) {
   const std::string probe = path + ".ringid-probe";
   std::FILE* f = std::fopen(probe.c_str(), "wb");

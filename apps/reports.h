@@ -17,12 +17,9 @@ nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
                               const IdentifyOptions& o);
 nlohmann::json PredictReport(const ModalSolution& s);
 
-// A parameter set: {"format": "ringid-parameters/1", "name", "description",
-// "parameters": {NAME: {"value": V, "std": S or null}}}. An identify report's
-// "parameters" object has the same form, so a report can be read back.
+// A parameter set (see LoadParameterSet in datasets/dataset.h).
 nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,
                                 const std::string& description);
-bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
 
 // Writes via a temporary file beside `path` and a rename: a reader never sees
 // a half-written report. False with a one-line message on failure.

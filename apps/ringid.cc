@@ -211,8 +211,7 @@ int IdentifyCommand(int argc, char** argv) {
   const RigidRingModel model(effects);
   IdentifySummary s;
   Identify(model, d, o, &s);
-  // A setup the model cannot use (a free parameter without a value) is bad input.
-  if (!s.success && s.evaluations == 0 && s.starts == 0) {
+  if (s.invalid_input) {
     return Usage(FLAGS_dataset + ": " + s.message);
   }
   std::printf("%s", s.FullReport().c_str());

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 
@@ -211,12 +212,12 @@ std::string LoadError::OneLine() const {
   return line;
 }
 
-bool ParseDataset(const std::string& text, const std::string& path,
-                  Dataset* dataset, LoadError* error) {
-  *dataset = Dataset{};
-  dataset->path = path;
-  error->file = path;
-  // Depth and duplicate keys are checked while parsing.
+namespace {
+
+// Parses `text` with the depth and duplicate-key guard, then runs `check`;
+// any failure becomes `error`.
+bool ParseChecked(const std::string& text, LoadError* error,
+                  const std::function<void(const json&)>& check) {
   std::vector<std::set<std::string>> keys;
   json::parser_callback_t guard = [&](int depth, json::parse_event_t event,
                                       json& parsed) {
@@ -234,8 +235,7 @@ bool ParseDataset(const std::string& text, const std::string& path,
     return true;
   };
   try {
-    const json j = json::parse(text, guard);
-    Check(j, dataset);
+    check(json::parse(text, guard));
   } catch (const Failure& f) {
     error->field = f.field;
     error->message = f.message;
@@ -250,6 +250,46 @@ bool ParseDataset(const std::string& text, const std::string& path,
     return false;
   }
   return true;
+}
+
+// A parameter set, or an identify report read back as one: only the
+// "parameters" object is read, each entry a number or {"value": number}.
+void CheckParameterSet(const json& j, Parameters* p) {
+  if (!j.is_object()) Fail("", "top level must be a JSON object");
+  if (j.contains("format") && j["format"] != "ringid-parameters/1") {
+    Fail("format", "must be \"ringid-parameters/1\"");
+  }
+  if (!j.contains("parameters") || !j["parameters"].is_object()) {
+    Fail("parameters", "missing or not an object");
+  }
+  const json& ps = j["parameters"];
+  for (auto it = ps.begin(); it != ps.end(); ++it) {
+    const std::string field = "parameters." + it.key();
+    const Param param = ParamCalled(it.key(), field);
+    const json& v = it.value().is_object() && it.value().contains("value")
+                        ? it.value()["value"]
+                        : it.value();
+    (*p)[param] = Number(v, field + (it.value().is_object() ? ".value" : ""));
+  }
+}
+
+}  // namespace
+
+bool ParseDataset(const std::string& text, const std::string& path,
+                  Dataset* dataset, LoadError* error) {
+  *dataset = Dataset{};
+  dataset->path = path;
+  error->file = path;
+  return ParseChecked(text, error, [&](const json& j) { Check(j, dataset); });
+}
+
+bool LoadParameterSet(const std::string& path, Parameters* p,
+                      LoadError* error) {
+  std::string text;
+  if (!ReadInputFile(path, &text, error)) return false;
+  *p = Parameters{};
+  return ParseChecked(text, error,
+                      [&](const json& j) { CheckParameterSet(j, p); });
 }
 
 bool ReadInputFile(const std::string& path, std::string* text,

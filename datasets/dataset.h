@@ -56,6 +56,11 @@ bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);
 bool ParseDataset(const std::string& text, const std::string& path,
                   Dataset* dataset, LoadError* error);
 
+// Reads a parameter set: {"format": "ringid-parameters/1", "parameters":
+// {NAME: {"value": V, "std": S}}}. An identify report has the same
+// "parameters" object and reads back as one.
+bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
+
 // Writes a dataset back to the contract's JSON form.
 std::string DatasetToJson(const Dataset& dataset);
 

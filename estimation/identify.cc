@@ -21,6 +21,24 @@ struct Fit {
   std::string message;
 };
 
+// 1/2 |r(x)|^2, or +inf where the model cannot be solved.
+double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
+  std::vector<double> r(residuals.num_residuals());
+  if (!residuals.Evaluate(x.data(), r.data())) return kInf;
+  double c = 0;
+  for (double v : r) c += v * v;
+  return 0.5 * c;
+}
+
+// Nothing free: the cost at the given parameters is the whole answer.
+Fit FitNothing(const ModalResiduals& residuals, const Eigen::VectorXd& x0) {
+  Fit fit{x0, CostAt(residuals, x0), true, "nothing free"};
+  if (!(fit.cost < kInf)) {
+    fit.message = "the model cannot be solved at the given parameters";
+  }
+  return fit;
+}
+
 Fit FitLevenbergMarquardt(const ModalResiduals& residuals,
                           const Eigen::VectorXd& x0,
                           const Eigen::VectorXd& lower,
@@ -52,9 +70,8 @@ Fit FitLevenbergMarquardt(const ModalResiduals& residuals,
   so.minimizer_progress_to_stdout = false;
   so.num_threads = 1;
   ceres::Solver::Summary summary;
-  // Ceres checks the initial point itself; an unsolvable start fails cleanly.
-  std::vector<double> r(residuals.num_residuals());
-  if (!residuals.Evaluate(fit.x.data(), r.data())) {
+  // An unsolvable start is refused here rather than inside Ceres.
+  if (!(CostAt(residuals, fit.x) < kInf)) {
     fit.message = "the model cannot be solved at this start";
     return fit;
   }
@@ -68,13 +85,7 @@ Fit FitLevenbergMarquardt(const ModalResiduals& residuals,
 Fit FitSimplex(const ModalResiduals& residuals, const Eigen::VectorXd& x0,
                const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                const IdentifyOptions& o) {
-  std::vector<double> r(residuals.num_residuals());
-  auto f = [&](const Eigen::VectorXd& x) {
-    if (!residuals.Evaluate(x.data(), r.data())) return kInf;
-    double c = 0;
-    for (double v : r) c += v * v;
-    return 0.5 * c;
-  };
+  auto f = [&](const Eigen::VectorXd& x) { return CostAt(residuals, x); };
   const SimplexResult s = MinimizeNelderMead(f, x0, lower, upper, o.simplex);
   Fit fit;
   fit.x = s.x;
@@ -123,11 +134,13 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->method = o.method;
   std::string why;
   if (!o.IsValid(&why)) {
+    s->invalid_input = true;
     s->message = "invalid options: " + why;
     return;
   }
   ParameterSetup setup;
   if (!ParameterSetup::Build(model, dataset, &setup, &why)) {
+    s->invalid_input = true;
     s->message = why;
     return;
   }
@@ -151,7 +164,8 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   std::mt19937_64 rng(o.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   Fit best;
-  for (int k = 0; k < o.starts; ++k) {
+  const int starts = n == 0 ? 1 : o.starts;
+  for (int k = 0; k < starts; ++k) {
     Eigen::VectorXd start = x0;
     if (k > 0) {
       for (int i = 0; i < n; ++i) {
@@ -161,23 +175,12 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       }
       start = start.cwiseMax(lower).cwiseMin(upper);
     }
-    Fit fit = (n == 0) ? Fit{x0, kInf, true, "nothing free"}
-              : o.method == Method::kSimplex
-                  ? FitSimplex(residuals, start, lower, upper, o)
-                  : FitLevenbergMarquardt(residuals, start, lower, upper, o);
-    if (n == 0) {
-      std::vector<double> r(residuals.num_residuals());
-      if (residuals.Evaluate(x0.data(), r.data())) {
-        double c = 0;
-        for (double v : r) c += v * v;
-        fit.cost = 0.5 * c;
-      } else {
-        fit.message = "the model cannot be solved at the given parameters";
-      }
-    }
+    const Fit fit = n == 0 ? FitNothing(residuals, x0)
+                    : o.method == Method::kSimplex
+                        ? FitSimplex(residuals, start, lower, upper, o)
+                        : FitLevenbergMarquardt(residuals, start, lower, upper, o);
     s->start_costs.push_back(fit.cost);
-    if (fit.cost < best.cost || (k == 0 && !(best.cost < kInf))) best = fit;
-    if (n == 0) break;
+    if (k == 0 || fit.cost < best.cost) best = fit;
   }
   s->starts = static_cast<int>(s->start_costs.size());
   s->evaluations = residuals.evaluations();
@@ -274,10 +277,11 @@ std::string IdentifySummary::FullReport() const {
                 relative_error_in_plane, relative_error_out_of_plane);
   o << line << "\n  mode                  measured Hz   model Hz   zeta   MAC\n";
   for (const ModeFit& m : modes) {
+    char mac[16] = "-";
+    if (m.mac) std::snprintf(mac, sizeof mac, "%.3f", *m.mac);
     std::snprintf(line, sizeof line, "  %-20s %10.3f %10.3f %6.3f %5s%s\n",
                   LabelName(m.label), m.measured_hz, m.model_hz,
-                  m.model_damping,
-                  m.mac ? std::to_string(*m.mac).substr(0, 5).c_str() : "-",
+                  m.model_damping, mac,
                   m.model_label != m.label
                       ? (std::string("  (paired with model ") +
                          LabelName(m.model_label) + ")").c_str()

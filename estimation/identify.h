@@ -58,6 +58,9 @@ struct ModeFit {
 struct IdentifySummary {
   bool success = false;     // a fit was obtained (false: see message)
   bool converged = false;   // the winning start met its convergence test
+  // The options or the dataset's setup were unusable (nothing was fitted);
+  // otherwise a failure is numerical.
+  bool invalid_input = false;
   std::string message;
   Method method = Method::kLevenbergMarquardt;
   double cost = 0;          // 1/2 sum of squared weighted residuals

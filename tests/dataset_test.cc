@@ -1,5 +1,7 @@
 // The loader accepts the shipped datasets and refuses each kind of bad file
 // with a message naming the field.
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -118,6 +120,38 @@ TEST(DatasetTest, MissingFileIsAnError) {
   LoadError e;
   EXPECT_FALSE(LoadDataset("/nonexistent/x.json", &d, &e));
   EXPECT_NE(e.OneLine().find("/nonexistent/x.json"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ringid
+
+namespace ringid {
+namespace {
+
+bool LoadText(const std::string& text, Parameters* p, LoadError* e) {
+  const std::string path = ::testing::TempDir() + "parameter_set.json";
+  std::ofstream(path) << text;
+  return LoadParameterSet(path, p, e);
+}
+
+TEST(ParameterSetTest, ReadsTheShippedSetAndRefusesBadOnes) {
+  Parameters p;
+  LoadError e;
+  ASSERT_TRUE(LoadParameterSet(testing::SourcePath("datasets/paper/parameters.json"), &p, &e))
+      << e.OneLine();
+  EXPECT_NEAR(p[Param::k_bx], 3.84e5, 1);
+  const std::pair<std::string, std::string> bad[] = {
+      {R"({"parameters": {"k_qq": 1}})", "parameters.k_qq"},
+      {R"({"parameters": {"m_b": {"value": "2"}}})", "parameters.m_b.value"},
+      {R"({"parameters": {"m_b": 1, "m_b": 2}})", "m_b"},
+      {R"({"format": "x", "parameters": {}})", "format"},
+      {R"({"parameters": [1]})", "parameters"},
+      {"{\"parameters\":" + std::string(30, '[') + std::string(30, ']') + "}", "nested"},
+  };
+  for (const auto& [text, field] : bad) {
+    EXPECT_FALSE(LoadText(text, &p, &e)) << text;
+    EXPECT_NE(e.OneLine().find(field), std::string::npos) << e.OneLine();
+  }
 }
 
 }  // namespace

@@ -148,7 +148,6 @@ TEST(IdentifyTest, DegenerateSetupsFailCleanly) {
   Dataset d = Table1();
   // Nothing free: all values known.
   Dataset fixed = d;
-  const Parameters p = PaperIdentified();
   for (auto& [k, v] : fixed.initial) fixed.known[k] = v;
   fixed.initial.clear();
   IdentifySummary s;
@@ -160,13 +159,14 @@ TEST(IdentifyTest, DegenerateSetupsFailCleanly) {
   missing.initial.erase(Param::K_cx);
   Identify(RigidRingModel(), missing, IdentifyOptions{}, &s);
   EXPECT_FALSE(s.success);
+  EXPECT_TRUE(s.invalid_input);
   EXPECT_NE(s.message.find("K_cx"), std::string::npos);
   // Invalid options are refused, not asserted.
   IdentifyOptions bad;
   bad.starts = 0;
   Identify(RigidRingModel(), d, bad, &s);
   EXPECT_FALSE(s.success);
-  (void)p;
+  EXPECT_TRUE(s.invalid_input);
 }
 
 }  // namespace
