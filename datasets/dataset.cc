@@ -186,7 +186,8 @@ void Check(const json& j, Dataset* d) {
     Fail("modes", "must be a non-empty array");
   }
   if (modes.size() > static_cast<size_t>(kMaxModes)) {
-    Fail("modes", "more than " + std::to_string(kMaxModes) + " modes");
+    Fail("modes", "more than " + std::to_string(kMaxModes) +
+                      " modes (one per contract label)");
   }
   std::set<ModeLabel> seen;
   for (size_t i = 0; i < modes.size(); ++i) {
@@ -218,19 +219,58 @@ namespace {
 // any failure becomes `error`.
 bool ParseChecked(const std::string& text, LoadError* error,
                   const std::function<void(const json&)>& check) {
+  // Where the parser is, so that a syntax error or an out-of-range number
+  // names its field too.
+  struct Frame {
+    bool array;
+    std::string key;
+    int count = 0;
+  };
+  std::vector<Frame> path;
   std::vector<std::set<std::string>> keys;
+  auto done_element = [&] {
+    if (!path.empty() && path.back().array) ++path.back().count;
+  };
+  auto where = [&] {
+    std::string field;
+    for (size_t i = 0; i < path.size(); ++i) {
+      if (path[i].array) {
+        field += "[" + std::to_string(path[i].count) + "]";
+      } else if (!path[i].key.empty()) {
+        field += (field.empty() ? "" : ".") + path[i].key;
+      }
+    }
+    return field;
+  };
   json::parser_callback_t guard = [&](int depth, json::parse_event_t event,
                                       json& parsed) {
     if (depth > kMaxJsonDepth) {
       throw Failure{"", "nested deeper than " + std::to_string(kMaxJsonDepth)};
     }
-    if (event == json::parse_event_t::object_start) keys.emplace_back();
-    if (event == json::parse_event_t::object_end && !keys.empty()) {
-      keys.pop_back();
-    }
-    if (event == json::parse_event_t::key && !keys.empty() &&
-        !keys.back().insert(parsed.get<std::string>()).second) {
-      throw Failure{parsed.get<std::string>(), "duplicate key"};
+    switch (event) {
+      case json::parse_event_t::object_start:
+        path.push_back({false, ""});
+        keys.emplace_back();
+        break;
+      case json::parse_event_t::array_start:
+        path.push_back({true, ""});
+        break;
+      case json::parse_event_t::key:
+        path.back().key = parsed.get<std::string>();
+        if (!keys.back().insert(path.back().key).second) {
+          throw Failure{where(), "duplicate key"};
+        }
+        break;
+      case json::parse_event_t::object_end:
+        keys.pop_back();
+        [[fallthrough]];
+      case json::parse_event_t::array_end:
+        path.pop_back();
+        done_element();
+        break;
+      case json::parse_event_t::value:
+        done_element();
+        break;
     }
     return true;
   };
@@ -240,13 +280,17 @@ bool ParseChecked(const std::string& text, LoadError* error,
     error->field = f.field;
     error->message = f.message;
     return false;
+  } catch (const json::out_of_range& e) {
+    error->field = where();
+    error->message = "number out of range";
+    return false;
   } catch (const json::parse_error& e) {
-    error->field = "";
+    error->field = where();
     error->message = "not valid JSON (at byte " + std::to_string(e.byte) + ")";
     return false;
   } catch (const json::exception& e) {
-    error->field = "";
-    error->message = std::string("invalid JSON: ") + e.what();
+    error->field = where();
+    error->message = "invalid JSON";
     return false;
   }
   return true;

@@ -34,7 +34,9 @@ struct Dataset {
 };
 
 // Limits the loader enforces (README "Limits").
-inline constexpr int kMaxModes = 64;
+// At most one measured mode per contract label, one shape component per
+// degree of freedom.
+inline constexpr int kMaxModes = 7;
 inline constexpr int kMaxJsonDepth = 16;
 inline constexpr long kMaxFileBytes = 4 << 20;
 

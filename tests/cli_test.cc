@@ -6,9 +6,12 @@
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "tests/test_support.h"
 
 namespace {
 
@@ -17,8 +20,16 @@ struct RunResult {
   std::string err;
 };
 
+// A scratch path private to this test process: ctest runs tests in parallel.
+std::string Scratch(const std::string& name) {
+  const std::string dir =
+      ::testing::TempDir() + "ringid-cli-" + std::to_string(::getpid()) + "/";
+  ::mkdir(dir.c_str(), 0700);
+  return dir + name;
+}
+
 RunResult Ringid(const std::string& args) {
-  const std::string err = ::testing::TempDir() + "ringid_stderr.txt";
+  const std::string err = Scratch("stderr.txt");
   const std::string cmd = std::string(RINGID_BINARY) + " " + args +
                           " > /dev/null 2> " + err;
   const int raw = std::system(cmd.c_str());
@@ -37,7 +48,7 @@ std::string Source(const std::string& f) {
 }
 
 TEST(CliTest, IdentifyWritesTheContractReport) {
-  const std::string out = ::testing::TempDir() + "identify.json";
+  const std::string out = Scratch("identify.json");
   std::remove(out.c_str());
   const RunResult r = Ringid("identify --dataset=" + Source("datasets/paper/table1.json") +
                        " --output=" + out);
@@ -55,7 +66,7 @@ TEST(CliTest, IdentifyWritesTheContractReport) {
 }
 
 TEST(CliTest, PredictReproducesTable3Vertical) {
-  const std::string out = ::testing::TempDir() + "predict.json";
+  const std::string out = Scratch("predict.json");
   const RunResult r = Ringid("predict --parameters=" + Source("datasets/paper/parameters.json") +
                        " --output=" + out);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -72,7 +83,7 @@ TEST(CliTest, PredictReproducesTable3Vertical) {
 }
 
 TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = Scratch("");
   const std::string bad = dir + "bad_dataset.json";
   std::ofstream(bad) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
                         R"("modes":[{"label":"vertical","frequency_hz":-3}]})";
@@ -100,6 +111,41 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
   const RunResult r = Ringid("identify --dataset=" + bad);
   EXPECT_NE(r.err.find("bad_dataset.json"), std::string::npos);
   EXPECT_NE(r.err.find("modes[0].frequency_hz"), std::string::npos);
+}
+
+TEST(CliTest, EveryMalformedDatasetIsRefusedByEveryCommand) {
+  const std::string dir = Scratch("");
+  const std::string out = dir + "malformed_report.json";
+  int n = 0;
+  for (const auto& bad : ringid::testing::MalformedDatasets()) {
+    const std::string file = dir + "malformed_" + std::to_string(n++) + ".json";
+    std::ofstream(file, std::ios::binary) << bad.text;
+    for (const std::string command : {"identify", "predict"}) {
+      std::remove(out.c_str());
+      const RunResult r = Ringid(command + " --dataset=" + file + " --output=" + out);
+      EXPECT_EQ(r.status, 2) << bad.what << " (" << command << ")";
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << bad.what << ": " << r.err;
+      EXPECT_NE(r.err.find(file), std::string::npos) << bad.what << ": " << r.err;
+      EXPECT_NE(r.err.find(bad.field), std::string::npos) << bad.what << ": " << r.err;
+      EXPECT_FALSE(Exists(out)) << bad.what;
+    }
+    std::remove(file.c_str());
+  }
+}
+
+TEST(CliTest, AnInterruptedRunLeavesNoReport) {
+  const std::string out = Scratch("interrupted.json");
+  std::remove(out.c_str());
+  // 100000 starts take minutes; SIGINT arrives after half a second.
+  const std::string cmd = "timeout -s INT 0.5 " + std::string(RINGID_BINARY) +
+                          " identify --starts=100000 --dataset=" +
+                          Source("datasets/paper/table1.json") + " --output=" + out +
+                          " > /dev/null 2>&1";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 124);  // timeout: the command was interrupted
+  EXPECT_FALSE(Exists(out));
+  EXPECT_FALSE(Exists(out + ".ringid-probe"));
 }
 
 TEST(CliTest, UnwritableOutputIsRefusedBeforeTheRun) {

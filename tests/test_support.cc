@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "apps/reports.h"
 
 namespace ringid::testing {
@@ -73,6 +75,166 @@ Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
     d.modes.push_back(mm);
   }
   return d;
+}
+
+namespace {
+
+using nlohmann::json;
+
+json ValidDataset() {
+  return json::parse(R"({
+    "format": "ringid-modal-dataset/1", "name": "t", "description": "d",
+    "known": {"m_b": 2.37}, "initial": {"k_bx": 3e5}, "ties": {"k_bz": "k_bx"},
+    "modes": [{"label": "vertical", "plane": "in_plane", "frequency_hz": 74.5,
+               "frequency_sigma_hz": 0.5, "damping_ratio": 0.08,
+               "damping_sigma": 0.02, "shape": {"z_b": 1.0, "x_b": 0.01},
+               "shape_sigma": 0.05}]})");
+}
+
+// The JSON pointer of a dotted field such as "modes[0].shape.z_b".
+json::json_pointer Pointer(const std::string& field) {
+  std::string p;
+  for (char c : field) {
+    if (c == '.' || c == '[') p += '/';
+    else if (c != ']') p += c;
+  }
+  return json::json_pointer("/" + p);
+}
+
+// Raw tokens that JSON values cannot hold, spliced into the text.
+const char kRaw[] = "__RAW_TOKEN__";
+
+}  // namespace
+
+std::vector<MalformedDataset> MalformedDatasets() {
+  std::vector<MalformedDataset> out;
+  auto add = [&](const std::string& what, const json& j, const std::string& field,
+                 const std::string& raw = "") {
+    std::string text = j.dump(1);
+    if (!raw.empty()) {
+      const std::string quoted = std::string("\"") + kRaw + "\"";
+      text.replace(text.find(quoted), quoted.size(), raw);
+    }
+    out.push_back({what, text, field});
+  };
+  enum Kind { kString, kPositive, kRatio, kNumber, kObject };
+  const struct { const char* field; Kind kind; bool required; } fields[] = {
+      {"format", kString, true},        {"name", kString, true},
+      {"description", kString, false},  {"known", kObject, false},
+      {"initial", kObject, false},      {"ties", kObject, false},
+      {"known.m_b", kPositive, false},  {"initial.k_bx", kPositive, false},
+      {"ties.k_bz", kString, false},    {"modes[0].label", kString, true},
+      {"modes[0].plane", kString, false},
+      {"modes[0].frequency_hz", kPositive, true},
+      {"modes[0].frequency_sigma_hz", kPositive, false},
+      {"modes[0].damping_ratio", kRatio, false},
+      {"modes[0].damping_sigma", kPositive, false},
+      {"modes[0].shape", kObject, false}, {"modes[0].shape.x_b", kNumber, false},
+      {"modes[0].shape_sigma", kPositive, false}};
+  const json wrong_types[] = {json("x"), json(3), json(true), json(nullptr),
+                              json::array(), json::object()};
+  for (const auto& f : fields) {
+    const auto ptr = Pointer(f.field);
+    if (f.required) {
+      json j = ValidDataset();
+      j[ptr.parent_pointer()].erase(ptr.back());
+      add(std::string(f.field) + " missing", j, f.field);
+    }
+    for (const json& bad : wrong_types) {
+      const bool fits = (f.kind == kString && bad.is_string()) ||
+                        (f.kind == kObject && bad.is_object()) ||
+                        (f.kind != kString && f.kind != kObject && bad.is_number());
+      if (fits) continue;
+      json j = ValidDataset();
+      j[ptr] = bad;
+      // An emptied optional object is valid; an emptied shape is not.
+      if (bad.is_object() && f.kind == kObject && std::string(f.field) != "modes[0].shape") continue;
+      add(std::string(f.field) + " = " + bad.dump(), j, f.field);
+    }
+    if (f.kind == kString) {
+      json j = ValidDataset();
+      j[ptr] = std::string(f.field) == "name" ? "" : "no-such-thing";
+      if (std::string(f.field) != "description") {
+        add(std::string(f.field) + " bad value", j, f.field);
+      }
+    }
+    if (f.kind == kPositive || f.kind == kRatio || f.kind == kNumber) {
+      for (const char* raw : {"NaN", "Infinity", "1e999", "-1e999"}) {
+        json j = ValidDataset();
+        j[ptr] = kRaw;
+        add(std::string(f.field) + " = " + raw, j, f.field, raw);
+      }
+    }
+    if (f.kind == kPositive || f.kind == kRatio) {
+      for (double v : {0.0, -1.0}) {
+        json j = ValidDataset();
+        j[ptr] = v;
+        add(std::string(f.field) + " = " + std::to_string(v), j, f.field);
+      }
+    }
+    if (f.kind == kRatio) {
+      json j = ValidDataset();
+      j[ptr] = 1.0;
+      add(std::string(f.field) + " = 1", j, f.field);
+    }
+  }
+  // Unknown keys, names and ties.
+  const struct { const char* what; const char* field; const char* at; } unknown[] = {
+      {"unknown top-level key", "extra", ""},
+      {"unknown parameter in known", "known.k_qq", "/known"},
+      {"unknown parameter in initial", "initial.k_qq", "/initial"},
+      {"unknown key in a mode", "modes[0].freq", "/modes/0"},
+      {"unknown degree of freedom", "modes[0].shape.q_b", "/modes/0/shape"}};
+  for (const auto& u : unknown) {
+    json j = ValidDataset();
+    const std::string field = u.field;
+    j[json::json_pointer(u.at)][field.substr(field.rfind('.') + 1)] = 1.0;
+    add(u.what, j, u.field);
+  }
+  json j = ValidDataset();
+  j["modes"][0]["label"] = "hub_vertical";
+  add("label outside the contract", j, "modes[0].label");
+  j = ValidDataset();
+  j["modes"].push_back(j["modes"][0]);
+  add("label twice", j, "modes[1].label");
+  j = ValidDataset();
+  j["modes"] = json::array();
+  add("no modes", j, "modes");
+  j = ValidDataset();
+  j["modes"][0].erase("damping_ratio");
+  add("damping sigma without ratio", j, "modes[0].damping_sigma");
+  j = ValidDataset();
+  j["modes"][0].erase("shape");
+  add("shape sigma without shape", j, "modes[0].shape_sigma");
+  j = ValidDataset();
+  j["modes"][0]["shape"] = {{"z_b", 0.0}};
+  add("all-zero shape", j, "modes[0].shape");
+  j = ValidDataset();
+  j["initial"]["m_b"] = 2.0;
+  add("known and initial", j, "initial.m_b");
+  const struct { const char* what; const char* from; const char* to; const char* field; } ties[] = {
+      {"tie to itself", "k_btheta", "k_btheta", "ties.k_btheta"},
+      {"tie to an unknown parameter", "k_btheta", "k_nope", "ties.k_btheta"},
+      {"tie from an unknown parameter", "k_nope", "k_bx", "ties.k_nope"},
+      {"tie chain", "k_btheta", "k_bz", "ties.k_btheta"},
+      {"tied and initial", "k_bx", "k_btheta", "ties.k_bx"}};
+  for (const auto& t : ties) {
+    j = ValidDataset();
+    j["ties"][t.from] = t.to;
+    add(t.what, j, t.field);
+  }
+  // Text that is not a dataset at all.
+  const std::string valid = ValidDataset().dump();
+  for (const auto& [what, text] : std::vector<std::pair<std::string, std::string>>{
+           {"empty file", ""},
+           {"truncated", valid.substr(0, valid.size() / 2)},
+           {"binary", std::string("\x7f" "ELF\x02\x01\x01\0\0\xff\xfe", 12)},
+           {"top level array", "[1, 2]"},
+           {"duplicate key", R"({"name": "a", "name": "b"})"},
+           {"nested too deep", std::string(100, '[') + std::string(100, ']')}}) {
+    out.push_back({what, text, ""});
+  }
+  return out;
 }
 
 }  // namespace ringid::testing

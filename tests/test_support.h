@@ -4,6 +4,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "datasets/dataset.h"
 #include "model/parameters.h"
@@ -22,6 +23,16 @@ Parameters PaperIdentified();
 Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
                          double freq_rel_sigma, double damping_sigma,
                          double shape_sigma, std::mt19937_64* rng);
+
+// Every field of the contract's dataset broken in every way that makes
+// sense, as file text; `field` is what the error line must name ("" for text
+// that is not JSON at all).
+struct MalformedDataset {
+  std::string what;
+  std::string text;
+  std::string field;
+};
+std::vector<MalformedDataset> MalformedDatasets();
 
 }  // namespace ringid::testing
 
