@@ -4,96 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <random>
 #include <sstream>
-
-#include <ceres/ceres.h>
 
 namespace ringid {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-struct Fit {
-  Eigen::VectorXd x;
-  double cost = kInf;
-  bool converged = false;
-  std::string message;
-};
-
-// 1/2 |r(x)|^2, or +inf where the model cannot be solved.
-double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
-  std::vector<double> r(residuals.num_residuals());
-  if (!residuals.Evaluate(x.data(), r.data())) return kInf;
-  double c = 0;
-  for (double v : r) c += v * v;
-  return 0.5 * c;
-}
-
-// Nothing free: the cost at the given parameters is the whole answer.
-Fit FitNothing(const ModalResiduals& residuals, const Eigen::VectorXd& x0) {
-  Fit fit{x0, CostAt(residuals, x0), true, "nothing free"};
-  if (!(fit.cost < kInf)) {
-    fit.message = "the model cannot be solved at the given parameters";
-  }
-  return fit;
-}
-
-Fit FitLevenbergMarquardt(const ModalResiduals& residuals,
-                          const Eigen::VectorXd& x0,
-                          const Eigen::VectorXd& lower,
-                          const Eigen::VectorXd& upper,
-                          const IdentifyOptions& o) {
-  Fit fit;
-  fit.x = x0;
-  const int n = static_cast<int>(x0.size());
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
-                                                         ceres::CENTRAL>(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
-  cost->AddParameterBlock(n);
-  cost->SetNumResiduals(residuals.num_residuals());
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, fit.x.data());
-  for (int i = 0; i < n; ++i) {
-    problem.SetParameterLowerBound(fit.x.data(), i, lower[i]);
-    problem.SetParameterUpperBound(fit.x.data(), i, upper[i]);
-  }
-  ceres::Solver::Options so;
-  so.minimizer_type = ceres::TRUST_REGION;
-  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = o.max_iterations;
-  so.function_tolerance = 1e-14;
-  so.gradient_tolerance = 1e-14;
-  so.parameter_tolerance = 1e-12;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
-  so.num_threads = 1;
-  ceres::Solver::Summary summary;
-  // An unsolvable start is refused here rather than inside Ceres.
-  if (!(CostAt(residuals, fit.x) < kInf)) {
-    fit.message = "the model cannot be solved at this start";
-    return fit;
-  }
-  ceres::Solve(so, &problem, &summary);
-  fit.cost = summary.IsSolutionUsable() ? summary.final_cost : kInf;
-  fit.converged = summary.termination_type == ceres::CONVERGENCE;
-  fit.message = summary.message;
-  return fit;
-}
-
-Fit FitSimplex(const ModalResiduals& residuals, const Eigen::VectorXd& x0,
-               const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
-               const IdentifyOptions& o) {
-  auto f = [&](const Eigen::VectorXd& x) { return CostAt(residuals, x); };
-  const SimplexResult s = MinimizeNelderMead(f, x0, lower, upper, o.simplex);
-  Fit fit;
-  fit.x = s.x;
-  fit.cost = s.cost;
-  fit.converged = s.converged;
-  fit.message = s.message;
-  return fit;
-}
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
@@ -101,10 +16,6 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
 }
 
 }  // namespace
-
-const char* MethodName(Method m) {
-  return m == Method::kSimplex ? "simplex" : "lm";
-}
 
 bool IdentifyOptions::IsValid(std::string* why) const {
   if (starts < 1 || starts > 100000) {
@@ -145,46 +56,20 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     return;
   }
   ModalResiduals residuals(model, dataset, setup, o.residuals);
-  const int n = setup.size();
   const Eigen::VectorXd x0 = setup.Encode(setup.start());
-  Eigen::VectorXd lower(n), upper(n);
-  const double log_bound = std::log(o.bound_factor);
-  for (int i = 0; i < n; ++i) {
-    const Param p = setup.free()[i];
-    if (setup.is_log(i)) {
-      lower[i] = x0[i] - log_bound;
-      upper[i] = x0[i] + log_bound;
-    } else {
-      const double span = std::max(std::abs(x0[i]), 1.0) * o.bound_factor;
-      lower[i] = Info(p).domain == Domain::kNonNegative ? 0.0 : x0[i] - span;
-      upper[i] = x0[i] + span;
-    }
-  }
-
-  std::mt19937_64 rng(o.seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  Fit best;
-  const int starts = n == 0 ? 1 : o.starts;
-  for (int k = 0; k < starts; ++k) {
-    Eigen::VectorXd start = x0;
-    if (k > 0) {
-      for (int i = 0; i < n; ++i) {
-        const double step = o.start_spread * normal(rng);
-        start[i] = setup.is_log(i) ? x0[i] + step
-                                   : x0[i] + step * std::max(std::abs(x0[i]), 1.0);
-      }
-      start = start.cwiseMax(lower).cwiseMin(upper);
-    }
-    const Fit fit = n == 0 ? FitNothing(residuals, x0)
-                    : o.method == Method::kSimplex
-                        ? FitSimplex(residuals, start, lower, upper, o)
-                        : FitLevenbergMarquardt(residuals, start, lower, upper, o);
+  const Box box = BoundsAround(setup, x0, o.bound_factor);
+  const int starts = setup.size() == 0 ? 1 : o.starts;
+  LocalFit best;
+  for (const Eigen::VectorXd& start :
+       DrawStarts(setup, x0, box, starts, o.start_spread, o.seed)) {
+    LocalFit fit = FitLocally(residuals, o.method, start, box,
+                              o.max_iterations, o.simplex);
     s->start_costs.push_back(fit.cost);
-    if (k == 0 || fit.cost < best.cost) best = fit;
+    if (s->start_costs.size() == 1 || fit.cost < best.cost) best = std::move(fit);
   }
   s->starts = static_cast<int>(s->start_costs.size());
   s->evaluations = residuals.evaluations();
-  if (!(best.cost < kInf)) {
+  if (!std::isfinite(best.cost)) {
     s->message = "no start produced a usable fit: " + best.message;
     s->seconds = Seconds(t0);
     return;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "estimation/fit.h"
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
 #include "estimation/simplex.h"
@@ -14,9 +15,6 @@
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
-enum class Method { kLevenbergMarquardt, kSimplex };
-const char* MethodName(Method m);  // "lm", "simplex"
 
 struct IdentifyOptions {
   Method method = Method::kLevenbergMarquardt;

@@ -1,0 +1,155 @@
+#include "estimation/fit.h"
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include <ceres/ceres.h>
+
+namespace ringid {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
+                               const Eigen::VectorXd& start, const Box& box,
+                               int max_iterations, int fixed) {
+  LocalFit fit;
+  fit.x = start;
+  const int n = static_cast<int>(start.size());
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
+                                                         ceres::CENTRAL>(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
+  cost->AddParameterBlock(n);
+  cost->SetNumResiduals(residuals.num_residuals());
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, fit.x.data());
+  if (fixed >= 0 && n == 1) {
+    problem.SetParameterBlockConstant(fit.x.data());
+  } else if (fixed >= 0) {
+    problem.SetManifold(fit.x.data(), new ceres::SubsetManifold(n, {fixed}));
+  }
+  for (int i = 0; i < n; ++i) {
+    if (i == fixed) continue;
+    problem.SetParameterLowerBound(fit.x.data(), i, box.lower[i]);
+    problem.SetParameterUpperBound(fit.x.data(), i, box.upper[i]);
+  }
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = max_iterations;
+  so.function_tolerance = 1e-14;
+  so.gradient_tolerance = 1e-14;
+  so.parameter_tolerance = 1e-12;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.num_threads = 1;
+  // An unsolvable start is refused here rather than inside Ceres.
+  if (!(CostAt(residuals, fit.x) < kInf)) {
+    fit.message = "the model cannot be solved at this start";
+    return fit;
+  }
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  fit.cost = summary.IsSolutionUsable() ? summary.final_cost : kInf;
+  fit.converged = summary.termination_type == ceres::CONVERGENCE;
+  fit.message = summary.message;
+  return fit;
+}
+
+LocalFit FitSimplex(const ModalResiduals& residuals,
+                    const Eigen::VectorXd& start, const Box& box,
+                    SimplexOptions options, int fixed) {
+  Box held = box;
+  if (fixed >= 0) held.lower[fixed] = held.upper[fixed] = start[fixed];
+  auto f = [&](const Eigen::VectorXd& x) { return CostAt(residuals, x); };
+  const SimplexResult s =
+      MinimizeNelderMead(f, start, held.lower, held.upper, options);
+  LocalFit fit;
+  fit.x = s.x;
+  fit.cost = s.cost;
+  fit.converged = s.converged;
+  fit.message = s.message;
+  return fit;
+}
+
+}  // namespace
+
+const char* MethodName(Method m) {
+  return m == Method::kSimplex ? "simplex" : "lm";
+}
+
+Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
+                 double bound_factor) {
+  const int n = setup.size();
+  Box box{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  const double log_bound = std::log(bound_factor);
+  for (int i = 0; i < n; ++i) {
+    if (setup.is_log(i)) {
+      box.lower[i] = x0[i] - log_bound;
+      box.upper[i] = x0[i] + log_bound;
+    } else {
+      const double span = std::max(std::abs(x0[i]), 1.0) * bound_factor;
+      box.lower[i] = Info(setup.free()[i]).domain == Domain::kNonNegative
+                         ? 0.0
+                         : x0[i] - span;
+      box.upper[i] = x0[i] + span;
+    }
+  }
+  return box;
+}
+
+std::vector<Eigen::VectorXd> DrawStarts(const ParameterSetup& setup,
+                                        const Eigen::VectorXd& x0,
+                                        const Box& box, int starts,
+                                        double spread, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<Eigen::VectorXd> out = {x0};
+  for (int k = 1; k < starts; ++k) {
+    Eigen::VectorXd start = x0;
+    for (int i = 0; i < setup.size(); ++i) {
+      const double step = spread * normal(rng);
+      start[i] += setup.is_log(i) ? step : step * std::max(std::abs(x0[i]), 1.0);
+    }
+    out.push_back(start.cwiseMax(box.lower).cwiseMin(box.upper));
+  }
+  return out;
+}
+
+double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
+  std::vector<double> r(residuals.num_residuals());
+  if (!residuals.Evaluate(x.data(), r.data())) return kInf;
+  double c = 0;
+  for (double v : r) c += v * v;
+  return 0.5 * c;
+}
+
+LocalFit FitLocally(const ModalResiduals& residuals, Method method,
+                    const Eigen::VectorXd& start, const Box& box,
+                    int max_iterations, const SimplexOptions& simplex,
+                    int fixed) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const long before = residuals.evaluations();
+  LocalFit fit;
+  if (start.size() == 0 || (fixed >= 0 && start.size() == 1 &&
+                            method == Method::kSimplex)) {
+    fit.x = start;
+    fit.cost = CostAt(residuals, start);
+    fit.converged = true;
+    fit.message = fit.cost < kInf
+                      ? "nothing free"
+                      : "the model cannot be solved at the given parameters";
+  } else if (method == Method::kSimplex) {
+    fit = FitSimplex(residuals, start, box, simplex, fixed);
+  } else {
+    fit = FitLevenbergMarquardt(residuals, start, box, max_iterations, fixed);
+  }
+  fit.evaluations = residuals.evaluations() - before;
+  fit.seconds = std::chrono::duration<double>(
+                    std::chrono::steady_clock::now() - t0).count();
+  return fit;
+}
+
+}  // namespace ringid

@@ -1,0 +1,59 @@
+// One local fit from one start, the building block of identify, compare and
+// the profile likelihood.
+#ifndef RINGID_ESTIMATION_FIT_H_
+#define RINGID_ESTIMATION_FIT_H_
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "estimation/residuals.h"
+#include "estimation/setup.h"
+#include "estimation/simplex.h"
+
+namespace ringid {
+
+enum class Method { kLevenbergMarquardt, kSimplex };
+const char* MethodName(Method m);  // "lm", "simplex"
+
+struct Box {
+  Eigen::VectorXd lower, upper;
+};
+
+// Free coordinates within a factor `bound_factor` of x0 (log coordinates),
+// or x0 +- bound_factor * max(|x0|, 1) (others; non-negative ones from 0).
+Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
+                 double bound_factor);
+
+// x0 first, then starts - 1 points drawn around it: log coordinates moved by
+// N(0, spread), others by N(0, spread) * max(|x|, 1); clipped to the box.
+std::vector<Eigen::VectorXd> DrawStarts(const ParameterSetup& setup,
+                                        const Eigen::VectorXd& x0,
+                                        const Box& box, int starts,
+                                        double spread, unsigned seed);
+
+// 1/2 |r(x)|^2, or +inf where the model cannot be solved.
+double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);
+
+struct LocalFit {
+  Eigen::VectorXd x;
+  double cost = std::numeric_limits<double>::infinity();
+  bool converged = false;
+  std::string message;
+  long evaluations = 0;  // model solutions this fit used
+  double seconds = 0;
+};
+
+// Levenberg-Marquardt (ceres::Solve on central-difference Jacobians) or the
+// Downhill Simplex from `start`. `fixed` >= 0 holds that coordinate at its
+// start value (a profile). With no free coordinate it evaluates the start.
+LocalFit FitLocally(const ModalResiduals& residuals, Method method,
+                    const Eigen::VectorXd& start, const Box& box,
+                    int max_iterations, const SimplexOptions& simplex,
+                    int fixed = -1);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_FIT_H_
