@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages ringid builds with, if any is missing.
+# Installs the Debian 12 packages ringid builds with, and any packages named
+# as arguments (scripts/fuzz.sh adds clang), if any is missing.
 set -euo pipefail
 packages=(g++ cmake make libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
-          libgtest-dev libbenchmark-dev nlohmann-json3-dev)
+          libgtest-dev libbenchmark-dev nlohmann-json3-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
