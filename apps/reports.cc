@@ -101,6 +101,67 @@ json IdentifyReport(const IdentifySummary& s, const Dataset& d,
   return r;
 }
 
+json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d) {
+  json j;
+  j["report"] = "identifiability";
+  j["dataset"] = d.name;
+  j["success"] = r.success;
+  if (!r.success) j["message"] = r.message;
+  j["rank"] = r.rank;
+  j["num_residuals"] = r.num_residuals;
+  j["condition_number"] = Finite(r.condition_number);
+  j["rank_explanation"] = r.rank_explanation;
+  json sv = json::array();
+  for (int i = 0; i < r.singular_values.size(); ++i) sv.push_back(r.singular_values[i]);
+  j["singular_values"] = sv;
+  j["coordinates"] = r.coordinate_names;
+  json params = json::object();
+  for (const ParameterIdentifiability& p : r.parameters) {
+    json q;
+    q["value"] = p.value;
+    q["identifiable"] = IdentifiabilityName(p.identifiable);
+    q["reason"] = p.reason;
+    q["std"] = p.std ? json(*p.std) : json(nullptr);
+    q["wald_95"] = p.wald_95 ? json::array({p.wald_95->first, p.wald_95->second}) : json(nullptr);
+    if (p.profile_95.computed) {
+      q["profile_95"] = json::array({p.profile_95.lower ? json(*p.profile_95.lower) : json(nullptr),
+                                     p.profile_95.upper ? json(*p.profile_95.upper) : json(nullptr)});
+      q["profile_closed"] = p.profile_95.lower.has_value() && p.profile_95.upper.has_value();
+      json curve = json::array();
+      for (const auto& [v, d2] : p.profile_95.curve) curve.push_back({v, d2});
+      q["profile_curve"] = curve;
+    } else {
+      q["profile_95"] = nullptr;
+    }
+    params[ParamName(p.param)] = q;
+  }
+  j["parameters"] = params;
+  json combos = json::array();
+  for (const Combination& c : r.combinations) {
+    json terms = json::object();
+    for (const auto& [name, coef] : c.terms) terms[name] = coef;
+    combos.push_back({{"text", c.text}, {"meaning", c.meaning},
+                      {"singular_value", c.singular_value}, {"terms", terms}});
+  }
+  j["combinations"] = combos;
+  j["correlation"] = r.correlation.size() ? Matrix(r.correlation) : json(nullptr);
+  json pairs = json::array();
+  for (const CollinearSubset& c : r.collinear_pairs) {
+    pairs.push_back({{"parameters", c.names}, {"collinearity_index", Finite(c.index)}});
+  }
+  j["collinear_pairs"] = pairs;
+  j["identifiable_subset"] = r.identifiable_subset;
+  json advice = json::array();
+  for (const Advice& a : r.advice) {
+    advice.push_back({{"parameter", a.parameter}, {"observation", a.observation},
+                      {"information_gain", a.information_gain},
+                      {"makes_identifiable", a.makes_identifiable}});
+  }
+  j["advice"] = advice;
+  j["seconds"] = r.seconds;
+  return j;
+}
+
 json PredictReport(const ModalSolution& s) {
   json r;
   r["report"] = "predict";

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "model/modal.h"
 
@@ -16,6 +17,7 @@ namespace ringid {
 nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
                               const IdentifyOptions& o);
 nlohmann::json PredictReport(const ModalSolution& s);
+nlohmann::json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d);
 
 // A parameter set (see LoadParameterSet in datasets/dataset.h).
 nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,

@@ -13,6 +13,7 @@
 
 #include "apps/reports.h"
 #include "datasets/dataset.h"
+#include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "model/effects.h"
 #include "model/rigid_ring_model.h"
@@ -53,6 +54,10 @@ const char kHelp[] =
     "             [--weighting=sigma|relative] [--relative_sigma=X] [--shapes=BOOL]\n"
     "             [--damping=BOOL] [--shape_convention=contract|paper]\n"
     "             [--effects=LIST] [--output=FILE] [--save_parameters=FILE]\n"
+    "  identifiability  what the data determine at the fitted point: rank,\n"
+    "             classes, Wald and profile intervals, free combinations,\n"
+    "             collinear pairs, identifiable subset, experiment advice\n"
+    "             --dataset=FILE and the fitting flags of identify\n"
     "\n"
     "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
     "         axle_torsion, sensor_mass, lug_coupling\n"
@@ -174,40 +179,48 @@ int Predict(int argc, char** argv) {
   return s.ok ? kExitOk : kExitFailure;
 }
 
+const std::set<std::string> kFitFlags = {
+    "dataset", "method", "starts", "seed", "weighting", "relative_sigma",
+    "shapes", "damping", "shape_convention", "effects", "output"};
+
+// The flags every fitting command shares, read into options, the model's
+// effects and the dataset; false with a one-line message on bad input.
+bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
+                   Dataset* d, std::string* error) {
+  if (FLAGS_method == "lm") o->method = Method::kLevenbergMarquardt;
+  else if (FLAGS_method == "simplex") o->method = Method::kSimplex;
+  else { *error = "--method: must be lm or simplex"; return false; }
+  if (FLAGS_weighting == "sigma") o->residuals.frequency_weighting = FrequencyWeighting::kSigma;
+  else if (FLAGS_weighting == "relative") o->residuals.frequency_weighting = FrequencyWeighting::kRelative;
+  else { *error = "--weighting: must be sigma or relative"; return false; }
+  if (FLAGS_shape_convention == "contract") o->residuals.shape_convention = ShapeConvention::kContract;
+  else if (FLAGS_shape_convention == "paper") o->residuals.shape_convention = ShapeConvention::kPaper;
+  else { *error = "--shape_convention: must be contract or paper"; return false; }
+  o->starts = FLAGS_starts;
+  o->seed = static_cast<unsigned>(FLAGS_seed);
+  o->residuals.relative_sigma = FLAGS_relative_sigma;
+  o->residuals.use_shapes = FLAGS_shapes;
+  o->residuals.use_damping = FLAGS_damping;
+  if (!o->IsValid(error)) { *error = "bad option: " + *error; return false; }
+  if (!ParseEffects(effects, error)) return false;
+  if (FLAGS_dataset.empty()) { *error = "needs --dataset=FILE"; return false; }
+  for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
+    if (!out.empty() && !CanWrite(out, error)) return false;
+  }
+  LoadError load;
+  if (!LoadDataset(FLAGS_dataset, d, &load)) { *error = load.OneLine(); return false; }
+  return true;
+}
+
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv,
-                {"dataset", "method", "starts", "seed", "weighting",
-                 "relative_sigma", "shapes", "damping", "shape_convention",
-                 "effects", "output", "save_parameters"},
-                &error)) {
-    return Usage(error);
-  }
+  std::set<std::string> allowed = kFitFlags;
+  allowed.insert("save_parameters");
+  if (!SetFlags(argc, argv, allowed, &error)) return Usage(error);
   IdentifyOptions o;
-  if (FLAGS_method == "lm") o.method = Method::kLevenbergMarquardt;
-  else if (FLAGS_method == "simplex") o.method = Method::kSimplex;
-  else return Usage("--method: must be lm or simplex");
-  if (FLAGS_weighting == "sigma") o.residuals.frequency_weighting = FrequencyWeighting::kSigma;
-  else if (FLAGS_weighting == "relative") o.residuals.frequency_weighting = FrequencyWeighting::kRelative;
-  else return Usage("--weighting: must be sigma or relative");
-  if (FLAGS_shape_convention == "contract") o.residuals.shape_convention = ShapeConvention::kContract;
-  else if (FLAGS_shape_convention == "paper") o.residuals.shape_convention = ShapeConvention::kPaper;
-  else return Usage("--shape_convention: must be contract or paper");
-  o.starts = FLAGS_starts;
-  o.seed = static_cast<unsigned>(FLAGS_seed);
-  o.residuals.relative_sigma = FLAGS_relative_sigma;
-  o.residuals.use_shapes = FLAGS_shapes;
-  o.residuals.use_damping = FLAGS_damping;
-  if (!o.IsValid(&error)) return Usage("bad option: " + error);
   std::vector<const Effect*> effects;
-  if (!ParseEffects(&effects, &error)) return Usage(error);
-  if (FLAGS_dataset.empty()) return Usage("identify needs --dataset=FILE");
-  for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
-    if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
-  }
   Dataset d;
-  LoadError load;
-  if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
+  if (!ReadFitInputs(&o, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
   IdentifySummary s;
   Identify(model, d, o, &s);
@@ -227,6 +240,25 @@ int IdentifyCommand(int argc, char** argv) {
   return s.success ? kExitOk : kExitFailure;
 }
 
+int IdentifiabilityCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
+  IdentifiabilityOptions o;
+  std::vector<const Effect*> effects;
+  Dataset d;
+  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
+  const RigidRingModel model(effects);
+  IdentifiabilityReport r;
+  AnalyzeIdentifiability(model, d, o, &r);
+  if (r.fit.invalid_input) return Usage(FLAGS_dataset + ": " + r.fit.message);
+  std::printf("%s", r.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, IdentifiabilityJson(r, d));
+    if (rc != kExitOk) return rc;
+  }
+  return r.success ? kExitOk : kExitFailure;
+}
+
 }  // namespace
 }  // namespace ringid
 
@@ -242,5 +274,6 @@ int main(int argc, char** argv) {
   }
   if (command == "predict") return ringid::Predict(argc, argv);
   if (command == "identify") return ringid::IdentifyCommand(argc, argv);
+  if (command == "identifiability") return ringid::IdentifiabilityCommand(argc, argv);
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }

@@ -31,6 +31,25 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
   return false;
 }
 
+bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
+                      Eigen::MatrixXd* jacobian) {
+  const int n = static_cast<int>(x.size());
+  const int m = residuals.num_residuals();
+  // The same cost function as the fit: central differences through the
+  // eigen-solution.
+  ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL> cost(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
+  cost.AddParameterBlock(n);
+  cost.SetNumResiduals(m);
+  Eigen::VectorXd r(m);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
+  double* jac[] = {J.data()};
+  const double* params[] = {x.data()};
+  if (!cost.Evaluate(params, r.data(), jac) || !J.allFinite()) return false;
+  *jacobian = J;
+  return true;
+}
+
 Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                                const ParameterSetup& setup,
                                const Eigen::VectorXd& x_in,
@@ -46,26 +65,19 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     u.error = "no free parameters";
     return u;
   }
-  // The same cost function as the fit: central differences through the
-  // eigen-solution.
   Eigen::VectorXd x = x_in;
+  Eigen::MatrixXd J;
+  if (!EvaluateJacobian(residuals, x, &J)) {
+    u.error = "the Jacobian could not be evaluated at the fitted point";
+    return u;
+  }
   auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
                                                          ceres::CENTRAL>(
       &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
   cost->AddParameterBlock(n);
   cost->SetNumResiduals(m);
-  ceres::Problem::Options problem_options;
-  ceres::Problem problem(problem_options);
+  ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
-
-  Eigen::VectorXd r(m);
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
-  double* jac[] = {J.data()};
-  const double* params[] = {x.data()};
-  if (!cost->Evaluate(params, r.data(), jac) || !J.allFinite()) {
-    u.error = "the Jacobian could not be evaluated at the fitted point";
-    return u;
-  }
   u.ok = true;
   u.jacobian = J;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(u.jacobian, Eigen::ComputeFullV);

@@ -46,6 +46,10 @@ struct Uncertainty {
   std::vector<double> std;  // per coordinate; NaN where not defined
 };
 
+// The weighted Jacobian dr/dx at x by the fit's own central differences.
+bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
+                      Eigen::MatrixXd* jacobian);
+
 Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                                const ParameterSetup& setup,
                                const Eigen::VectorXd& x,

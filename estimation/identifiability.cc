@@ -1,0 +1,396 @@
+#include "estimation/identifiability.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
+namespace ringid {
+namespace {
+
+constexpr double kChiSquare1At95 = 3.841458820694124;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// "log K_cx" for a log coordinate, the name otherwise.
+std::string CoordinateText(const ParameterSetup& setup, int i) {
+  return (setup.is_log(i) ? "log " : "") + std::string(ParamName(setup.free()[i]));
+}
+
+double Physical(const ParameterSetup& setup, int i, double x) {
+  return setup.is_log(i) ? std::exp(x) : x;
+}
+
+// A direction in coordinates as text: terms above 10 % of the largest,
+// coefficients scaled so the largest is 1.
+Combination Describe(const ParameterSetup& setup, const Eigen::VectorXd& d,
+                     double singular_value) {
+  Combination c;
+  c.singular_value = singular_value;
+  const double big = d.cwiseAbs().maxCoeff();
+  std::vector<int> order;
+  for (int i = 0; i < d.size(); ++i) {
+    if (std::abs(d[i]) >= 0.1 * big) order.push_back(i);
+  }
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
+  // Sign convention: the largest term positive.
+  const double sign = d[order.front()] < 0 ? -1 : 1;
+  std::ostringstream text;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const double coef = sign * d[order[k]] / big;
+    c.terms.emplace_back(ParamName(setup.free()[order[k]]), coef);
+    const double mag = std::abs(coef);
+    if (k > 0) text << (coef < 0 ? " - " : " + ");
+    else if (coef < 0) text << "-";
+    if (std::abs(mag - 1) > 0.005) {
+      char num[32];
+      std::snprintf(num, sizeof num, "%.2f ", mag);
+      text << num;
+    }
+    text << CoordinateText(setup, order[k]);
+  }
+  c.text = text.str();
+  return c;
+}
+
+// Fisher information with a weak prior (sd 10 in coordinates) so that its
+// inverse exists; the prior only sets the floor of the information gain.
+Eigen::MatrixXd Information(const Eigen::MatrixXd& J) {
+  Eigen::MatrixXd F = J.transpose() * J;
+  F.diagonal().array() += 1e-2;
+  return F;
+}
+
+Eigen::VectorXd Variances(const Eigen::MatrixXd& F) {
+  return F.ldlt().solve(Eigen::MatrixXd::Identity(F.rows(), F.cols())).diagonal();
+}
+
+ProfileInterval Profile(const ModalResiduals& residuals,
+                        const ParameterSetup& setup, const Eigen::VectorXd& xhat,
+                        double cost_min, const Box& box, int i, double wald_std,
+                        const IdentifiabilityOptions& o) {
+  ProfileInterval p;
+  p.computed = true;
+  p.curve.emplace_back(Physical(setup, i, xhat[i]), 0.0);
+  for (int side : {-1, +1}) {
+    Eigen::VectorXd x = xhat;
+    // Start at a quarter of the Wald standard deviation where there is one.
+    double step = std::isfinite(wald_std) ? std::min(o.profile_first_step, 0.25 * wald_std)
+                                          : o.profile_first_step;
+    double t_prev = xhat[i], d_prev = 0;
+    for (int k = 0; k < o.profile_steps; ++k) {
+      double t = t_prev + side * step;
+      const bool at_bound = t <= box.lower[i] || t >= box.upper[i];
+      t = std::clamp(t, box.lower[i], box.upper[i]);
+      x[i] = t;
+      const LocalFit fit = FitLocally(residuals, Method::kLevenbergMarquardt, x,
+                                      box, o.fit.max_iterations, o.fit.simplex, i);
+      if (!std::isfinite(fit.cost)) break;
+      x = fit.x;
+      const double d = std::max(0.0, 2 * (fit.cost - cost_min));
+      p.curve.emplace_back(Physical(setup, i, t), d);
+      if (d >= kChiSquare1At95) {
+        // The signed root of 2 delta cost is linear in t for a quadratic
+        // profile: interpolating it is exact there.
+        const double a = std::sqrt(d_prev), b = std::sqrt(d);
+        const double cross = t_prev + (std::sqrt(kChiSquare1At95) - a) / (b - a) * (t - t_prev);
+        (side < 0 ? p.lower : p.upper) = Physical(setup, i, cross);
+        break;
+      }
+      if (at_bound) break;
+      t_prev = t;
+      d_prev = d;
+      step *= o.profile_growth;
+    }
+  }
+  std::sort(p.curve.begin(), p.curve.end());
+  return p;
+}
+
+}  // namespace
+
+bool IdentifiabilityOptions::IsValid(std::string* why) const {
+  if (profile_steps < 0 || profile_steps > 1000) *why = "profile_steps must lie in [0, 1000]";
+  else if (!(profile_first_step > 0) || !(profile_growth >= 1)) *why = "profile steps must grow from a positive first step";
+  else if (!(collinearity_threshold > 1)) *why = "collinearity_threshold must exceed 1";
+  else if (!(near_null > 0 && near_null < 1)) *why = "near_null must lie in (0, 1)";
+  else if (!(advice_damping_sigma > 0 && advice_shape_sigma > 0 && advice_known_relative_sigma > 0)) *why = "advice sigmas must be positive";
+  else return fit.IsValid(why);
+  return false;
+}
+
+void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
+                            const IdentifiabilityOptions& o,
+                            IdentifiabilityReport* r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *r = IdentifiabilityReport{};
+  std::string why;
+  if (!o.IsValid(&why)) {
+    r->message = "invalid options: " + why;
+    r->fit.invalid_input = true;
+    return;
+  }
+  Identify(model, dataset, o.fit, &r->fit);
+  if (!r->fit.success) {
+    r->message = "identification failed: " + r->fit.message;
+    return;
+  }
+  const Uncertainty& u = r->fit.uncertainty;
+  if (!u.ok) {
+    r->message = "no Jacobian at the fitted point: " + u.error;
+    return;
+  }
+  ParameterSetup setup;
+  ParameterSetup::Build(model, dataset, &setup, &why);
+  ModalResiduals residuals(model, dataset, setup, o.fit.residuals);
+  const int n = setup.size();
+  const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
+  const Eigen::MatrixXd& J = u.jacobian;
+  r->success = true;
+  r->rank = u.rank;
+  r->num_residuals = static_cast<int>(J.rows());
+  r->condition_number = u.condition_number;
+  r->singular_values = u.singular_values;
+  r->coordinate_names = r->fit.coordinate_names;
+  {
+    std::ostringstream e;
+    e << "rank " << u.rank << " of " << n << " free coordinates from "
+      << J.rows() << " weighted residuals";
+    if (u.rank < n) {
+      e << ": " << n - u.rank << " direction(s) change no residual";
+      if (J.rows() < n) {
+        e << " (" << J.rows() << " observations cannot determine " << n
+          << " unknowns; at least " << n - J.rows() << " are left free)";
+      }
+    }
+    r->rank_explanation = e.str();
+  }
+
+  // Per coordinate: class, std, Wald and profile intervals.
+  const Box box = BoundsAround(setup, setup.Encode(setup.start()), o.fit.bound_factor);
+  for (int i = 0; i < n; ++i) {
+    ParameterIdentifiability p;
+    p.param = setup.free()[i];
+    p.value = Physical(setup, i, xhat[i]);
+    p.identifiable = u.classes[i];
+    p.reason = u.reasons[i];
+    if (std::isfinite(u.std[i])) {
+      const double s = u.std[i];
+      p.std = setup.is_log(i) ? p.value * s : s;
+      p.wald_95 = setup.is_log(i)
+                      ? std::make_pair(p.value * std::exp(-1.96 * s), p.value * std::exp(1.96 * s))
+                      : std::make_pair(p.value - 1.96 * s, p.value + 1.96 * s);
+    }
+    if (o.profile_steps > 0) {
+      p.profile_95 = Profile(residuals, setup, xhat, r->fit.cost, box, i, u.std[i], o);
+    }
+    r->parameters.push_back(p);
+  }
+
+  // Structurally collinear pairs (Brun et al. 2001: index 1/sqrt(lambda_min)
+  // of the normalised columns), named as the combination they leave free.
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double ni = J.col(i).norm(), nj = J.col(j).norm();
+      if (!(ni > 0) || !(nj > 0)) continue;
+      const double cos = J.col(i).dot(J.col(j)) / (ni * nj);
+      const double lambda_min = 1 - std::abs(cos);
+      const double index = lambda_min > 1e-16 ? 1 / std::sqrt(lambda_min) : kInf;
+      if (!(index > o.collinearity_threshold)) continue;
+      r->collinear_pairs.push_back({{ParamName(setup.free()[i]), ParamName(setup.free()[j])}, index});
+      Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+      d[i] = 1 / ni;
+      d[j] = -(cos > 0 ? 1 : -1) / nj;
+      Combination c = Describe(setup, d, (J * d).norm() / d.norm());
+      const std::string a = ParamName(setup.free()[i]), b = ParamName(setup.free()[j]);
+      const bool unit = c.terms.size() == 2 && std::abs(std::abs(c.terms[1].second) - 1) < 0.01;
+      if (setup.is_log(i) && setup.is_log(j) && unit) {
+        c.meaning = c.terms[1].second > 0
+                        ? "moving both together changes nothing: only " + a + " / " + b + " is determined"
+                        : "moving them oppositely changes nothing: only " + a + " * " + b + " is determined";
+      } else {
+        c.meaning = "only one combination of " + a + " and " + b + " is determined";
+      }
+      r->combinations.push_back(c);
+    }
+  }
+  // Null and near-null directions of the whole Jacobian.
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+  const double smax = u.singular_values.size() ? u.singular_values[0] : 0;
+  for (int k = 0; k < n; ++k) {
+    const double s = k < u.singular_values.size() ? u.singular_values[k] : 0.0;
+    const bool null = k >= u.rank;
+    if (!null && !(s < o.near_null * smax)) continue;
+    Combination c = Describe(setup, svd.matrixV().col(k), null ? 0.0 : s);
+    c.meaning = null ? "free: the data do not change along it"
+                     : "nearly free: singular value " + std::to_string(s / smax) + " of the largest";
+    r->combinations.push_back(c);
+  }
+
+  if (u.covariance_ok) {
+    r->correlation = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (u.classes[i] == Identifiability::kNo || u.classes[j] == Identifiability::kNo) continue;
+        r->correlation(i, j) = u.covariance(i, j) /
+                               std::sqrt(u.covariance(i, i) * u.covariance(j, j));
+      }
+    }
+  }
+
+  // Largest identifiable subset: rank-revealing QR with column pivoting on
+  // the column-normalised Jacobian.
+  {
+    Eigen::MatrixXd Jn = J;
+    for (int i = 0; i < n; ++i) {
+      if (Jn.col(i).norm() > 0) Jn.col(i) /= Jn.col(i).norm();
+    }
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Jn);
+    qr.setThreshold(o.fit.uncertainty.rank_tolerance);
+    for (int k = 0; k < qr.rank(); ++k) {
+      r->identifiable_subset.push_back(ParamName(setup.free()[qr.colsPermutation().indices()[k]]));
+    }
+  }
+
+  // Experiment design: for each parameter not identifiable, the candidate
+  // observations ranked by the information they add on it.
+  Dataset more = dataset;
+  ModalSolution solution;
+  std::vector<int> pairs;
+  if (residuals.Pair(xhat.data(), &solution, &pairs, &why)) {
+    struct Candidate { std::string text; std::vector<int> rows; Eigen::MatrixXd extra; };
+    std::vector<Candidate> candidates;
+    for (size_t m = 0; m < more.modes.size(); ++m) {
+      const Mode& mode = solution.modes[pairs[m]];
+      MeasuredMode& mm = more.modes[m];
+      if (!mm.damping_ratio || !o.fit.residuals.use_damping) {
+        mm.damping_ratio = std::clamp(mode.damping_ratio, 1e-6, 1 - 1e-6);
+        mm.damping_sigma = o.advice_damping_sigma;
+      }
+      if (mm.shape.empty() || !o.fit.residuals.use_shapes) {
+        const RealShapeVector s = ComparableShape(mode, o.fit.residuals.shape_convention);
+        mm.shape.clear();
+        for (int d = 0; d < kNumDofs; ++d) {
+          if (DofPlane(static_cast<Dof>(d)) == mode.plane()) mm.shape.emplace_back(static_cast<Dof>(d), s[d]);
+        }
+        mm.shape_sigma = o.advice_shape_sigma;
+      }
+    }
+    ResidualOptions all = o.fit.residuals;
+    all.use_damping = all.use_shapes = true;
+    ModalResiduals augmented(model, more, setup, all);
+    Eigen::MatrixXd Ja;
+    if (EvaluateJacobian(augmented, xhat, &Ja)) {
+      const auto& slots = augmented.slots();
+      for (size_t m = 0; m < more.modes.size(); ++m) {
+        const std::string label = LabelName(more.modes[m].label);
+        const MeasuredMode& original = dataset.modes[m];
+        Candidate damping{"damping ratio of the " + label + " mode", {}, {}};
+        Candidate shape{"mode shape of the " + label + " mode", {}, {}};
+        for (size_t k = 0; k < slots.size(); ++k) {
+          if (slots[k].mode != static_cast<int>(m)) continue;
+          if (slots[k].kind == ModalResiduals::Slot::kDamping &&
+              !(original.damping_ratio && o.fit.residuals.use_damping)) damping.rows.push_back(k);
+          if (slots[k].kind == ModalResiduals::Slot::kShape &&
+              !(!original.shape.empty() && o.fit.residuals.use_shapes)) shape.rows.push_back(k);
+        }
+        if (!damping.rows.empty()) candidates.push_back(damping);
+        if (!shape.rows.empty()) candidates.push_back(shape);
+      }
+      for (int i = 0; i < n; ++i) {
+        Candidate known{std::string("a known value of ") + ParamName(setup.free()[i]) + " (to " +
+                            std::to_string(static_cast<int>(100 * o.advice_known_relative_sigma)) + " %)",
+                        {}, Eigen::MatrixXd::Zero(1, n)};
+        const double sigma = setup.is_log(i) ? o.advice_known_relative_sigma
+                                             : o.advice_known_relative_sigma * std::max(std::abs(xhat[i]), 1e-12);
+        known.extra(0, i) = 1 / sigma;
+        candidates.push_back(known);
+      }
+      const Eigen::MatrixXd F0 = Information(J);
+      const Eigen::VectorXd var0 = Variances(F0);
+      std::vector<Eigen::VectorXd> var_after;
+      for (const Candidate& c : candidates) {
+        Eigen::MatrixXd G = c.extra.rows() ? c.extra : Eigen::MatrixXd(c.rows.size(), n);
+        for (size_t k = 0; k < c.rows.size(); ++k) G.row(k) = Ja.row(c.rows[k]);
+        var_after.push_back(Variances(F0 + G.transpose() * G));
+      }
+      for (int i = 0; i < n; ++i) {
+        if (u.classes[i] == Identifiability::kYes) continue;
+        std::vector<Advice> mine;
+        for (size_t c = 0; c < candidates.size(); ++c) {
+          Advice a;
+          a.parameter = ParamName(setup.free()[i]);
+          a.observation = candidates[c].text;
+          a.information_gain = 0.5 * std::log(var0[i] / var_after[c][i]);
+          const double sd = std::sqrt(var_after[c][i]);
+          const double relative = setup.is_log(i) ? sd : sd / std::max(std::abs(xhat[i]), 1e-300);
+          a.makes_identifiable = relative <= o.fit.uncertainty.practical_relative_std;
+          if (a.information_gain > 0.01) mine.push_back(a);
+        }
+        std::sort(mine.begin(), mine.end(), [](const Advice& a, const Advice& b) {
+          return a.information_gain > b.information_gain;
+        });
+        if (static_cast<int>(mine.size()) > o.advice_per_parameter) mine.resize(o.advice_per_parameter);
+        r->advice.insert(r->advice.end(), mine.begin(), mine.end());
+      }
+    }
+  }
+  r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string IdentifiabilityReport::FullReport() const {
+  std::ostringstream o;
+  char line[512];
+  o << "ringid identifiability: " << (success ? "" : "FAILED: " + message) << "\n";
+  if (!success) return o.str();
+  o << "  fit: " << fit.BriefReport() << "\n";
+  o << "  " << rank_explanation << "\n";
+  std::snprintf(line, sizeof line, "  condition number %.3e; singular values:", condition_number);
+  o << line;
+  for (int i = 0; i < singular_values.size(); ++i) {
+    std::snprintf(line, sizeof line, " %.3g", singular_values[i]);
+    o << line;
+  }
+  o << "\n\n  parameter      value        class           std          Wald 95 %                profile 95 %\n";
+  for (const ParameterIdentifiability& p : parameters) {
+    auto opt = [](const std::optional<double>& v) {
+      char b[32] = "open";
+      if (v) std::snprintf(b, sizeof b, "%.4g", *v);
+      return std::string(b);
+    };
+    char wald[64] = "-", sd[32] = "-";
+    if (p.wald_95) std::snprintf(wald, sizeof wald, "[%.4g, %.4g]", p.wald_95->first, p.wald_95->second);
+    if (p.std) std::snprintf(sd, sizeof sd, "%.3e", *p.std);
+    const std::string prof = p.profile_95.computed
+                                 ? "[" + opt(p.profile_95.lower) + ", " + opt(p.profile_95.upper) + "]"
+                                 : "-";
+    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", ParamName(p.param),
+                  p.value, IdentifiabilityName(p.identifiable), sd, wald, prof.c_str());
+    o << line;
+  }
+  o << "\n  combinations the data leave free:\n";
+  for (const Combination& c : combinations) {
+    o << "    " << c.text << "  (" << c.meaning << ")\n";
+  }
+  o << "\n  largest identifiable subset (pivoted QR):";
+  for (const std::string& s : identifiable_subset) o << " " << s;
+  o << "\n";
+  if (!advice.empty()) {
+    o << "\n  what would help (information gain on the parameter, nats):\n";
+    for (const Advice& a : advice) {
+      std::snprintf(line, sizeof line, "    %-10s %-55s %6.2f%s\n", a.parameter.c_str(),
+                    a.observation.c_str(), a.information_gain,
+                    a.makes_identifiable ? "  -> identifiable" : "");
+      o << line;
+    }
+  }
+  return o.str();
+}
+
+}  // namespace ringid
