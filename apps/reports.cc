@@ -101,6 +101,41 @@ json IdentifyReport(const IdentifySummary& s, const Dataset& d,
   return r;
 }
 
+json CompareJson(const ComparisonReport& r, const Dataset& d) {
+  json j;
+  j["report"] = "compare";
+  j["dataset"] = d.name;
+  j["success"] = r.success;
+  if (!r.success) j["message"] = r.message;
+  j["starts"] = r.starts;
+  j["best_cost"] = Finite(r.best_cost);
+  auto finite_list = [](const std::vector<double>& v) {
+    json a = json::array();
+    for (double x : v) a.push_back(Finite(x));
+    return a;
+  };
+  for (const MethodRun& m : r.methods) {
+    json q;
+    q["starts"] = m.final_costs.size();
+    q["success_rate"] = m.success_rate;
+    q["final_costs"] = finite_list(m.final_costs);
+    q["evaluations"] = m.evaluations;
+    q["seconds"] = m.seconds;
+    q["seconds_per_fit"] = m.seconds_per_fit;
+    q["median_evaluations"] = m.median_evaluations;
+    q["relative_error_in_plane_eq19"] = finite_list(m.relative_error_in_plane);
+    q["relative_error_out_of_plane_eq20"] = finite_list(m.relative_error_out_of_plane);
+    j[MethodName(m.method)] = q;
+  }
+  j["initial"] = {{"cost", Finite(r.initial_cost)},
+                  {"relative_error_in_plane_eq19", Finite(r.initial_error_in_plane)},
+                  {"relative_error_out_of_plane_eq20", Finite(r.initial_error_out_of_plane)},
+                  {"note", "the dataset's initial values; for the paper's Table 1 these are Table 2"}};
+  j["paper_reported"] = {{"relative_error_in_plane_eq19", 1.41e-3},
+                         {"relative_error_out_of_plane_eq20", 6.1e-3}};
+  return j;
+}
+
 json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d) {
   json j;
   j["report"] = "identifiability";

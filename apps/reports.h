@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "model/modal.h"
@@ -17,6 +18,7 @@ namespace ringid {
 nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
                               const IdentifyOptions& o);
 nlohmann::json PredictReport(const ModalSolution& s);
+nlohmann::json CompareJson(const ComparisonReport& r, const Dataset& d);
 nlohmann::json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d);
 
 // A parameter set (see LoadParameterSet in datasets/dataset.h).

@@ -13,6 +13,7 @@
 
 #include "apps/reports.h"
 #include "datasets/dataset.h"
+#include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "model/effects.h"
@@ -57,6 +58,9 @@ const char kHelp[] =
     "  identifiability  what the data determine at the fitted point: rank,\n"
     "             classes, Wald and profile intervals, free combinations,\n"
     "             collinear pairs, identifiable subset, experiment advice\n"
+    "             --dataset=FILE and the fitting flags of identify\n"
+    "  compare    Downhill Simplex and Levenberg-Marquardt from the same --starts=N\n"
+    "             starts: success rate, final costs, evaluations, time per fit\n"
     "             --dataset=FILE and the fitting flags of identify\n"
     "\n"
     "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
@@ -259,6 +263,25 @@ int IdentifiabilityCommand(int argc, char** argv) {
   return r.success ? kExitOk : kExitFailure;
 }
 
+int CompareCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
+  CompareOptions o;
+  std::vector<const Effect*> effects;
+  Dataset d;
+  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
+  const RigidRingModel model(effects);
+  ComparisonReport r;
+  CompareMethods(model, d, o, &r);
+  if (r.invalid_input) return Usage(FLAGS_dataset + ": " + r.message);
+  std::printf("%s", r.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, CompareJson(r, d));
+    if (rc != kExitOk) return rc;
+  }
+  return r.success ? kExitOk : kExitFailure;
+}
+
 }  // namespace
 }  // namespace ringid
 
@@ -275,5 +298,6 @@ int main(int argc, char** argv) {
   if (command == "predict") return ringid::Predict(argc, argv);
   if (command == "identify") return ringid::IdentifyCommand(argc, argv);
   if (command == "identifiability") return ringid::IdentifiabilityCommand(argc, argv);
+  if (command == "compare") return ringid::CompareCommand(argc, argv);
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }

@@ -100,20 +100,25 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
   return box;
 }
 
-std::vector<Eigen::VectorXd> DrawStarts(const ParameterSetup& setup,
-                                        const Eigen::VectorXd& x0,
-                                        const Box& box, int starts,
-                                        double spread, unsigned seed) {
+std::vector<Eigen::VectorXd> DrawStarts(
+    const ParameterSetup& setup, const Eigen::VectorXd& x0, const Box& box,
+    int starts, double spread, unsigned seed,
+    const std::function<bool(const Eigen::VectorXd&)>& usable) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::vector<Eigen::VectorXd> out = {x0};
   for (int k = 1; k < starts; ++k) {
-    Eigen::VectorXd start = x0;
-    for (int i = 0; i < setup.size(); ++i) {
-      const double step = spread * normal(rng);
-      start[i] += setup.is_log(i) ? step : step * std::max(std::abs(x0[i]), 1.0);
+    Eigen::VectorXd start;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      start = x0;
+      for (int i = 0; i < setup.size(); ++i) {
+        const double step = spread * normal(rng);
+        start[i] += setup.is_log(i) ? step : step * std::max(std::abs(x0[i]), 1.0);
+      }
+      start = start.cwiseMax(box.lower).cwiseMin(box.upper);
+      if (!usable || usable(start)) break;
     }
-    out.push_back(start.cwiseMax(box.lower).cwiseMin(box.upper));
+    out.push_back(start);
   }
   return out;
 }

@@ -3,6 +3,7 @@
 #ifndef RINGID_ESTIMATION_FIT_H_
 #define RINGID_ESTIMATION_FIT_H_
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -29,10 +30,12 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
 
 // x0 first, then starts - 1 points drawn around it: log coordinates moved by
 // N(0, spread), others by N(0, spread) * max(|x|, 1); clipped to the box.
-std::vector<Eigen::VectorXd> DrawStarts(const ParameterSetup& setup,
-                                        const Eigen::VectorXd& x0,
-                                        const Box& box, int starts,
-                                        double spread, unsigned seed);
+// A draw where `usable` is false (say, a measured mode overdamped) is drawn
+// again, up to 100 times, then kept as it is.
+std::vector<Eigen::VectorXd> DrawStarts(
+    const ParameterSetup& setup, const Eigen::VectorXd& x0, const Box& box,
+    int starts, double spread, unsigned seed,
+    const std::function<bool(const Eigen::VectorXd&)>& usable = nullptr);
 
 // 1/2 |r(x)|^2, or +inf where the model cannot be solved.
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);

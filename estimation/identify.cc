@@ -59,9 +59,12 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   const Eigen::VectorXd x0 = setup.Encode(setup.start());
   const Box box = BoundsAround(setup, x0, o.bound_factor);
   const int starts = setup.size() == 0 ? 1 : o.starts;
+  auto usable = [&](const Eigen::VectorXd& x) {
+    return std::isfinite(CostAt(residuals, x));
+  };
   LocalFit best;
   for (const Eigen::VectorXd& start :
-       DrawStarts(setup, x0, box, starts, o.start_spread, o.seed)) {
+       DrawStarts(setup, x0, box, starts, o.start_spread, o.seed, usable)) {
     LocalFit fit = FitLocally(residuals, o.method, start, box,
                               o.max_iterations, o.simplex);
     s->start_costs.push_back(fit.cost);
