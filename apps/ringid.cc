@@ -12,6 +12,7 @@
 #include <glog/logging.h>
 
 #include "apps/reports.h"
+#include "benchmarks/suites.h"
 #include "datasets/dataset.h"
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
@@ -32,6 +33,9 @@ DEFINE_bool(shapes, true, "identify: use measured mode shapes");
 DEFINE_bool(damping, true, "identify: use measured damping ratios");
 DEFINE_string(shape_convention, "contract",
               "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
+DEFINE_string(suite, "", "bench: paper, synthetic or conditioning");
+DEFINE_int32(replicates, 200, "bench: Monte Carlo replicates per tire (synthetic)");
+DEFINE_string(markdown, "", "bench: also write the Markdown table here");
 DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
 
 namespace ringid {
@@ -62,6 +66,9 @@ const char kHelp[] =
     "  compare    Downhill Simplex and Levenberg-Marquardt from the same --starts=N\n"
     "             starts: success rate, final costs, evaluations, time per fit\n"
     "             --dataset=FILE and the fitting flags of identify\n"
+    "  bench      accuracy and conditioning suites, run from the repository root\n"
+    "             --suite=paper|synthetic|conditioning [--replicates=N] [--seed=N]\n"
+    "             [--output=FILE.json] [--markdown=FILE.md]\n"
     "\n"
     "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
     "         axle_torsion, sensor_mass, lug_coupling\n"
@@ -282,6 +289,31 @@ int CompareCommand(int argc, char** argv) {
   return r.success ? kExitOk : kExitFailure;
 }
 
+int BenchCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, {"suite", "replicates", "seed", "output", "markdown"}, &error)) {
+    return Usage(error);
+  }
+  if (FLAGS_replicates < 1) return Usage("--replicates: must be at least 1");
+  for (const std::string& out : {FLAGS_output, FLAGS_markdown}) {
+    if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
+  }
+  SuiteOptions o;
+  o.replicates = FLAGS_replicates;
+  o.seed = static_cast<unsigned>(FLAGS_seed);
+  const SuiteResult r = RunSuite(FLAGS_suite, o);
+  if (!r.ok) return Usage("--suite: " + r.error);
+  std::printf("%s", r.markdown.c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, r.report);
+    if (rc != kExitOk) return rc;
+  }
+  if (!FLAGS_markdown.empty() && !WriteFileAtomically(FLAGS_markdown, r.markdown, &error)) {
+    return Usage(error);
+  }
+  return kExitOk;
+}
+
 }  // namespace
 }  // namespace ringid
 
@@ -299,5 +331,6 @@ int main(int argc, char** argv) {
   if (command == "identify") return ringid::IdentifyCommand(argc, argv);
   if (command == "identifiability") return ringid::IdentifiabilityCommand(argc, argv);
   if (command == "compare") return ringid::CompareCommand(argc, argv);
+  if (command == "bench") return ringid::BenchCommand(argc, argv);
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }
