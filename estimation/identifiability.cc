@@ -23,7 +23,7 @@ std::string CoordinateText(const ParameterSetup& setup, int i) {
 }
 
 double Physical(const ParameterSetup& setup, int i, double x) {
-  return setup.is_log(i) ? std::exp(x) : x;
+  return setup.ToPhysical(i, x);
 }
 
 // A direction in coordinates as text: terms above 10 % of the largest,
@@ -182,10 +182,10 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     p.reason = u.reasons[i];
     if (std::isfinite(u.std[i])) {
       const double s = u.std[i];
-      p.std = setup.is_log(i) ? p.value * s : s;
+      p.std = setup.PhysicalStd(i, xhat[i], s);
       p.wald_95 = setup.is_log(i)
                       ? std::make_pair(p.value * std::exp(-1.96 * s), p.value * std::exp(1.96 * s))
-                      : std::make_pair(p.value - 1.96 * s, p.value + 1.96 * s);
+                      : std::make_pair(p.value - 1.96 * *p.std, p.value + 1.96 * *p.std);
     }
     if (o.profile_steps > 0) {
       p.profile_95 = Profile(residuals, setup, xhat, r->fit.cost, box, i, u.std[i], o);

@@ -101,7 +101,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       e.reason = s->uncertainty.reasons[i];
       if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
       const double sd = s->uncertainty.std[i];
-      if (std::isfinite(sd)) e.std = setup.is_log(i) ? e.value * sd : sd;
+      if (std::isfinite(sd)) e.std = setup.PhysicalStd(i, best.x[i], sd);
     } else {
       e.identifiable = Identifiability::kNo;
       e.reason = s->uncertainty.error;

@@ -38,6 +38,14 @@ bool ParameterSetup::Build(const ModalModel& model, const Dataset& dataset,
   return true;
 }
 
+double ParameterSetup::ToPhysical(int i, double x) const {
+  return is_log(i) ? std::exp(x) : x * TypicalScale(free_[i]);
+}
+
+double ParameterSetup::PhysicalStd(int i, double x, double sd) const {
+  return is_log(i) ? std::exp(x) * sd : sd * TypicalScale(free_[i]);
+}
+
 int ParameterSetup::CoordinateOf(Param p) const {
   const auto tie = ties_.find(p);
   if (tie != ties_.end()) p = tie->second;
@@ -48,7 +56,7 @@ int ParameterSetup::CoordinateOf(Param p) const {
 Eigen::VectorXd ParameterSetup::Encode(const Parameters& p) const {
   Eigen::VectorXd x(size());
   for (int i = 0; i < size(); ++i) {
-    x[i] = is_log(i) ? std::log(p[free_[i]]) : p[free_[i]];
+    x[i] = is_log(i) ? std::log(p[free_[i]]) : p[free_[i]] / TypicalScale(free_[i]);
   }
   return x;
 }
@@ -56,7 +64,7 @@ Eigen::VectorXd ParameterSetup::Encode(const Parameters& p) const {
 Parameters ParameterSetup::Decode(const double* x) const {
   Parameters p = start_;
   for (int i = 0; i < size(); ++i) {
-    p[free_[i]] = is_log(i) ? std::exp(x[i]) : x[i];
+    p[free_[i]] = is_log(i) ? std::exp(x[i]) : x[i] * TypicalScale(free_[i]);
   }
   for (const auto& [from, to] : ties_) p[from] = p[to];
   return p;

@@ -1,5 +1,5 @@
 // Free, fixed and tied parameters, and the coordinates the optimisers move:
-// log(value) for positive parameters, the value itself otherwise.
+// log(value) for positive parameters, value / TypicalScale otherwise.
 #ifndef RINGID_ESTIMATION_SETUP_H_
 #define RINGID_ESTIMATION_SETUP_H_
 
@@ -29,6 +29,10 @@ class ParameterSetup {
   bool is_log(int i) const {
     return Info(free_[i]).domain == Domain::kPositive;
   }
+  // Coordinate i at x as a parameter value, and a coordinate standard
+  // deviation there in the parameter's units (delta method for log).
+  double ToPhysical(int i, double x) const;
+  double PhysicalStd(int i, double x, double sd) const;
   // The index of the coordinate that sets p, or -1 when p is fixed.
   int CoordinateOf(Param p) const;
 

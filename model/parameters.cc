@@ -17,6 +17,19 @@ const std::array<ParameterInfo, kNumParams> kCatalogue = {{
 
 const ParameterInfo& Info(Param p) { return kCatalogue[static_cast<int>(p)]; }
 
+double TypicalScale(Param p) {
+  switch (p) {
+    case Param::dk_bz: return 1e4;      // N/m, a few % of k_bz
+    case Param::dk_bpsi: return 1e2;    // N m/rad
+    case Param::s_h: return 1e-7;       // m/N: a hub on 1e7 N/m springs
+    case Param::k_cpsi: return 1e2;     // N m/rad
+    case Param::k_atheta: return 1e3;   // N m/rad
+    case Param::dm: return 0.1;         // kg
+    case Param::k_xy: return 1e4;       // N/m
+    default: return 1.0;
+  }
+}
+
 std::optional<Param> ParseParam(const std::string& name) {
   for (int i = 0; i < kNumParams; ++i) {
     if (name == kCatalogue[i].name) return ParamAt(i);

@@ -70,6 +70,10 @@ struct ParameterInfo {
 };
 
 const ParameterInfo& Info(Param p);
+// A typical magnitude of a parameter that may be zero or negative (effect
+// parameters); estimation moves such a parameter in units of it. 1 for the
+// positive ones, which move in log space.
+double TypicalScale(Param p);
 inline const char* ParamName(Param p) { return Info(p).name; }
 std::optional<Param> ParseParam(const std::string& name);
 inline Param ParamAt(int i) { return static_cast<Param>(i); }
