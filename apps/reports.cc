@@ -101,6 +101,60 @@ json IdentifyReport(const IdentifySummary& s, const Dataset& d,
   return r;
 }
 
+json DiagnoseJson(const DiagnosisReport& r, const Dataset& d) {
+  json j;
+  j["report"] = "diagnose";
+  j["dataset"] = d.name;
+  j["success"] = r.success;
+  if (!r.success) {
+    j["message"] = r.message;
+    return j;
+  }
+  j["gap_before"] = {{"chi2", r.chi2_before}, {"dof", r.dof},
+                     {"p_value", r.p_value ? json(*r.p_value) : json(nullptr)},
+                     {"significant", r.significant}, {"excess", r.gap_before}};
+  json where = json::array();
+  for (size_t i = 0; i < r.where.size(); ++i) {
+    const ModeMisfit& w = r.where[i];
+    json q = {{"label", LabelName(w.label)}, {"chi2", w.chi2},
+              {"frequency_sigma", w.frequency_sigma},
+              {"damping_sigma", w.damping_sigma ? json(*w.damping_sigma) : json(nullptr)},
+              {"shape_chi2", w.shape_chi2}};
+    if (!w.worst_component.empty()) {
+      q["worst_component"] = {{"dof", w.worst_component}, {"sigma", w.worst_component_sigma}};
+    }
+    if (i < r.mode_shrink.size()) q["shrink"] = r.mode_shrink[i];
+    where.push_back(q);
+  }
+  j["where"] = where;
+  j["absorbed"] = r.absorbed;
+  json ranking = json::array();
+  for (const EffectFit& f : r.ranking) {
+    json q = {{"effect", f.effect}, {"fitted", f.ok}};
+    if (!f.ok) {
+      q["note"] = f.note;
+    } else {
+      q["gap_after"] = f.gap_after;
+      q["shrink"] = f.shrink;
+      q["supported"] = f.supported;
+      q["values"] = f.values;
+      q["minimal_detectable"] = f.minimal_detectable;
+      q["evidence"] = {{"chi2", f.chi2}, {"likelihood_ratio", f.lrt_statistic},
+                       {"extra_parameters", f.extra_parameters}, {"lrt_p_value", f.lrt_p},
+                       {"aic", f.aic}, {"bic", f.bic},
+                       {"held_out_chi2", f.held_out_chi2 ? json(*f.held_out_chi2) : json(nullptr)},
+                       {"mode_chi2", f.mode_chi2}};
+    }
+    ranking.push_back(q);
+  }
+  j["ranking"] = ranking;
+  j["held_out_before"] = r.held_out_before ? json(*r.held_out_before) : json(nullptr);
+  j["verdict"] = {{"effect", r.verdict}, {"indistinguishable", r.indistinguishable},
+                  {"explanation", r.explanation}};
+  j["seconds"] = r.seconds;
+  return j;
+}
+
 json CompareJson(const ComparisonReport& r, const Dataset& d) {
   json j;
   j["report"] = "compare";

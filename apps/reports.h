@@ -9,6 +9,7 @@
 
 #include "datasets/dataset.h"
 #include "estimation/compare.h"
+#include "estimation/diagnose.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "model/modal.h"
@@ -18,6 +19,7 @@ namespace ringid {
 nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
                               const IdentifyOptions& o);
 nlohmann::json PredictReport(const ModalSolution& s);
+nlohmann::json DiagnoseJson(const DiagnosisReport& r, const Dataset& d);
 nlohmann::json CompareJson(const ComparisonReport& r, const Dataset& d);
 nlohmann::json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d);
 

@@ -1,6 +1,9 @@
 // ringid: identify rigid-ring tire parameters from modal data.
 // A thin layer: parse flags, load, call the library, print, write the report.
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <random>
 #include <cstring>
 #include <iostream>
 #include <set>
@@ -14,6 +17,7 @@
 #include "apps/reports.h"
 #include "benchmarks/suites.h"
 #include "datasets/dataset.h"
+#include "datasets/synthetic.h"
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
@@ -33,7 +37,13 @@ DEFINE_bool(shapes, true, "identify: use measured mode shapes");
 DEFINE_bool(damping, true, "identify: use measured damping ratios");
 DEFINE_string(shape_convention, "contract",
               "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
-DEFINE_string(suite, "", "bench: paper, synthetic or conditioning");
+DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
+DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect parameters among them)");
+DEFINE_double(frequency_noise, 0.0025, "simulate: relative frequency noise (sd)");
+DEFINE_double(damping_noise, 0.10, "simulate: relative damping-ratio noise (sd)");
+DEFINE_double(shape_noise, 0.02, "simulate: shape component noise (sd, shapes scaled to 1)");
+DEFINE_double(prior_spread, 0.1, "simulate: log-normal spread of the initial values around the truth");
+DEFINE_string(suite, "", "bench: paper, synthetic, conditioning or diagnosis");
 DEFINE_int32(replicates, 200, "bench: Monte Carlo replicates per tire (synthetic)");
 DEFINE_string(markdown, "", "bench: also write the Markdown table here");
 DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
@@ -66,8 +76,16 @@ const char kHelp[] =
     "  compare    Downhill Simplex and Levenberg-Marquardt from the same --starts=N\n"
     "             starts: success rate, final costs, evaluations, time per fit\n"
     "             --dataset=FILE and the fitting flags of identify\n"
+    "  simulate   a dataset measured from a parameter set, optionally with effects,\n"
+    "             and a separate truth file\n"
+    "             --parameters=FILE [--effects=LIST] [--set=NAME=VALUE,...]\n"
+    "             [--frequency_noise=X] [--damping_noise=X] [--shape_noise=X]\n"
+    "             [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
+    "  diagnose   the gap between the calibrated baseline and the data: where it\n"
+    "             lies, which effect explains it, how far it shrinks\n"
+    "             --dataset=FILE and the fitting flags of identify\n"
     "  bench      accuracy and conditioning suites, run from the repository root\n"
-    "             --suite=paper|synthetic|conditioning [--replicates=N] [--seed=N]\n"
+    "             --suite=paper|synthetic|conditioning|diagnosis [--replicates=N] [--seed=N]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
     "\n"
     "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
@@ -289,6 +307,92 @@ int CompareCommand(int argc, char** argv) {
   return r.success ? kExitOk : kExitFailure;
 }
 
+int SimulateCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, {"parameters", "effects", "set", "frequency_noise", "damping_noise",
+                             "shape_noise", "prior_spread", "seed", "output", "truth"},
+                &error)) {
+    return Usage(error);
+  }
+  std::vector<const Effect*> effects;
+  if (!ParseEffects(&effects, &error)) return Usage(error);
+  if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
+    return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
+  }
+  if (FLAGS_output == FLAGS_truth) return Usage("--truth: must differ from --output");
+  for (double v : {FLAGS_frequency_noise, FLAGS_damping_noise, FLAGS_shape_noise, FLAGS_prior_spread}) {
+    if (!(v >= 0) || !std::isfinite(v)) return Usage("noise levels and --prior_spread must be finite and not negative");
+  }
+  for (const std::string& out : {FLAGS_output, FLAGS_truth}) {
+    if (!CanWrite(out, &error)) return Usage(error);
+  }
+  Parameters truth;
+  LoadError load;
+  if (!LoadParameterSet(FLAGS_parameters, &truth, &load)) return Usage(load.OneLine());
+  std::stringstream list(FLAGS_set);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    const auto p = ParseParam(item.substr(0, eq));
+    char* end = nullptr;
+    const double v = eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
+    if (!p || eq == std::string::npos || !end || *end != '\0' || !std::isfinite(v)) {
+      return Usage("--set: bad item '" + item + "' (NAME=VALUE)");
+    }
+    truth[*p] = v;
+  }
+  const RigidRingModel model(effects);
+  for (Param q : model.parameters()) {
+    if (!truth.IsSet(q)) return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
+  }
+  Dataset d;
+  d.name = "simulated";
+  d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
+  std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
+  SetEngineerPriors(truth, FLAGS_prior_spread, &rng, &d);
+  SimulateOptions so;
+  so.frequency_noise = FLAGS_frequency_noise;
+  so.damping_noise = FLAGS_damping_noise;
+  so.shape_noise = FLAGS_shape_noise;
+  if (!Simulate(model, truth, so, &rng, &d, &error)) {
+    std::fprintf(stderr, "ringid: simulate: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  nlohmann::json t;
+  t["format"] = "ringid-truth/1";
+  t["dataset"] = FLAGS_output;
+  std::string names;
+  for (const Effect* e : effects) names += (names.empty() ? "" : ",") + std::string(e->name());
+  t["effect"] = names.empty() ? "none" : names;
+  for (Param q : model.parameters()) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
+  if (!WriteFileAtomically(FLAGS_output, DatasetToJson(d), &error)) return Usage(error);
+  const int rc = Write(FLAGS_truth, t);
+  if (rc != kExitOk) return rc;
+  std::printf("wrote %s (7 modes) and %s (effect %s)\n", FLAGS_output.c_str(), FLAGS_truth.c_str(),
+              t["effect"].get<std::string>().c_str());
+  return kExitOk;
+}
+
+int DiagnoseCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
+  DiagnoseOptions o;
+  std::vector<const Effect*> effects;
+  Dataset d;
+  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
+  if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
+  DiagnosisReport r;
+  Diagnose(d, o, &r);
+  if (r.invalid_input) return Usage(FLAGS_dataset + ": " + r.message);
+  std::printf("%s", r.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, DiagnoseJson(r, d));
+    if (rc != kExitOk) return rc;
+  }
+  return r.success ? kExitOk : kExitFailure;
+}
+
 int BenchCommand(int argc, char** argv) {
   std::string error;
   if (!SetFlags(argc, argv, {"suite", "replicates", "seed", "output", "markdown"}, &error)) {
@@ -332,5 +436,7 @@ int main(int argc, char** argv) {
   if (command == "identifiability") return ringid::IdentifiabilityCommand(argc, argv);
   if (command == "compare") return ringid::CompareCommand(argc, argv);
   if (command == "bench") return ringid::BenchCommand(argc, argv);
+  if (command == "simulate") return ringid::SimulateCommand(argc, argv);
+  if (command == "diagnose") return ringid::DiagnoseCommand(argc, argv);
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }

@@ -11,6 +11,10 @@ bool ResidualOptions::IsValid(std::string* why) const {
     *why = "relative_sigma must be positive";
     return false;
   }
+  if (!(prior_sigma >= 0) || !std::isfinite(prior_sigma)) {
+    *why = "prior_sigma must be finite and not negative";
+    return false;
+  }
   if (!(default_damping_sigma > 0) || !(default_shape_sigma > 0)) {
     *why = "default sigmas must be positive";
     return false;
@@ -49,6 +53,20 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
       for (const auto& [dof, v] : m.shape) {
         slots_.push_back({i, Slot::kShape, dof});
       }
+    }
+  }
+  if (options_.prior_sigma > 0) {
+    for (int i = 0; i < setup.size(); ++i) {
+      const Param p = setup.free()[i];
+      const auto it = options_.prior.find(p);
+      if (Info(p).group == Group::kEffect || it == options_.prior.end() || !(it->second > 0) ||
+          !setup.is_log(i)) {
+        continue;
+      }
+      Slot prior{-1, Slot::kPrior};
+      prior.coordinate = i;
+      prior.center = std::log(it->second);
+      slots_.push_back(prior);
     }
   }
   num_residuals_ = static_cast<int>(slots_.size());
@@ -108,6 +126,10 @@ bool ModalResiduals::Evaluate(const double* x, double* r) const {
   int k = 0;
   while (k < num_residuals_) {
     const Slot& slot = slots_[k];
+    if (slot.kind == Slot::kPrior) {
+      r[k++] = (x[slot.coordinate] - slot.center) / options_.prior_sigma;
+      continue;
+    }
     const MeasuredMode& m = dataset_.modes[slot.mode];
     const Mode& mode = solution.modes[pairs[slot.mode]];
     switch (slot.kind) {
@@ -123,6 +145,8 @@ bool ModalResiduals::Evaluate(const double* x, double* r) const {
       case Slot::kDamping:
         r[k++] = (mode.damping_ratio - *m.damping_ratio) /
                  m.damping_sigma.value_or(options_.default_damping_sigma);
+        break;
+      case Slot::kPrior:
         break;
       case Slot::kShape: {
         // Component-wise after alignment: the measured shape scaled to a

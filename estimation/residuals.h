@@ -4,6 +4,7 @@
 #define RINGID_ESTIMATION_RESIDUALS_H_
 
 #include <atomic>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,11 @@ struct ResidualOptions {
   double default_damping_sigma = 0.02;  // where damping_sigma is absent
   double default_shape_sigma = 0.05;    // where shape_sigma is absent
   ShapeConvention shape_convention = ShapeConvention::kContract;
+  // A prior on free baseline (not effect) parameters: one residual each,
+  // (log value - log prior) / prior_sigma, for those named in `prior`.
+  // prior_sigma 0: no prior.
+  double prior_sigma = 0;
+  std::map<Param, double> prior;
 
   bool IsValid(std::string* why) const;
 };
@@ -69,9 +75,11 @@ class ModalResiduals {
 
   // Which residuals belong to which measured mode and observable.
   struct Slot {
-    int mode;                  // index into dataset.modes
-    enum Kind { kFrequency, kDamping, kShape } kind;
+    int mode;                  // index into dataset.modes; -1 for kPrior
+    enum Kind { kFrequency, kDamping, kShape, kPrior } kind;
     Dof dof = Dof::kXb;        // for kShape
+    int coordinate = -1;       // for kPrior
+    double center = 0;         // for kPrior: the prior in coordinates
   };
   const std::vector<Slot>& slots() const { return slots_; }
 

@@ -1,0 +1,43 @@
+// Synthetic modal tests: a dataset measured from a known truth model.
+#ifndef RINGID_DATASETS_SYNTHETIC_H_
+#define RINGID_DATASETS_SYNTHETIC_H_
+
+#include <random>
+#include <string>
+
+#include "datasets/dataset.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid {
+
+struct SimulateOptions {
+  // Gaussian measurement noise: frequency relative sd, damping ratio relative
+  // sd, shape component sd (shapes scaled to a largest component of 1).
+  double frequency_noise = 0.0025;
+  double damping_noise = 0.10;
+  double shape_noise = 0.02;
+  bool damping = true;
+  bool shapes = true;
+  // Shapes on all seven belt and rim degrees of freedom plus the hub's x_a,
+  // z_a, y_a, as rim accelerometers give them.
+  bool hub_components = true;
+};
+
+// Measures the contract's seven modes of `truth` under `model`: fills
+// `dataset->modes` (sigmas equal to the noise levels) and leaves its other
+// fields as they are. False with a reason when the truth model cannot be
+// solved or a contract mode is overdamped.
+bool Simulate(const ModalModel& model, const Parameters& truth,
+              const SimulateOptions& options, std::mt19937_64* rng,
+              Dataset* dataset, std::string* error);
+
+// What a test engineer knows besides the modes: the inertias and load
+// (weighed, measured), the hub mass where set, and the relaxation lengths
+// (at standstill only K / sigma is seen) as `known`; the paper's ties; every
+// other baseline parameter as `initial`, log-normally spread around the truth.
+void SetEngineerPriors(const Parameters& truth, double prior_spread,
+                       std::mt19937_64* rng, Dataset* dataset);
+
+}  // namespace ringid
+
+#endif  // RINGID_DATASETS_SYNTHETIC_H_

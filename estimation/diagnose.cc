@@ -1,0 +1,406 @@
+#include "estimation/diagnose.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <Eigen/SVD>
+#include <boost/math/distributions/chi_squared.hpp>
+
+#include "model/effects.h"
+
+namespace ringid {
+namespace {
+
+// P(chi-square(dof) >= x).
+double ChiSquareTail(double x, double dof) {
+  if (!(dof > 0)) return std::nan("");
+  if (!(x > 0)) return 1.0;
+  boost::math::chi_squared_distribution<double> d(dof);
+  return boost::math::cdf(boost::math::complement(d, x));
+}
+
+// The weighted residuals of `dataset` under `model` at `p`, per slot.
+bool ResidualsAt(const ModalModel& model, const Dataset& dataset,
+                 const Parameters& p, std::vector<ModalResiduals::Slot>* slots,
+                 std::vector<double>* r, const ResidualOptions& options) {
+  ParameterSetup setup;
+  std::string why;
+  if (!ParameterSetup::Build(model, dataset, &setup, &why)) return false;
+  ModalResiduals residuals(model, dataset, setup, options);
+  const Eigen::VectorXd x = setup.Encode(p);
+  r->assign(residuals.num_residuals(), 0);
+  *slots = residuals.slots();
+  return residuals.Evaluate(x.data(), r->data());
+}
+
+std::vector<double> ModeChi2(const std::vector<ModalResiduals::Slot>& slots,
+                             const std::vector<double>& r, size_t modes) {
+  std::vector<double> chi2(modes, 0);
+  for (size_t k = 0; k < slots.size(); ++k) {
+    if (slots[k].mode >= 0) chi2[slots[k].mode] += r[k] * r[k];
+  }
+  return chi2;
+}
+
+// `dataset` with its free parameters seeded at `fitted` (a warm start).
+Dataset WarmStart(const Dataset& dataset, const IdentifySummary& fitted) {
+  Dataset d = dataset;
+  for (const ParameterEstimate& e : fitted.estimates) {
+    if (e.free) d.initial[e.param] = e.value;
+  }
+  return d;
+}
+
+// Leave-one-mode-out: fit without each mode in turn, predict it; the sum of
+// the predicted modes' chi-square.
+std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
+                              const DiagnoseOptions& o) {
+  if (warm.modes.size() < 2) return std::nullopt;
+  IdentifyOptions one = o.fit;
+  one.starts = 1;
+  double total = 0;
+  for (size_t j = 0; j < warm.modes.size(); ++j) {
+    Dataset without = warm;
+    without.modes.erase(without.modes.begin() + j);
+    IdentifySummary s;
+    Identify(model, without, one, &s);
+    if (!s.success) return std::nullopt;
+    std::vector<ModalResiduals::Slot> slots;
+    std::vector<double> r;
+    if (!ResidualsAt(model, warm, s.parameters, &slots, &r, o.fit.residuals)) return std::nullopt;
+    total += ModeChi2(slots, r, warm.modes.size())[j];
+  }
+  return total;
+}
+
+// Cost of `dataset` under `model` at its initial values (+inf if unsolvable).
+double InitialCost(const ModalModel& model, const Dataset& dataset, const ResidualOptions& options) {
+  ParameterSetup setup;
+  std::string why;
+  if (!ParameterSetup::Build(model, dataset, &setup, &why)) return INFINITY;
+  ModalResiduals residuals(model, dataset, setup, options);
+  return CostAt(residuals, setup.Encode(setup.start()));
+}
+
+// An effect refitted from two points: the calibrated baseline (warm) and the
+// dataset's own initial values (cold; the baseline may have bent itself to
+// absorb part of the effect, a basin LM does not leave). From each, its
+// parameters start at 0 and at the best point of a scan over
+// +-{0.1, 0.3, 1, 3, 10} typical scales: from 0 alone a non-smooth effect
+// such as a hub released at s_h = 0 is not found.
+IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
+                          const Dataset& warm, const Dataset& cold,
+                          const DiagnoseOptions& o) {
+  IdentifyOptions one = o.fit;
+  one.starts = 1;
+  IdentifySummary best;
+  for (const Dataset* from : {&warm, &cold}) {
+    std::vector<std::pair<double, Dataset>> seeds;
+    for (Param p : effect.parameters()) {
+      if (from->known.count(p)) continue;
+      for (double g : {0.1, 0.3, 1.0, 3.0, 10.0}) {
+        for (double sign : {1.0, -1.0}) {
+          if (sign < 0 && Info(p).domain != Domain::kReal) continue;
+          Dataset d = *from;
+          d.initial[p] = sign * g * TypicalScale(p);
+          seeds.emplace_back(InitialCost(model, d, o.fit.residuals), d);
+        }
+      }
+    }
+    std::sort(seeds.begin(), seeds.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<const Dataset*> starts = {from};
+    if (!seeds.empty() && std::isfinite(seeds.front().first)) starts.push_back(&seeds.front().second);
+    for (const Dataset* start : starts) {
+      IdentifySummary s;
+      Identify(model, *start, one, &s);
+      if (s.success && (!best.success || s.cost < best.cost)) best = s;
+      if (!best.success && best.message.empty()) best = s;
+    }
+  }
+  return best;
+}
+
+// The smallest value of each effect parameter a re-calibration of the
+// baseline cannot absorb: the part of its Jacobian column outside the span of
+// the baseline's columns must reach a likelihood ratio of `detect`.
+std::map<std::string, double> MinimalDetectable(const Effect& effect, const Dataset& warm,
+                                                const Eigen::MatrixXd& J_base, int rank,
+                                                const DiagnoseOptions& o, double detect) {
+  std::map<std::string, double> out;
+  const RigidRingModel model({&effect});
+  Dataset at = warm;
+  for (Param p : effect.parameters()) {
+    if (!at.known.count(p)) at.initial[p] = TypicalScale(p);  // away from a kink at 0
+  }
+  ParameterSetup setup;
+  std::string why;
+  if (!ParameterSetup::Build(model, at, &setup, &why)) return out;
+  ModalResiduals residuals(model, at, setup, o.fit.residuals);
+  Eigen::MatrixXd J;
+  if (!EvaluateJacobian(residuals, setup.Encode(setup.start()), &J) || J.rows() != J_base.rows()) return out;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_base, Eigen::ComputeThinU);
+  const Eigen::MatrixXd U = svd.matrixU().leftCols(rank);
+  for (int c = static_cast<int>(J_base.cols()); c < J.cols(); ++c) {
+    const Eigen::VectorXd j = J.col(c);
+    const double outside = (j - U * (U.transpose() * j)).norm();
+    const Param p = setup.free()[c];
+    out[ParamName(p)] = outside > 0 ? std::sqrt(detect) / outside * TypicalScale(p) : INFINITY;
+  }
+  return out;
+}
+
+}  // namespace
+
+void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
+                         DiagnosisReport* r, std::chrono::steady_clock::time_point t0);
+
+bool DiagnoseOptions::IsValid(std::string* why) const {
+  if (!(gap_significance > 0 && gap_significance < 1) ||
+      !(effect_significance > 0 && effect_significance < 1)) {
+    *why = "significance levels must lie in (0, 1)";
+    return false;
+  }
+  if (!(prior_sigma >= 0) || !std::isfinite(prior_sigma)) {
+    *why = "prior_sigma must be finite and not negative";
+    return false;
+  }
+  if (!(group_aic >= 0) || !(prior_factor > 1)) {
+    *why = "group_aic must not be negative and prior_factor must exceed 1";
+    return false;
+  }
+  return fit.IsValid(why);
+}
+
+void Diagnose(const Dataset& dataset, const DiagnoseOptions& o,
+              DiagnosisReport* r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *r = DiagnosisReport{};
+  std::string why;
+  if (!o.IsValid(&why)) {
+    r->invalid_input = true;
+    r->message = "invalid options: " + why;
+    return;
+  }
+  // The dataset's initial values are the prior of the baseline's parameters:
+  // a gap absorbed by moving them far from it shows in the chi-square.
+  DiagnoseOptions with_prior = o;
+  if (o.prior_sigma > 0) {
+    with_prior.fit.residuals.prior_sigma = o.prior_sigma;
+    with_prior.fit.residuals.prior = dataset.initial;
+  }
+  DiagnoseWithOptions(dataset, with_prior, r, t0);
+}
+
+void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
+                         DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
+  std::string why;
+  // The gap: calibrate the baseline.
+  const RigidRingModel baseline;
+  Identify(baseline, dataset, o.fit, &r->baseline);
+  if (!r->baseline.success) {
+    r->invalid_input = r->baseline.invalid_input;
+    r->message = "the baseline could not be calibrated: " + r->baseline.message;
+    return;
+  }
+  const int m = static_cast<int>(r->baseline.uncertainty.jacobian.rows());
+  const int n_base = static_cast<int>(r->baseline.coordinate_names.size());
+  r->chi2_before = 2 * r->baseline.cost;
+  r->dof = m - r->baseline.uncertainty.rank;
+  if (r->dof > 0) {
+    r->p_value = ChiSquareTail(r->chi2_before, r->dof);
+    r->significant = *r->p_value < o.gap_significance;
+  }
+  r->gap_before = std::max(0.0, r->chi2_before - std::max(r->dof, 0));
+
+  // Where it lies: per mode and observable, and in the parameters.
+  std::vector<ModalResiduals::Slot> slots;
+  std::vector<double> res;
+  if (!ResidualsAt(baseline, dataset, r->baseline.parameters, &slots, &res, o.fit.residuals)) {
+    r->message = "the calibrated baseline cannot be evaluated";
+    return;
+  }
+  const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
+  for (size_t i = 0; i < dataset.modes.size(); ++i) {
+    ModeMisfit w;
+    w.label = dataset.modes[i].label;
+    w.chi2 = before[i];
+    for (size_t k = 0; k < slots.size(); ++k) {
+      if (slots[k].mode != static_cast<int>(i)) continue;
+      switch (slots[k].kind) {
+        case ModalResiduals::Slot::kFrequency: w.frequency_sigma = res[k]; break;
+        case ModalResiduals::Slot::kDamping: w.damping_sigma = res[k]; break;
+        case ModalResiduals::Slot::kShape:
+          w.shape_chi2 += res[k] * res[k];
+          if (std::abs(res[k]) > std::abs(w.worst_component_sigma)) {
+            w.worst_component_sigma = res[k];
+            w.worst_component = DofName(slots[k].dof);
+          }
+          break;
+      }
+    }
+    r->where.push_back(w);
+  }
+  for (const ParameterEstimate& e : r->baseline.estimates) {
+    if (!e.free) continue;
+    const auto prior = dataset.initial.find(e.param);
+    if (prior == dataset.initial.end() || !(prior->second > 0) || !(e.value > 0)) continue;
+    const double factor = e.value / prior->second;
+    if (std::abs(std::log(factor)) > std::log(o.prior_factor)) {
+      char line[160];
+      std::snprintf(line, sizeof line, "%s moved from its initial %.4g to %.4g (x %.2f)",
+                    ParamName(e.param), prior->second, e.value, factor);
+      r->absorbed.push_back(line);
+    }
+  }
+
+  // Which effect: refit with each candidate, from the calibrated baseline.
+  const Dataset warm = WarmStart(dataset, r->baseline);
+  const double log_m = std::log(std::max(m, 1));
+  const double aic_base = r->chi2_before + 2 * n_base;
+  for (const Effect* effect : EffectCatalogue()) {
+    EffectFit f;
+    f.effect = effect->name();
+    const RigidRingModel model({effect});
+    IdentifySummary s = FitEffect(model, *effect, warm, dataset, o);
+    if (!s.success) {
+      f.note = s.message;
+      r->ranking.push_back(f);
+      continue;
+    }
+    f.ok = true;
+    f.chi2 = 2 * s.cost;
+    f.extra_parameters = static_cast<int>(s.coordinate_names.size()) - n_base;
+    f.lrt_statistic = std::max(0.0, r->chi2_before - f.chi2);
+    f.lrt_p = f.extra_parameters > 0 ? ChiSquareTail(f.lrt_statistic, f.extra_parameters) : 1.0;
+    f.aic = f.chi2 + 2 * (n_base + f.extra_parameters);
+    f.bic = f.chi2 + log_m * (n_base + f.extra_parameters);
+    f.gap_after = std::max(0.0, f.chi2 - std::max(r->dof - f.extra_parameters, 0));
+    f.shrink = r->gap_before > 0 ? 1 - f.gap_after / r->gap_before : 0;
+    // The targeted likelihood-ratio test is far more powerful than the
+    // omnibus chi-square of the gap: an effect stands on its own test.
+    f.supported = r->p_value && f.lrt_p < o.effect_significance && f.aic < aic_base - 2;
+    for (Param p : effect->parameters()) {
+      if (s.parameters.IsSet(p)) f.values[ParamName(p)] = s.parameters[p];
+    }
+    std::vector<ModalResiduals::Slot> es;
+    std::vector<double> er;
+    if (ResidualsAt(model, dataset, s.parameters, &es, &er, o.fit.residuals)) {
+      f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
+    }
+    if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
+    f.minimal_detectable = MinimalDetectable(*effect, warm, r->baseline.uncertainty.jacobian,
+                                             r->baseline.uncertainty.rank, o, 20.0);
+    r->ranking.push_back(f);
+  }
+  std::sort(r->ranking.begin(), r->ranking.end(), [](const EffectFit& a, const EffectFit& b) {
+    if (a.ok != b.ok) return a.ok;
+    return a.aic < b.aic;
+  });
+
+  // The verdict.
+  const EffectFit* best = nullptr;
+  for (const EffectFit& f : r->ranking) {
+    if (f.supported && (!best || f.aic < best->aic)) best = &f;
+  }
+  std::ostringstream why_text;
+  if (!r->p_value) {
+    why_text << "no degree of freedom is left (" << m << " residuals, rank "
+             << r->baseline.uncertainty.rank << "): the baseline can match these data "
+             << "exactly, so no gap can be detected and no effect supported";
+  } else if (!best && !r->significant) {
+    why_text << "no significant gap: chi-square " << r->chi2_before << " on " << r->dof
+             << " degrees of freedom (p = " << *r->p_value << "), and no effect's likelihood-ratio test passes";
+  } else if (!best) {
+    why_text << "the gap is significant (p = " << *r->p_value
+             << ") but no catalogue effect explains it beyond a re-calibration of the baseline";
+    if (!r->absorbed.empty()) why_text << "; part of it sits in the parameters";
+  } else {
+    r->verdict = best->effect;
+    for (const EffectFit& f : r->ranking) {
+      if (f.supported && f.aic <= best->aic + o.group_aic) r->indistinguishable.push_back(f.effect);
+    }
+    if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
+    why_text << best->effect << " removes " << static_cast<int>(std::round(100 * best->shrink))
+             << " % of the gap (likelihood ratio " << best->lrt_statistic << " on "
+             << best->extra_parameters << " parameter(s), p = " << best->lrt_p << ")";
+    if (!r->indistinguishable.empty()) {
+      why_text << "; these data cannot tell it from";
+      for (const std::string& e : r->indistinguishable) {
+        if (e != best->effect) why_text << " " << e;
+      }
+    }
+    if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
+    for (size_t i = 0; i < before.size() && i < best->mode_chi2.size(); ++i) {
+      r->mode_shrink.push_back(before[i] > 0 ? 1 - best->mode_chi2[i] / before[i] : 0);
+    }
+  }
+  if (r->verdict == "none") {
+    std::ostringstream small;
+    for (const EffectFit& f : r->ranking) {
+      for (const auto& [name, v] : f.minimal_detectable) {
+        char b[96];
+        std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect.c_str(), name.c_str(), v);
+        small << b;
+      }
+    }
+    if (small.tellp()) {
+      why_text << ". A re-calibration of the baseline would absorb, undetected: " << small.str();
+    }
+  }
+  r->explanation = why_text.str();
+  r->success = true;
+  r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string DiagnosisReport::FullReport() const {
+  std::ostringstream o;
+  char line[256];
+  if (!success) return "ringid diagnose: FAILED: " + message + "\n";
+  o << "ringid diagnose: verdict " << verdict;
+  if (!indistinguishable.empty()) {
+    o << " (indistinguishable:";
+    for (const auto& e : indistinguishable) o << " " << e;
+    o << ")";
+  }
+  o << "\n  " << explanation << "\n\n";
+  std::snprintf(line, sizeof line, "  the gap: chi-square %.4g on %d dof", chi2_before, dof);
+  o << line;
+  if (p_value) {
+    std::snprintf(line, sizeof line, ", p = %.3g (%s)", *p_value, significant ? "significant" : "not significant");
+    o << line;
+  }
+  o << "\n\n  where it lies (baseline misfit, in sigma):\n"
+       "  mode                  chi2     freq    damping  shape chi2  worst component\n";
+  for (size_t i = 0; i < where.size(); ++i) {
+    const ModeMisfit& w = where[i];
+    std::snprintf(line, sizeof line, "  %-20s %7.1f  %+7.2f  %7s  %9.1f   %s %+.1f%s\n", LabelName(w.label), w.chi2,
+                  w.frequency_sigma, w.damping_sigma ? std::to_string(*w.damping_sigma).substr(0, 6).c_str() : "-",
+                  w.shape_chi2, w.worst_component.c_str(), w.worst_component_sigma,
+                  i < mode_shrink.size() ? ("   shrink " + std::to_string(static_cast<int>(std::round(100 * mode_shrink[i]))) + " %").c_str() : "");
+    o << line;
+  }
+  for (const std::string& a : absorbed) o << "  absorbed: " << a << "\n";
+  o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2\n";
+  for (const EffectFit& f : ranking) {
+    if (!f.ok) {
+      o << "  " << f.effect << ": not fitted: " << f.note << "\n";
+      continue;
+    }
+    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", f.effect.c_str(), f.chi2,
+                  f.lrt_p, f.aic, 100 * f.shrink,
+                  f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-",
+                  f.supported ? "  supported" : "");
+    o << line;
+  }
+  if (held_out_before) {
+    std::snprintf(line, sizeof line, "  baseline held-out chi2 %.1f\n", *held_out_before);
+    o << line;
+  }
+  return o.str();
+}
+
+}  // namespace ringid

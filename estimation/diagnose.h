@@ -1,0 +1,97 @@
+// The sim-to-real gap: where the calibrated baseline misses the test, which
+// unmodelled effect of the catalogue explains it, and how far it shrinks.
+#ifndef RINGID_ESTIMATION_DIAGNOSE_H_
+#define RINGID_ESTIMATION_DIAGNOSE_H_
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "estimation/identify.h"
+
+namespace ringid {
+
+struct DiagnoseOptions {
+  IdentifyOptions fit;  // multi-start settings for every calibration
+  // The baseline's chi-square p-value below which the gap is significant.
+  double gap_significance = 0.01;
+  // An effect is supported when its likelihood-ratio p-value is below this
+  // (six candidates: a Bonferroni-safe level) and it lowers the AIC, whether
+  // or not the omnibus gap test is significant.
+  double effect_significance = 1e-3;
+  // Supported effects within this AIC of the best cannot be told apart.
+  double group_aic = 2.0;
+  // A fitted baseline parameter beyond this factor of its initial value
+  // has absorbed part of the gap.
+  double prior_factor = 2.0;
+  // The dataset's initial values as a prior on the baseline parameters,
+  // relative standard deviation prior_sigma (0: none). Without it a baseline
+  // with many free parameters silently absorbs most effects.
+  double prior_sigma = 0.2;
+  // Leave-one-mode-out prediction for the baseline and the verdict.
+  bool held_out = true;
+  bool IsValid(std::string* why) const;
+};
+
+struct ModeMisfit {
+  ModeLabel label;
+  double chi2 = 0;                      // all its residuals, in sigma^2
+  double frequency_sigma = 0;           // (model - measured) / sigma
+  std::optional<double> damping_sigma;  // likewise
+  double shape_chi2 = 0;
+  std::string worst_component;          // the shape component furthest off
+  double worst_component_sigma = 0;
+};
+
+struct EffectFit {
+  std::string effect;
+  bool ok = false;
+  std::string note;                      // why not, when !ok
+  int extra_parameters = 0;
+  double chi2 = 0;                       // 2 x cost
+  double lrt_statistic = 0, lrt_p = 1;   // against the baseline
+  double aic = 0, bic = 0;
+  double gap_after = 0;                  // chi2 in excess of its dof
+  double shrink = 0;                     // 1 - gap_after / gap_before
+  bool supported = false;
+  std::map<std::string, double> values;  // fitted effect parameters
+  std::vector<double> mode_chi2;         // per measured mode
+  std::optional<double> held_out_chi2;   // leave-one-mode-out prediction
+  // Per effect parameter: the smallest |value| whose signature a
+  // re-calibration of the baseline cannot absorb (likelihood ratio 20).
+  std::map<std::string, double> minimal_detectable;
+};
+
+struct DiagnosisReport {
+  bool success = false;
+  bool invalid_input = false;
+  std::string message;
+  // The gap: the calibrated baseline.
+  IdentifySummary baseline;
+  double chi2_before = 0;
+  int dof = 0;
+  std::optional<double> p_value;  // none when no degree of freedom is left
+  bool significant = false;
+  double gap_before = 0;          // chi2 in excess of its dof
+  // Where it lies.
+  std::vector<ModeMisfit> where;
+  std::vector<std::string> absorbed;  // baseline parameters pushed off prior
+  std::optional<double> held_out_before;
+  // Which effect, ranked by AIC.
+  std::vector<EffectFit> ranking;
+  std::string verdict = "none";
+  std::vector<std::string> indistinguishable;
+  std::string explanation;
+  std::vector<double> mode_shrink;  // per measured mode, for the verdict
+  double seconds = 0;
+
+  std::string FullReport() const;
+};
+
+void Diagnose(const Dataset& dataset, const DiagnoseOptions& options,
+              DiagnosisReport* report);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_DIAGNOSE_H_
