@@ -1,0 +1,115 @@
+// The gap diagnosis on withheld-effect data, whose truth it never sees.
+#include <algorithm>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "benchmarks/suites.h"
+#include "datasets/synthetic.h"
+#include "estimation/diagnose.h"
+#include "model/effects.h"
+#include "tests/test_support.h"
+
+namespace ringid {
+namespace {
+
+using testing::PaperIdentified;
+
+DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed) {
+  Parameters truth = PaperIdentified();
+  truth[Param::m_a] = 15;
+  std::vector<const Effect*> withheld;
+  if (effect) {
+    withheld.push_back(FindEffect(effect));
+    truth[p] = value;
+  }
+  std::mt19937_64 rng(seed);
+  Dataset d;
+  d.name = "withheld";
+  SetEngineerPriors(truth, 0.1, &rng, &d);
+  std::string why;
+  EXPECT_TRUE(Simulate(RigidRingModel(withheld), truth, SimulateOptions{}, &rng, &d, &why)) << why;
+  DiagnoseOptions o;
+  o.held_out = false;
+  DiagnosisReport r;
+  Diagnose(d, o, &r);
+  EXPECT_TRUE(r.success) << r.message;
+  return r;
+}
+
+TEST(DiagnoseTest, NoEffectNoAlarm) {
+  for (unsigned seed : {1u, 2u}) {
+    const DiagnosisReport r = DiagnoseWithheld(nullptr, Param::m_b, 0, seed);
+    EXPECT_EQ(r.verdict, "none") << r.explanation;
+    for (const EffectFit& f : r.ranking) EXPECT_FALSE(f.supported) << f.effect;
+  }
+}
+
+TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
+  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3);
+  EXPECT_EQ(r.verdict, "lug_coupling") << r.explanation;
+  EXPECT_GT(r.ranking.front().shrink, 0.8);
+  EXPECT_TRUE(r.significant);
+}
+
+TEST(DiagnoseTest, NamesASoftHub) {
+  const DiagnosisReport r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-7, 3);
+  EXPECT_EQ(r.verdict, "hub_compliance") << r.explanation;
+  // Where: the hub components of the measured shapes carry the gap.
+  bool hub = false;
+  for (const ModeMisfit& w : r.where) {
+    hub |= w.worst_component == "x_a" || w.worst_component == "z_a" || w.worst_component == "y_a";
+  }
+  EXPECT_TRUE(hub);
+}
+
+TEST(DiagnoseTest, AnAbsorbableEffectIsNoneWithItsDetectableSize) {
+  const double k_cpsi = 100;
+  const DiagnosisReport r = DiagnoseWithheld("contact_yaw_stiffness", Param::k_cpsi, k_cpsi, 3);
+  EXPECT_EQ(r.verdict, "none");
+  bool stated = false;
+  for (const EffectFit& f : r.ranking) {
+    if (f.effect == "contact_yaw_stiffness") {
+      ASSERT_TRUE(f.minimal_detectable.count("k_cpsi"));
+      stated = f.minimal_detectable.at("k_cpsi") > k_cpsi;
+    }
+  }
+  EXPECT_TRUE(stated);
+  EXPECT_NE(r.explanation.find("contact_yaw_stiffness |k_cpsi| <"), std::string::npos) << r.explanation;
+}
+
+TEST(DiagnoseTest, ThePapersData) {
+  // As published, with Table 2 as the prior: the baseline fits, nothing to name.
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
+  DiagnosisReport r;
+  Diagnose(d, DiagnoseOptions{}, &r);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ(r.verdict, "none") << r.explanation;
+  // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
+  // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits: a yaw
+  // stiffness is needed. At standstill contact yaw stiffness and an untied
+  // sidewall yaw stiffness enter S[psi, psi] identically: they must come as
+  // one group.
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1_r_l0_physical.json"), &d, &e));
+  Diagnose(d, DiagnoseOptions{}, &r);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_TRUE(r.significant);
+  const auto& g = r.indistinguishable;
+  EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;
+  EXPECT_NE(std::find(g.begin(), g.end(), "anisotropic_sidewall"), g.end()) << r.explanation;
+}
+
+TEST(DiagnoseTest, QuickValidationSuite) {
+  SuiteOptions o;
+  o.source_dir = RINGID_SOURCE_DIR;
+  o.replicates = 1;  // one tire, two effect sizes: 14 cases
+  const SuiteResult r = RunSuite("diagnosis", o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GE(r.report["accuracy"].get<double>(), 0.9) << r.markdown;
+  EXPECT_EQ(r.report["false_alarms"].get<int>(), 0) << r.markdown;
+}
+
+}  // namespace
+}  // namespace ringid
