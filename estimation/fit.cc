@@ -17,11 +17,7 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   LocalFit fit;
   fit.x = start;
   const int n = static_cast<int>(start.size());
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
-                                                         ceres::CENTRAL>(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
-  cost->AddParameterBlock(n);
-  cost->SetNumResiduals(residuals.num_residuals());
+  ceres::CostFunction* cost = NewCentralDifferenceCost(residuals);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, fit.x.data());
   if (fixed >= 0 && n == 1) {

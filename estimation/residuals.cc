@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <ceres/dynamic_numeric_diff_cost_function.h>
+
 #include "model/assignment.h"
 
 namespace ringid {
@@ -180,6 +182,16 @@ bool ModalResiduals::Evaluate(const double* x, double* r) const {
     if (!std::isfinite(r[i])) return false;
   }
   return true;
+}
+
+ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals) {
+  ceres::NumericDiffOptions options;
+  options.relative_step_size = 1e-4;
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL>(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP, options);
+  cost->AddParameterBlock(residuals.num_parameters());
+  cost->SetNumResiduals(residuals.num_residuals());
+  return cost;
 }
 
 }  // namespace ringid

@@ -1,6 +1,7 @@
 #include "estimation/uncertainty.h"
 
 #include <cmath>
+#include <memory>
 #include <limits>
 #include <sstream>
 
@@ -35,17 +36,13 @@ bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
                       Eigen::MatrixXd* jacobian) {
   const int n = static_cast<int>(x.size());
   const int m = residuals.num_residuals();
-  // The same cost function as the fit: central differences through the
-  // eigen-solution.
-  ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL> cost(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
-  cost.AddParameterBlock(n);
-  cost.SetNumResiduals(m);
+  // The same cost function as the fit.
+  std::unique_ptr<ceres::CostFunction> cost(NewCentralDifferenceCost(residuals));
   Eigen::VectorXd r(m);
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
   double* jac[] = {J.data()};
   const double* params[] = {x.data()};
-  if (!cost.Evaluate(params, r.data(), jac) || !J.allFinite()) return false;
+  if (!cost->Evaluate(params, r.data(), jac) || !J.allFinite()) return false;
   *jacobian = J;
   return true;
 }
@@ -71,11 +68,7 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     u.error = "the Jacobian could not be evaluated at the fitted point";
     return u;
   }
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals,
-                                                         ceres::CENTRAL>(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP);
-  cost->AddParameterBlock(n);
-  cost->SetNumResiduals(m);
+  ceres::CostFunction* cost = NewCentralDifferenceCost(residuals);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
   u.ok = true;
