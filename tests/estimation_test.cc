@@ -67,7 +67,7 @@ const Param kFree[] = {Param::k_bx, Param::k_bz, Param::k_btheta, Param::K_cx,
                        Param::k_bgamma, Param::k_bpsi, Param::c_by};
 
 Dataset WellPosed(const Parameters& truth, std::mt19937_64* rng) {
-  Dataset d = testing::SyntheticDataset(RigidRingModel(), truth, 0.0025, 0.01,
+  Dataset d = testing::SyntheticDataset(RigidRingModel(), truth, 0.0025, 0.10,
                                         0.02, rng);
   for (int i = 0; i < kNumParams; ++i) {
     const Param p = ParamAt(i);

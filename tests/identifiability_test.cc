@@ -51,7 +51,7 @@ TEST(IdentifiabilityTest, Table1DeterminesOnlyRatiosOfContactStiffnessAndRelaxat
 // Full modal data, ten free parameters (as estimation_test's well-posed case).
 Dataset WellPosed(const Parameters& truth, std::mt19937_64* rng,
                   std::vector<Param> free, bool full_data) {
-  Dataset d = testing::SyntheticDataset(RigidRingModel(), truth, 0.0025, 0.01, 0.02, rng);
+  Dataset d = testing::SyntheticDataset(RigidRingModel(), truth, 0.0025, 0.10, 0.02, rng);
   if (!full_data) {
     for (MeasuredMode& m : d.modes) {
       m.damping_ratio.reset();

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/reports.h"
+#include "datasets/synthetic.h"
 
 namespace ringid::testing {
 
@@ -49,31 +50,18 @@ Parameters PaperIdentified() {
 }
 
 Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
-                         double freq_rel_sigma, double damping_sigma,
+                         double freq_rel_sigma, double damping_rel_sigma,
                          double shape_sigma, std::mt19937_64* rng) {
-  std::normal_distribution<double> n(0, 1);
-  const ModalSolution s = model.Solve(truth);
-  EXPECT_TRUE(s.ok) << s.error;
+  SimulateOptions o;
+  o.frequency_noise = freq_rel_sigma;
+  o.damping_noise = damping_rel_sigma;
+  o.shape_noise = shape_sigma;
+  o.hub_components = false;
   Dataset d;
   d.name = "synthetic";
   d.path = "synthetic";
-  for (const Mode& m : s.modes) {
-    MeasuredMode mm;
-    mm.label = m.label;
-    mm.frequency_hz = m.frequency_hz * (1 + freq_rel_sigma * n(*rng));
-    mm.frequency_sigma_hz = freq_rel_sigma * m.frequency_hz;
-    mm.damping_ratio = m.damping_ratio + damping_sigma * n(*rng);
-    mm.damping_sigma = damping_sigma;
-    const RealShapeVector u = m.RealShape();
-    for (int i = 0; i < kNumDofs; ++i) {
-      const Dof dof = static_cast<Dof>(i);
-      if (DofPlane(dof) == m.plane()) {
-        mm.shape.emplace_back(dof, u[i] + shape_sigma * n(*rng));
-      }
-    }
-    mm.shape_sigma = shape_sigma;
-    d.modes.push_back(mm);
-  }
+  std::string why;
+  EXPECT_TRUE(Simulate(model, truth, o, rng, &d, &why)) << why;
   return d;
 }
 

@@ -18,10 +18,10 @@ Parameters Table2();
 // Table 2 plus the inertias shipped in datasets/paper/parameters.json.
 Parameters PaperIdentified();
 
-// A dataset of all seven modes of `truth` with frequencies, damping ratios and
-// contract-convention shapes, perturbed by Gaussian noise of the given sigmas.
+// datasets/synthetic.h's Simulate of all seven modes (shapes on the seven belt
+// and rim degrees of freedom), with relative frequency and damping noise.
 Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
-                         double freq_rel_sigma, double damping_sigma,
+                         double freq_rel_sigma, double damping_rel_sigma,
                          double shape_sigma, std::mt19937_64* rng);
 
 // Every field of the contract's dataset broken in every way that makes
