@@ -1,0 +1,25 @@
+// Loads a dataset, identifies the rigid-ring parameters and prints each with
+// its standard deviation. Usage: identify_parameters DATASET.json
+#include <cstdio>
+
+#include <ringid/datasets/dataset.h>
+#include <ringid/estimation/identify.h>
+
+int main(int argc, char** argv) {
+  ringid::Dataset dataset;
+  ringid::LoadError error;
+  if (argc != 2 || !ringid::LoadDataset(argv[1], &dataset, &error)) {
+    std::fprintf(stderr, "%s\n", argc == 2 ? error.OneLine().c_str()
+                                           : "usage: identify_parameters DATASET.json");
+    return 2;
+  }
+  ringid::IdentifySummary summary;
+  ringid::Identify(ringid::RigidRingModel(), dataset, ringid::IdentifyOptions(), &summary);
+  std::printf("%s\n", summary.BriefReport().c_str());
+  for (const ringid::ParameterEstimate& e : summary.estimates) {
+    if (!e.free) continue;
+    std::printf("%-10s %12.6g", ringid::ParamName(e.param), e.value);
+    if (e.std) std::printf(" +- %.2g\n", *e.std); else std::printf("  (std not defined)\n");
+  }
+  return summary.success ? 0 : 1;
+}
