@@ -90,11 +90,13 @@ json IdentifyReport(const IdentifySummary& s, const Dataset& d,
     json j;
     j["label"] = LabelName(m.label);
     j["measured_hz"] = m.measured_hz;
+    j["measured_sigma_hz"] = m.measured_sigma_hz;
     j["model_hz"] = m.model_hz;
     j["model_label"] = LabelName(m.model_label);
     j["model_damping_ratio"] = m.model_damping;
     if (m.measured_damping) j["measured_damping_ratio"] = *m.measured_damping;
     if (m.mac) j["mac"] = *m.mac;
+    for (const auto& [label, mac] : m.mac_all) j["mac_all"][LabelName(label)] = mac;
     modes.push_back(j);
   }
   r["modes"] = modes;

@@ -1,10 +1,13 @@
 // ringid: identify rigid-ring tire parameters from modal data.
 // A thin layer: parse flags, load, call the library, print, write the report.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <cstring>
+#include <filesystem>
+#include <functional>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -14,6 +17,8 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "apps/campaign.h"
+#include "apps/progress.h"
 #include "apps/reports.h"
 #include "benchmarks/suites.h"
 #include "datasets/dataset.h"
@@ -42,10 +47,14 @@ DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect
 DEFINE_double(frequency_noise, 0.0025, "simulate: relative frequency noise (sd)");
 DEFINE_double(damping_noise, 0.10, "simulate: relative damping-ratio noise (sd)");
 DEFINE_double(shape_noise, 0.02, "simulate: shape component noise (sd, shapes scaled to 1)");
+DEFINE_double(shift, 0, "simulate: size the one effect to shift some frequency by this fraction (e.g. 0.04)");
 DEFINE_double(prior_spread, 0.1, "simulate: log-normal spread of the initial values around the truth");
 DEFINE_string(suite, "", "bench: paper, synthetic, conditioning or diagnosis");
 DEFINE_int32(replicates, 200, "bench: Monte Carlo replicates per tire (synthetic)");
 DEFINE_string(markdown, "", "bench: also write the Markdown table here");
+DEFINE_string(output_dir, "", "identify, diagnose: a campaign; one report per dataset and campaign.json here");
+DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)");
+DEFINE_string(shard, "0/1", "identify, diagnose: I/N, analyse every N-th dataset from the I-th (0-based)");
 DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
 
 namespace ringid {
@@ -80,10 +89,14 @@ const char kHelp[] =
     "             and a separate truth file\n"
     "             --parameters=FILE [--effects=LIST] [--set=NAME=VALUE,...]\n"
     "             [--frequency_noise=X] [--damping_noise=X] [--shape_noise=X]\n"
-    "             [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
+    "             [--shift=X] [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
     "  diagnose   the gap between the calibrated baseline and the data: where it\n"
     "             lies, which effect explains it, how far it shrinks\n"
     "             --dataset=FILE and the fitting flags of identify\n"
+    "  campaigns: identify and diagnose take --dataset=FILE,DIR,... (a directory\n"
+    "             stands for its *.json) with --output_dir=DIR [--jobs=N] [--shard=I/N];\n"
+    "             one report per dataset in DIR, a summary table and DIR/campaign.json\n"
+    "             (campaign.I-of-N.json for a shard)\n"
     "  bench      accuracy and conditioning suites, run from the repository root\n"
     "             --suite=paper|synthetic|conditioning|diagnosis [--replicates=N] [--seed=N]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
@@ -211,11 +224,12 @@ int Predict(int argc, char** argv) {
 const std::set<std::string> kFitFlags = {
     "dataset", "method", "starts", "seed", "weighting", "relative_sigma",
     "shapes", "damping", "shape_convention", "effects", "output"};
+const std::set<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
-// The flags every fitting command shares, read into options, the model's
-// effects and the dataset; false with a one-line message on bad input.
-bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
-                   Dataset* d, std::string* error) {
+// The flags every fitting command shares, read into options and the model's
+// effects; false with a one-line message on bad input.
+bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
+                    std::string* error) {
   if (FLAGS_method == "lm") o->method = Method::kLevenbergMarquardt;
   else if (FLAGS_method == "simplex") o->method = Method::kSimplex;
   else { *error = "--method: must be lm or simplex"; return false; }
@@ -233,6 +247,13 @@ bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
   if (!o->IsValid(error)) { *error = "bad option: " + *error; return false; }
   if (!ParseEffects(effects, error)) return false;
   if (FLAGS_dataset.empty()) { *error = "needs --dataset=FILE"; return false; }
+  return true;
+}
+
+// The same and the one dataset of --dataset.
+bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
+                   Dataset* d, std::string* error) {
+  if (!ReadFitOptions(o, effects, error)) return false;
   for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
     if (!out.empty() && !CanWrite(out, error)) return false;
   }
@@ -241,13 +262,133 @@ bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
   return true;
 }
 
+// One dataset's share of a campaign: its report and its row of the summary.
+struct CampaignItem {
+  nlohmann::json report;
+  nlohmann::json row;  // the summary's columns, "dataset" first
+  bool ok = false;
+};
+using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
+
+std::string Cell(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number()) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+    return b;
+  }
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  return "-";
+}
+
+// --output_dir: every dataset of --dataset (this shard's share), --jobs at
+// once. Every input is loaded and checked before anything runs, so a bad one
+// stops the campaign with exit 2 and nothing written. `check` refuses a
+// dataset the analysis could not start on.
+int RunCampaign(const std::string& command, const std::vector<std::string>& columns,
+                const std::function<bool(const Dataset&, std::string*)>& check,
+                const CampaignWork& work) {
+  std::string error;
+  Shard shard;
+  if (!FLAGS_output.empty()) return Usage("--output: a campaign writes to --output_dir");
+  if (FLAGS_jobs < 1) return Usage("--jobs: must be at least 1");
+  if (!ParseShard(FLAGS_shard, &shard, &error)) return Usage(error);
+  std::vector<std::string> files, reports;
+  if (!ListDatasets(FLAGS_dataset, shard, &files, &error)) return Usage(error);
+  if (!ReportNames(files, FLAGS_output_dir, &reports, &error)) return Usage(error);
+  const std::string summary_path =
+      (std::filesystem::path(FLAGS_output_dir) /
+       (shard.count == 1 ? std::string("campaign.json")
+                         : "campaign." + std::to_string(shard.index) + "-of-" +
+                               std::to_string(shard.count) + ".json")).string();
+  std::vector<Dataset> datasets(files.size());
+  for (size_t i = 0; i < files.size(); ++i) {
+    LoadError load;
+    if (!LoadDataset(files[i], &datasets[i], &load)) return Usage(load.OneLine());
+    if (!check(datasets[i], &error)) return Usage(files[i] + ": " + error);
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(FLAGS_output_dir, ec);
+  if (ec) return Usage("--output_dir: " + FLAGS_output_dir + ": " + ec.message());
+  for (const std::string& out : reports) {
+    if (!CanWrite(out, &error)) return Usage("--output_dir: " + error);
+  }
+  if (!CanWrite(summary_path, &error)) return Usage("--output_dir: " + error);
+  const int n = static_cast<int>(files.size());
+  std::vector<CampaignItem> items(n);
+  std::vector<std::string> write_errors(n);
+  const auto t0 = std::chrono::steady_clock::now();
+  {
+    Progress progress(command, n);
+    ParallelFor(n, FLAGS_jobs, &progress, [&](int i) {
+      items[i] = work(datasets[i], files[i]);
+      WriteFileAtomically(reports[i], items[i].report.dump(2) + "\n", &write_errors[i]);
+    });
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const std::string& e : write_errors) {
+    if (!e.empty()) return Usage(e);
+  }
+  nlohmann::json summary = {{"report", "campaign"}, {"command", command},
+                            {"shard", FLAGS_shard}, {"jobs", FLAGS_jobs},
+                            {"seconds", seconds}, {"columns", columns},
+                            {"datasets", nlohmann::json::array()}};
+  bool all_ok = true;
+  std::string table;
+  for (const std::string& c : columns) table += "| " + c + " ";
+  table += "|\n";
+  for (size_t c = 0; c < columns.size(); ++c) table += "| --- ";
+  table += "|\n";
+  for (int i = 0; i < n; ++i) {
+    nlohmann::json row = items[i].row;
+    row["dataset"] = files[i];
+    row["report_file"] = reports[i];
+    for (const std::string& c : columns) table += "| " + Cell(row[c]) + " ";
+    table += "|\n";
+    summary["datasets"].push_back(row);
+    all_ok &= items[i].ok;
+  }
+  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; reports in %s\n", table.c_str(), n,
+              FLAGS_jobs, seconds, FLAGS_output_dir.c_str());
+  const int rc = Write(summary_path, summary);
+  if (rc != kExitOk) return rc;
+  return all_ok ? kExitOk : kExitFailure;
+}
+
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
   std::set<std::string> allowed = kFitFlags;
   allowed.insert("save_parameters");
+  allowed.insert(kCampaignFlags.begin(), kCampaignFlags.end());
   if (!SetFlags(argc, argv, allowed, &error)) return Usage(error);
   IdentifyOptions o;
   std::vector<const Effect*> effects;
+  if (!FLAGS_output_dir.empty()) {
+    if (!ReadFitOptions(&o, &effects, &error)) return Usage(error);
+    if (!FLAGS_save_parameters.empty()) return Usage("--save_parameters: not in a campaign");
+    const RigidRingModel model(effects);
+    return RunCampaign(
+        "identify", {"dataset", "status", "cost", "eq19", "eq20", "seconds"},
+        [&](const Dataset& d, std::string* why) {
+          ParameterSetup setup;
+          return ParameterSetup::Build(model, d, &setup, why);
+        },
+        [&](const Dataset& d, const std::string&) {
+          IdentifySummary s;
+          Identify(model, d, o, &s);
+          CampaignItem item;
+          item.report = IdentifyReport(s, d, o);
+          item.ok = s.success;
+          item.row = {{"status", s.success ? (s.converged ? "converged" : "not converged")
+                                           : "failed: " + s.message},
+                      {"cost", s.cost},
+                      {"eq19", s.relative_error_in_plane},
+                      {"eq20", s.relative_error_out_of_plane},
+                      {"seconds", s.seconds}};
+          return item;
+        });
+  }
   Dataset d;
   if (!ReadFitInputs(&o, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
@@ -297,7 +438,11 @@ int CompareCommand(int argc, char** argv) {
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
   ComparisonReport r;
-  CompareMethods(model, d, o, &r);
+  {
+    Progress progress("compare", 2 * o.fit.starts);
+    o.on_fit = [&] { progress.Add(); };
+    CompareMethods(model, d, o, &r);
+  }
   if (r.invalid_input) return Usage(FLAGS_dataset + ": " + r.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {
@@ -310,7 +455,7 @@ int CompareCommand(int argc, char** argv) {
 int SimulateCommand(int argc, char** argv) {
   std::string error;
   if (!SetFlags(argc, argv, {"parameters", "effects", "set", "frequency_noise", "damping_noise",
-                             "shape_noise", "prior_spread", "seed", "output", "truth"},
+                             "shape_noise", "prior_spread", "seed", "output", "truth", "shift"},
                 &error)) {
     return Usage(error);
   }
@@ -342,12 +487,26 @@ int SimulateCommand(int argc, char** argv) {
     }
     truth[*p] = v;
   }
+  if (FLAGS_shift != 0) {
+    if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) return Usage("--shift: must be in (0, 0.5)");
+    if (effects.size() != 1) return Usage("--shift: needs exactly one effect in --effects");
+    truth[SizeParameter(*effects[0])] = 0;  // set below
+  }
   const RigidRingModel model(effects);
   for (Param q : model.parameters()) {
     if (!truth.IsSet(q)) return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
   }
+  if (FLAGS_shift != 0) {
+    const Param p = SizeParameter(*effects[0]);
+    truth[p] = ValueForShift(truth, *effects[0], p, FLAGS_shift);
+    if (!(LargestShift(truth, *effects[0], p, truth[p]) < 2 * FLAGS_shift)) {
+      std::fprintf(stderr, "ringid: simulate: %s cannot shift a frequency by %g\n",
+                   effects[0]->name(), FLAGS_shift);
+      return kExitFailure;
+    }
+  }
   Dataset d;
-  d.name = "simulated";
+  d.name = std::filesystem::path(FLAGS_output).stem().string();
   d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
   std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
   SetEngineerPriors(truth, FLAGS_prior_spread, &rng, &d);
@@ -376,9 +535,42 @@ int SimulateCommand(int argc, char** argv) {
 
 int DiagnoseCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
+  std::set<std::string> allowed = kFitFlags;
+  allowed.insert(kCampaignFlags.begin(), kCampaignFlags.end());
+  if (!SetFlags(argc, argv, allowed, &error)) return Usage(error);
   DiagnoseOptions o;
   std::vector<const Effect*> effects;
+  if (!FLAGS_output_dir.empty()) {
+    if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
+    if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
+    return RunCampaign(
+        "diagnose",
+        {"dataset", "verdict", "indistinguishable", "gap_before", "gap_after", "shrink", "seconds"},
+        [&](const Dataset& d, std::string* why) {
+          ParameterSetup setup;
+          return ParameterSetup::Build(RigidRingModel(), d, &setup, why);
+        },
+        [&](const Dataset& d, const std::string&) {
+          DiagnosisReport r;
+          Diagnose(d, o, &r);
+          CampaignItem item;
+          item.report = DiagnoseJson(r, d);
+          item.ok = r.success;
+          double after = r.gap_before, shrink = 0;
+          for (const EffectFit& f : r.ranking) {
+            if (f.effect == r.verdict) after = f.gap_after, shrink = f.shrink;
+          }
+          std::string group;
+          for (const std::string& g : r.indistinguishable) group += (group.empty() ? "" : "+") + g;
+          item.row = {{"verdict", r.success ? r.verdict : "failed: " + r.message},
+                      {"indistinguishable", group},
+                      {"gap_before", r.gap_before},
+                      {"gap_after", after},
+                      {"shrink", shrink},
+                      {"seconds", r.seconds}};
+          return item;
+        });
+  }
   Dataset d;
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
@@ -405,6 +597,8 @@ int BenchCommand(int argc, char** argv) {
   SuiteOptions o;
   o.replicates = FLAGS_replicates;
   o.seed = static_cast<unsigned>(FLAGS_seed);
+  Progress progress(FLAGS_suite + " suite");
+  o.on_case = [&](int done, int total) { progress.Set(done, total); };
   const SuiteResult r = RunSuite(FLAGS_suite, o);
   if (!r.ok) return Usage("--suite: " + r.error);
   std::printf("%s", r.markdown.c_str());
@@ -423,7 +617,7 @@ int BenchCommand(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   FLAGS_logtostderr = true;
-  FLAGS_minloglevel = 2;
+  FLAGS_minloglevel = 3;  // Ceres reports failed evaluations at ERROR; the report says why
   google::InitGoogleLogging(argv[0]);
   gflags::SetUsageMessage("see 'ringid help'");
   const std::string command = argc > 1 ? argv[1] : "help";

@@ -112,6 +112,7 @@ SuiteResult Synthetic(const SuiteOptions& o) {
       "| tire | replicates | 95 % coverage | median abs error / std | fits failed |\n"
       "| --- | --- | --- | --- | --- |\n";
   long inside_all = 0, total_all = 0;
+  int done = 0;
   for (const auto& tire : tires) {
     const Parameters truth = ScaledTire(paper, tire.scale);
     long inside = 0, total = 0, failed = 0;
@@ -141,6 +142,7 @@ SuiteResult Synthetic(const SuiteOptions& o) {
         ++total;
         inside += err <= 1.96 * sd;
       }
+      if (o.on_case) o.on_case(++done, 3 * o.replicates);
     }
     std::sort(z.begin(), z.end());
     const double coverage = total ? static_cast<double>(inside) / total : NAN;
@@ -217,43 +219,14 @@ SuiteResult Conditioning(const SuiteOptions& o) {
   return r;
 }
 
-// The largest relative frequency shift an effect value causes.
-double LargestShift(const Parameters& truth, const Effect& effect, Param p, double v) {
-  const ModalSolution base = RigidRingModel().Solve(truth);
-  Parameters q = truth;
-  q[p] = v;
-  const ModalSolution with = RigidRingModel({&effect}).Solve(q);
-  if (!base.ok || !with.ok) return INFINITY;
-  double shift = 0;
-  for (const Mode& m : base.modes) {
-    const Mode* w = with.Find(m.label);
-    if (!w) return INFINITY;
-    shift = std::max(shift, std::abs(w->frequency_hz / m.frequency_hz - 1));
-  }
-  return shift;
-}
-
-// The effect value (bisection in log) whose largest frequency shift is `target`.
-double ValueForShift(const Parameters& truth, const Effect& effect, Param p, double target) {
-  double lo = TypicalScale(p) * 1e-4, hi = TypicalScale(p) * 1e3;
-  for (int k = 0; k < 60; ++k) {
-    const double mid = std::sqrt(lo * hi);
-    (LargestShift(truth, effect, p, mid) < target ? lo : hi) = mid;
-  }
-  return std::sqrt(lo * hi);
-}
-
 SuiteResult Diagnosis(const SuiteOptions& o) {
   SuiteResult r;
   Dataset table1;
   Parameters paper;
   if (!LoadPaper(o, &table1, &paper, &r.error)) return r;
   // The parameter each effect is withheld through.
-  const std::pair<const char*, Param> effects[] = {
-      {"none", Param::m_b},
-      {"anisotropic_sidewall", Param::dk_bpsi}, {"hub_compliance", Param::s_h},
-      {"contact_yaw_stiffness", Param::k_cpsi}, {"axle_torsion", Param::k_atheta},
-      {"sensor_mass", Param::dm}, {"lug_coupling", Param::k_xy}};
+  std::vector<std::pair<const char*, Param>> effects = {{"none", Param::m_b}};
+  for (const Effect* e : EffectCatalogue()) effects.push_back({e->name(), SizeParameter(*e)});
   std::vector<std::string> names;
   for (const auto& e : effects) names.push_back(e.first);
   std::map<std::string, std::map<std::string, int>> confusion;
@@ -296,6 +269,7 @@ SuiteResult Diagnosis(const SuiteOptions& o) {
         }
         seconds += dr.seconds;
         ++cases;
+        if (o.on_case) o.on_case(cases, static_cast<int>(effects.size()) * draws * 2);
         ++confusion[name][dr.verdict];
         bool ok = dr.verdict == name;
         const bool in_group = std::find(dr.indistinguishable.begin(), dr.indistinguishable.end(),

@@ -2,6 +2,7 @@
 #ifndef RINGID_BENCHMARKS_SUITES_H_
 #define RINGID_BENCHMARKS_SUITES_H_
 
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,8 @@ struct SuiteOptions {
   std::string source_dir = ".";  // where datasets/ lives
   int replicates = 200;          // synthetic: Monte Carlo replicates per tire
   unsigned seed = 1;
+  // Called with (done, total) as the suite's cases finish.
+  std::function<void(int, int)> on_case;
 };
 
 struct SuiteResult {

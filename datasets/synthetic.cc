@@ -60,4 +60,38 @@ void SetEngineerPriors(const Parameters& truth, double prior_spread,
   }
 }
 
+Param SizeParameter(const Effect& effect) {
+  const std::string name = effect.name();
+  if (name == "anisotropic_sidewall") return Param::dk_bpsi;
+  if (name == "hub_compliance") return Param::s_h;
+  if (name == "contact_yaw_stiffness") return Param::k_cpsi;
+  if (name == "axle_torsion") return Param::k_atheta;
+  if (name == "sensor_mass") return Param::dm;
+  return Param::k_xy;  // lug_coupling
+}
+
+double LargestShift(const Parameters& truth, const Effect& effect, Param p, double value) {
+  const ModalSolution base = RigidRingModel().Solve(truth);
+  Parameters q = truth;
+  q[p] = value;
+  const ModalSolution with = RigidRingModel({&effect}).Solve(q);
+  if (!base.ok || !with.ok) return INFINITY;
+  double shift = 0;
+  for (const Mode& m : base.modes) {
+    const Mode* w = with.Find(m.label);
+    if (!w) return INFINITY;
+    shift = std::max(shift, std::abs(w->frequency_hz / m.frequency_hz - 1));
+  }
+  return shift;
+}
+
+double ValueForShift(const Parameters& truth, const Effect& effect, Param p, double target) {
+  double lo = TypicalScale(p) * 1e-4, hi = TypicalScale(p) * 1e3;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = std::sqrt(lo * hi);
+    (LargestShift(truth, effect, p, mid) < target ? lo : hi) = mid;
+  }
+  return std::sqrt(lo * hi);
+}
+
 }  // namespace ringid

@@ -81,6 +81,7 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
       run.relative_error_in_plane.push_back(e19);
       run.relative_error_out_of_plane.push_back(e20);
       r->best_cost = std::min(r->best_cost, fit.cost);
+      if (o.on_fit) o.on_fit();
     }
     r->methods.push_back(run);
   }

@@ -2,6 +2,7 @@
 #ifndef RINGID_ESTIMATION_COMPARE_H_
 #define RINGID_ESTIMATION_COMPARE_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ struct CompareOptions {
   // found.
   double success_absolute = 1e-6;
   double success_relative = 1e-3;
+  // Called after each fit (2 x starts in all), e.g. to show progress.
+  std::function<void()> on_fit;
   bool IsValid(std::string* why) const;
 };
 

@@ -121,11 +121,16 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       f.label = m.label;
       f.model_label = mode.label;
       f.measured_hz = m.frequency_hz;
+      f.measured_sigma_hz = residuals.FrequencySigma(m);
       f.model_hz = mode.frequency_hz;
       f.measured_damping = m.damping_ratio;
       f.model_damping = mode.damping_ratio;
       if (!m.shape.empty()) {
         f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention), m.shape);
+        for (const Mode& other : solution.modes) {
+          f.mac_all.emplace_back(other.label,
+                                 Mac(ComparableShape(other, o.residuals.shape_convention), m.shape));
+        }
       }
       const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
       if (LabelPlane(m.label) == Plane::kInPlane) {

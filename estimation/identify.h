@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "datasets/dataset.h"
@@ -47,10 +48,13 @@ struct ModeFit {
   ModeLabel label;     // the measured mode's label
   ModeLabel model_label;  // the label of the model mode it was paired with
   double measured_hz = 0;
+  double measured_sigma_hz = 0;  // the sigma it was weighted by
   double model_hz = 0;
   std::optional<double> measured_damping;
   double model_damping = 0;
   std::optional<double> mac;  // where a shape was measured
+  // MAC against every model mode (by label), where a shape was measured.
+  std::vector<std::pair<ModeLabel, double>> mac_all;
 };
 
 struct IdentifySummary {

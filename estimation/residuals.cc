@@ -136,12 +136,7 @@ bool ModalResiduals::Evaluate(const double* x, double* r) const {
     const Mode& mode = solution.modes[pairs[slot.mode]];
     switch (slot.kind) {
       case Slot::kFrequency: {
-        double sigma = options_.relative_sigma * m.frequency_hz;
-        if (options_.frequency_weighting == FrequencyWeighting::kSigma &&
-            m.frequency_sigma_hz) {
-          sigma = *m.frequency_sigma_hz;
-        }
-        r[k++] = (mode.frequency_hz - m.frequency_hz) / sigma;
+        r[k++] = (mode.frequency_hz - m.frequency_hz) / FrequencySigma(m);
         break;
       }
       case Slot::kDamping:
@@ -192,6 +187,13 @@ ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals) {
   cost->AddParameterBlock(residuals.num_parameters());
   cost->SetNumResiduals(residuals.num_residuals());
   return cost;
+}
+
+double ModalResiduals::FrequencySigma(const MeasuredMode& m) const {
+  if (options_.frequency_weighting == FrequencyWeighting::kSigma && m.frequency_sigma_hz) {
+    return *m.frequency_sigma_hz;
+  }
+  return options_.relative_sigma * m.frequency_hz;
 }
 
 }  // namespace ringid

@@ -75,6 +75,9 @@ class ModalResiduals {
   bool Pair(const double* x, ModalSolution* solution, std::vector<int>* pairs,
             std::string* why) const;
 
+  // The standard deviation a measured frequency is weighted by (Hz).
+  double FrequencySigma(const MeasuredMode& m) const;
+
   // Which residuals belong to which measured mode and observable.
   struct Slot {
     int mode;                  // index into dataset.modes; -1 for kPrior

@@ -15,37 +15,12 @@
 
 namespace {
 
-struct RunResult {
-  int status;
-  std::string err;
-};
+using ringid::testing::Exists;
+using ringid::testing::Ringid;
+using ringid::testing::RunResult;
+using ringid::testing::Scratch;
 
-// A scratch path private to this test process: ctest runs tests in parallel.
-std::string Scratch(const std::string& name) {
-  const std::string dir =
-      ::testing::TempDir() + "ringid-cli-" + std::to_string(::getpid()) + "/";
-  ::mkdir(dir.c_str(), 0700);
-  return dir + name;
-}
-
-RunResult Ringid(const std::string& args) {
-  const std::string err = Scratch("stderr.txt");
-  const std::string cmd = std::string(RINGID_BINARY) + " " + args +
-                          " > /dev/null 2> " + err;
-  const int raw = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::string text((std::istreambuf_iterator<char>(in)), {});
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text};
-}
-
-bool Exists(const std::string& path) {
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0;
-}
-
-std::string Source(const std::string& f) {
-  return std::string(RINGID_SOURCE_DIR) + "/" + f;
-}
+std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
 
 TEST(CliTest, IdentifyWritesTheContractReport) {
   const std::string out = Scratch("identify.json");

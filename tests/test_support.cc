@@ -1,5 +1,12 @@
 #include "tests/test_support.h"
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -223,6 +230,30 @@ std::vector<MalformedDataset> MalformedDatasets() {
     out.push_back({what, text, ""});
   }
   return out;
+}
+
+std::string Scratch(const std::string& name) {
+  const std::string dir =
+      ::testing::TempDir() + "ringid-test-" + std::to_string(::getpid()) + "/";
+  ::mkdir(dir.c_str(), 0700);
+  return dir + name;
+}
+
+RunResult Ringid(const std::string& args) {
+  const std::string err = Scratch("stderr.txt");
+  const std::string cmd = std::string(RINGID_BINARY) + " " + args + " > /dev/null 2> " + err;
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(err)};
+}
+
+bool Exists(const std::string& path) {
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
 }  // namespace ringid::testing

@@ -34,6 +34,17 @@ struct MalformedDataset {
 };
 std::vector<MalformedDataset> MalformedDatasets();
 
+// The ringid executable, run with `args` (stdout discarded).
+struct RunResult {
+  int status;       // exit status, -1 when killed
+  std::string err;  // what it wrote on stderr
+};
+RunResult Ringid(const std::string& args);
+// A scratch path private to this test process: ctest runs tests in parallel.
+std::string Scratch(const std::string& name);
+bool Exists(const std::string& path);
+std::string ReadFile(const std::string& path);
+
 }  // namespace ringid::testing
 
 #endif  // RINGID_TESTS_TEST_SUPPORT_H_

@@ -1,0 +1,125 @@
+// Campaigns: results independent of --jobs and of sharding; a bad dataset
+// stops the campaign before anything is written.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ringid::testing::ReadFile;
+using ringid::testing::Ringid;
+using ringid::testing::RunResult;
+using ringid::testing::Scratch;
+using ringid::testing::SourcePath;
+
+// Four withheld-effect datasets (one without an effect) in a fresh directory.
+std::string MakeDatasets(const std::string& name) {
+  const std::string dir = Scratch(name);
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/data");
+  const char* effects[] = {"", "lug_coupling", "hub_compliance", "sensor_mass"};
+  for (int i = 0; i < 4; ++i) {
+    std::string args = "simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
+                       " --set=m_a=15 --seed=" + std::to_string(i + 1) + " --output=" + dir +
+                       "/data/case" + std::to_string(i) + ".json --truth=" + dir + "/truth" +
+                       std::to_string(i) + ".json";
+    if (*effects[i]) args += std::string(" --effects=") + effects[i] + " --shift=0.05";
+    const RunResult r = Ringid(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+  }
+  return dir;
+}
+
+// A report without its timings, which are all that may differ between runs.
+nlohmann::json Untimed(nlohmann::json j) {
+  if (j.is_object()) {
+    for (const char* key : {"seconds", "seconds_per_fit"}) j.erase(key);
+    for (auto& [k, v] : j.items()) v = Untimed(v);
+  } else if (j.is_array()) {
+    for (auto& v : j) v = Untimed(v);
+  }
+  return j;
+}
+
+nlohmann::json Load(const std::string& path) { return nlohmann::json::parse(ReadFile(path)); }
+
+TEST(CampaignTest, DiagnosisDoesNotDependOnJobs) {
+  const std::string dir = MakeDatasets("jobs");
+  for (const char* jobs : {"1", "2"}) {
+    const RunResult r = Ringid("diagnose --dataset=" + dir + "/data --output_dir=" + dir +
+                               "/out" + jobs + " --jobs=" + jobs);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "progress goes to a terminal only";
+  }
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "/case" + std::to_string(i) + ".json";
+    EXPECT_EQ(Untimed(Load(dir + "/out1" + name)), Untimed(Load(dir + "/out2" + name))) << name;
+  }
+  const nlohmann::json summary = Load(dir + "/out2/campaign.json");
+  ASSERT_EQ(summary["datasets"].size(), 4u);
+  EXPECT_EQ(summary["jobs"], 2);
+  // The synthetic truth: lug coupling at a 5 % shift is what the suite names.
+  EXPECT_EQ(summary["datasets"][1]["verdict"], "lug_coupling");
+  EXPECT_EQ(summary["datasets"][0]["verdict"], "none");
+}
+
+TEST(CampaignTest, ShardsPartitionTheDatasetsAndReproduceTheirReports) {
+  const std::string dir = MakeDatasets("shards");
+  ASSERT_EQ(Ringid("identify --dataset=" + dir + "/data --output_dir=" + dir + "/all").status, 0);
+  std::multiset<std::string> seen;
+  for (int i = 0; i < 3; ++i) {
+    const std::string shard = std::to_string(i) + "/3";
+    const RunResult r = Ringid("identify --dataset=" + dir + "/data --output_dir=" + dir +
+                               "/sharded --shard=" + shard);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json summary =
+        Load(dir + "/sharded/campaign." + std::to_string(i) + "-of-3.json");
+    for (const auto& row : summary["datasets"]) seen.insert(row["dataset"].get<std::string>());
+  }
+  ASSERT_EQ(seen.size(), 4u);
+  EXPECT_EQ(std::set<std::string>(seen.begin(), seen.end()).size(), 4u) << "no dataset twice";
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "/case" + std::to_string(i) + ".json";
+    EXPECT_EQ(Untimed(Load(dir + "/all" + name)), Untimed(Load(dir + "/sharded" + name)));
+  }
+}
+
+TEST(CampaignTest, ABadDatasetStopsTheCampaignBeforeAnythingIsWritten) {
+  const std::string dir = Scratch("bad");
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/data");
+  fs::copy_file(SourcePath("datasets/paper/table1.json"), dir + "/data/a.json");
+  std::ofstream(dir + "/data/b.json") << "{\"format\": \"ringid-modal-dataset/1\", \"name\": 3}";
+  const RunResult r =
+      Ringid("identify --dataset=" + dir + "/data --output_dir=" + dir + "/out --jobs=2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(dir + "/data/b.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("name"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST(CampaignTest, BadCampaignFlagsAreRefused) {
+  const std::string data = SourcePath("datasets/paper/table1.json");
+  const std::string out = Scratch("flags-out");
+  for (const std::string& flags :
+       {"--shard=3/3", "--shard=1", "--shard=-1/2", "--jobs=0", "--output=x.json",
+        "--save_parameters=p.json"}) {
+    const RunResult r = Ringid("identify --dataset=" + data + " --output_dir=" + out + " " + flags);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+  }
+  EXPECT_EQ(Ringid("identify --dataset=/no/such/dir --output_dir=" + out).status, 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
