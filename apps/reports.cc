@@ -115,19 +115,23 @@ json DiagnoseJson(const DiagnosisReport& r, const Dataset& d) {
   j["gap_before"] = {{"chi2", r.chi2_before}, {"dof", r.dof},
                      {"p_value", r.p_value ? json(*r.p_value) : json(nullptr)},
                      {"significant", r.significant}, {"excess", r.gap_before}};
-  json where = json::array();
-  for (size_t i = 0; i < r.where.size(); ++i) {
-    const ModeMisfit& w = r.where[i];
-    json q = {{"label", LabelName(w.label)}, {"chi2", w.chi2},
-              {"frequency_sigma", w.frequency_sigma},
-              {"damping_sigma", w.damping_sigma ? json(*w.damping_sigma) : json(nullptr)},
-              {"shape_chi2", w.shape_chi2}};
-    if (!w.worst_component.empty()) {
-      q["worst_component"] = {{"dof", w.worst_component}, {"sigma", w.worst_component_sigma}};
+  auto misfits = [](const std::vector<ModeMisfit>& list, const std::vector<double>& shrink) {
+    json where = json::array();
+    for (size_t i = 0; i < list.size(); ++i) {
+      const ModeMisfit& w = list[i];
+      json q = {{"label", LabelName(w.label)}, {"chi2", w.chi2},
+                {"frequency_sigma", w.frequency_sigma},
+                {"damping_sigma", w.damping_sigma ? json(*w.damping_sigma) : json(nullptr)},
+                {"shape_chi2", w.shape_chi2}};
+      if (!w.worst_component.empty()) {
+        q["worst_component"] = {{"dof", w.worst_component}, {"sigma", w.worst_component_sigma}};
+      }
+      if (i < shrink.size()) q["shrink"] = shrink[i];
+      where.push_back(q);
     }
-    if (i < r.mode_shrink.size()) q["shrink"] = r.mode_shrink[i];
-    where.push_back(q);
-  }
+    return where;
+  };
+  const json where = misfits(r.where, r.mode_shrink);
   j["where"] = where;
   j["absorbed"] = r.absorbed;
   json ranking = json::array();
@@ -153,6 +157,9 @@ json DiagnoseJson(const DiagnosisReport& r, const Dataset& d) {
   j["held_out_before"] = r.held_out_before ? json(*r.held_out_before) : json(nullptr);
   j["verdict"] = {{"effect", r.verdict}, {"indistinguishable", r.indistinguishable},
                   {"explanation", r.explanation}};
+  for (const EffectFit& f : r.ranking) {  // the misfit once the verdict's effect is added
+    if (f.effect == r.verdict) j["verdict"]["where_after"] = misfits(f.where, {});
+  }
   j["seconds"] = r.seconds;
   return j;
 }
@@ -181,6 +188,12 @@ json CompareJson(const ComparisonReport& r, const Dataset& d) {
     q["median_evaluations"] = m.median_evaluations;
     q["relative_error_in_plane_eq19"] = finite_list(m.relative_error_in_plane);
     q["relative_error_out_of_plane_eq20"] = finite_list(m.relative_error_out_of_plane);
+    q["histories"] = json::array();  // per start: [[model solutions, cost], ...]
+    for (const auto& h : m.histories) {
+      json trace = json::array();
+      for (const auto& [evaluations, cost] : h) trace.push_back({evaluations, Finite(cost)});
+      q["histories"].push_back(trace);
+    }
     j[MethodName(m.method)] = q;
   }
   j["initial"] = {{"cost", Finite(r.initial_cost)},

@@ -363,12 +363,16 @@ Parameters ScaledTire(const Parameters& paper, double s) {
 }
 
 SuiteResult RunSuite(const std::string& name, const SuiteOptions& o) {
-  if (name == "paper") return Paper(o);
-  if (name == "synthetic") return Synthetic(o);
-  if (name == "conditioning") return Conditioning(o);
-  if (name == "diagnosis") return Diagnosis(o);
   SuiteResult r;
-  r.error = "unknown suite '" + name + "' (paper, synthetic, conditioning, diagnosis; speed: build/benchmarks/ringid_benchmarks)";
+  if (name == "paper") r = Paper(o);
+  else if (name == "synthetic") r = Synthetic(o);
+  else if (name == "conditioning") r = Conditioning(o);
+  else if (name == "diagnosis") r = Diagnosis(o);
+  else r.error = "unknown suite '" + name + "' (paper, synthetic, conditioning, diagnosis; speed: build/benchmarks/ringid_benchmarks)";
+  if (r.ok) {
+    r.report["report"] = "bench";
+    r.report["suite"] = name;
+  }
   return r;
 }
 

@@ -76,6 +76,7 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
       run.final_costs.push_back(fit.cost);
       run.evaluations.push_back(fit.evaluations);
       run.seconds.push_back(fit.seconds);
+      run.histories.push_back(fit.history);
       double e19, e20;
       RelativeErrors(residuals, dataset, fit.x, &e19, &e20);
       run.relative_error_in_plane.push_back(e19);

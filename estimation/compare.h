@@ -29,6 +29,8 @@ struct MethodRun {
   std::vector<double> seconds;
   std::vector<double> relative_error_in_plane;      // eq. (19) per start
   std::vector<double> relative_error_out_of_plane;  // eq. (20) per start
+  // Per start: (model solutions so far, cost) per iteration (LocalFit).
+  std::vector<std::vector<std::pair<long, double>>> histories;
   double success_rate = 0;
   double seconds_per_fit = 0;
   double median_evaluations = 0;

@@ -23,6 +23,34 @@ double ChiSquareTail(double x, double dof) {
 }
 
 // The weighted residuals of `dataset` under `model` at `p`, per slot.
+// Per measured mode: its residuals in sigma, by observable.
+std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
+                                const std::vector<double>& res, const Dataset& dataset) {
+  std::vector<ModeMisfit> where;
+  for (size_t i = 0; i < dataset.modes.size(); ++i) {
+    ModeMisfit w;
+    w.label = dataset.modes[i].label;
+    for (size_t k = 0; k < slots.size(); ++k) {
+      if (slots[k].mode != static_cast<int>(i)) continue;
+      w.chi2 += res[k] * res[k];
+      switch (slots[k].kind) {
+        case ModalResiduals::Slot::kFrequency: w.frequency_sigma = res[k]; break;
+        case ModalResiduals::Slot::kDamping: w.damping_sigma = res[k]; break;
+        case ModalResiduals::Slot::kShape:
+          w.shape_chi2 += res[k] * res[k];
+          if (std::abs(res[k]) > std::abs(w.worst_component_sigma)) {
+            w.worst_component_sigma = res[k];
+            w.worst_component = DofName(slots[k].dof);
+          }
+          break;
+        case ModalResiduals::Slot::kPrior: break;
+      }
+    }
+    where.push_back(w);
+  }
+  return where;
+}
+
 bool ResidualsAt(const ModalModel& model, const Dataset& dataset,
                  const Parameters& p, std::vector<ModalResiduals::Slot>* slots,
                  std::vector<double>* r, const ResidualOptions& options) {
@@ -224,26 +252,7 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
     return;
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
-  for (size_t i = 0; i < dataset.modes.size(); ++i) {
-    ModeMisfit w;
-    w.label = dataset.modes[i].label;
-    w.chi2 = before[i];
-    for (size_t k = 0; k < slots.size(); ++k) {
-      if (slots[k].mode != static_cast<int>(i)) continue;
-      switch (slots[k].kind) {
-        case ModalResiduals::Slot::kFrequency: w.frequency_sigma = res[k]; break;
-        case ModalResiduals::Slot::kDamping: w.damping_sigma = res[k]; break;
-        case ModalResiduals::Slot::kShape:
-          w.shape_chi2 += res[k] * res[k];
-          if (std::abs(res[k]) > std::abs(w.worst_component_sigma)) {
-            w.worst_component_sigma = res[k];
-            w.worst_component = DofName(slots[k].dof);
-          }
-          break;
-      }
-    }
-    r->where.push_back(w);
-  }
+  r->where = Misfits(slots, res, dataset);
   for (const ParameterEstimate& e : r->baseline.estimates) {
     if (!e.free) continue;
     const auto prior = dataset.initial.find(e.param);
@@ -290,6 +299,7 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
     std::vector<double> er;
     if (ResidualsAt(model, dataset, s.parameters, &es, &er, o.fit.residuals)) {
       f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
+      f.where = Misfits(es, er, dataset);
     }
     if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
     f.minimal_detectable = MinimalDetectable(*effect, warm, r->baseline.uncertainty.jacobian,

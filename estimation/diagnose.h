@@ -60,6 +60,7 @@ struct EffectFit {
   bool supported = false;
   std::map<std::string, double> values;  // fitted effect parameters
   std::vector<double> mode_chi2;         // per measured mode
+  std::vector<ModeMisfit> where;         // per measured mode, at this fit
   std::optional<double> held_out_chi2;   // leave-one-mode-out prediction
   // Per effect parameter: the smallest |value| whose signature a
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).

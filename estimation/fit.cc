@@ -11,6 +11,22 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Records the cost after each Levenberg-Marquardt iteration.
+class HistoryCallback : public ceres::IterationCallback {
+ public:
+  HistoryCallback(const ModalResiduals& residuals, LocalFit* fit)
+      : residuals_(residuals), before_(residuals.evaluations()), fit_(fit) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    fit_->history.emplace_back(residuals_.evaluations() - before_, s.cost);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const ModalResiduals& residuals_;
+  const long before_;
+  LocalFit* fit_;
+};
+
 LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
                                const Eigen::VectorXd& start, const Box& box,
                                int max_iterations, int fixed) {
@@ -46,6 +62,8 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
     fit.message = "the model cannot be solved at this start";
     return fit;
   }
+  HistoryCallback history(residuals, &fit);
+  so.callbacks.push_back(&history);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   fit.cost = summary.IsSolutionUsable() ? summary.final_cost : kInf;
@@ -67,6 +85,7 @@ LocalFit FitSimplex(const ModalResiduals& residuals,
   fit.cost = s.cost;
   fit.converged = s.converged;
   fit.message = s.message;
+  for (const auto& [evaluations, cost] : s.history) fit.history.emplace_back(evaluations, cost);
   return fit;
 }
 
@@ -148,6 +167,12 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
     fit = FitLevenbergMarquardt(residuals, start, box, max_iterations, fixed);
   }
   fit.evaluations = residuals.evaluations() - before;
+  if (fit.history.size() > 200) {  // keep the first, the last and 198 between
+    std::vector<std::pair<long, double>> thin;
+    const size_t n = fit.history.size();
+    for (int k = 0; k < 200; ++k) thin.push_back(fit.history[k * (n - 1) / 199]);
+    fit.history = thin;
+  }
   fit.seconds = std::chrono::duration<double>(
                     std::chrono::steady_clock::now() - t0).count();
   return fit;

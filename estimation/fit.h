@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,6 +48,8 @@ struct LocalFit {
   std::string message;
   long evaluations = 0;  // model solutions this fit used
   double seconds = 0;
+  // (model solutions so far, cost) per iteration, thinned to at most 200.
+  std::vector<std::pair<long, double>> history;
 };
 
 // Levenberg-Marquardt (ceres::Solve on central-difference Jacobians) or the

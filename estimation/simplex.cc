@@ -39,6 +39,7 @@ SimplexResult MinimizeNelderMead(
     std::sort(order.begin(), order.end(),
               [&](int a, int b) { return v[a] < v[b]; });
     const int best = order[0], worst = order[n], second = order[n - 1];
+    result.history.emplace_back(result.evaluations, v[best]);
     double diameter = 0;
     for (int i = 0; i <= n; ++i) {
       diameter = std::max(diameter, (p[i] - p[best]).cwiseAbs().maxCoeff());

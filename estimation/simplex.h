@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -26,6 +28,8 @@ struct SimplexResult {
   int evaluations = 0;
   bool converged = false;
   std::string message;
+  // (evaluations so far, best value) at each iteration.
+  std::vector<std::pair<int, double>> history;
 };
 
 // Minimises f over the box [lower, upper]; f may return +inf where undefined.
