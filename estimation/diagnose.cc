@@ -181,6 +181,83 @@ std::map<std::string, double> MinimalDetectable(const Effect& effect, const Data
   return out;
 }
 
+// Noise-free data of `truth` under `model`, measured as `dataset` was (the
+// same modes, observables, degrees of freedom and sigmas). False when a
+// measured mode is lost.
+bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& dataset,
+               ShapeConvention convention, Dataset* out) {
+  const ModalSolution s = model.Solve(truth);
+  if (!s.ok) return false;
+  *out = dataset;
+  for (MeasuredMode& m : out->modes) {
+    const Mode* mode = s.Find(m.label);
+    if (!mode) return false;
+    m.frequency_hz = mode->frequency_hz;
+    if (m.damping_ratio) m.damping_ratio = mode->damping_ratio;
+    const RealShapeVector u = ComparableShape(*mode, convention);
+    for (auto& [dof, v] : m.shape) v = u[static_cast<int>(dof)];
+  }
+  return true;
+}
+
+// The likelihood ratio by which the re-calibrated baseline misses noise-free
+// data of the calibrated point with `effect`'s parameter `p` at `value`: what
+// the diagnosis sees of that effect, noise aside. The re-calibration starts
+// at the calibrated point and keeps the diagnosis' prior.
+double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifySummary& calibrated,
+                    const Dataset& warm, const DiagnoseOptions& o) {
+  Parameters truth = calibrated.parameters;
+  for (Param q : effect.parameters()) {
+    if (q == p) truth[q] = value;
+    else if (warm.known.count(q)) truth[q] = warm.known.at(q);
+    else truth[q] = Info(q).domain == Domain::kPositive ? TypicalScale(q) : 0.0;
+  }
+  Dataset data;
+  if (!Remeasure(RigidRingModel({&effect}), truth, warm, o.fit.residuals.shape_convention, &data)) {
+    return INFINITY;
+  }
+  const RigidRingModel baseline;
+  ParameterSetup setup;
+  std::string why;
+  if (!ParameterSetup::Build(baseline, data, &setup, &why)) return NAN;
+  ModalResiduals residuals(baseline, data, setup, o.fit.residuals);
+  const Eigen::VectorXd x0 = setup.Encode(setup.start());
+  const LocalFit fit = FitLocally(residuals, Method::kLevenbergMarquardt, x0,
+                                  BoundsAround(setup, x0, o.fit.bound_factor),
+                                  o.fit.max_iterations, o.fit.simplex);
+  return fit.cost;
+}
+
+// The linearised detectable size `linear` of `p`, checked against the
+// re-calibrated baseline (AbsorbedCost) and moved by secant steps in log-log
+// until the likelihood ratio is within a factor 1.5 of `detect`. A column
+// outside the baseline's span can be absorbed at second order (a compliant
+// hub against softer stiffnesses): the linear size then promises too much.
+// `zero` is AbsorbedCost at size 0, where every effect equals the baseline.
+double CheckedDetectable(const Effect& effect, Param p, double linear, const IdentifySummary& calibrated,
+                         const Dataset& warm, const DiagnoseOptions& o, double zero, double detect) {
+  if (!std::isfinite(linear) || !(linear > 0) || !std::isfinite(zero)) return linear;
+  double v = linear, v_prev = 0, lr_prev = 0;
+  for (int step = 0; step < 5; ++step) {
+    const double lr = 2 * (AbsorbedCost(effect, p, v, calibrated, warm, o) - zero);
+    if (!std::isfinite(lr)) return v;  // a mode is lost: certainly seen
+    if (lr > detect / 1.5 && lr < detect * 1.5) return v;
+    double next;
+    if (!(lr > 1e-3 * detect)) {
+      next = 4 * v;  // absorbed: no slope to follow
+    } else {
+      double k = 2;  // a likelihood ratio grows as the size squared at first order
+      if (v_prev > 0 && lr_prev > 1e-3 * detect && v != v_prev) {
+        k = std::clamp(std::log(lr / lr_prev) / std::log(v / v_prev), 1.0, 8.0);
+      }
+      next = v * std::pow(detect / lr, 1 / k);
+    }
+    v_prev = v, lr_prev = lr;
+    v = next;
+  }
+  return v;
+}
+
 }  // namespace
 
 void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
@@ -349,6 +426,15 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
     }
   }
   if (r->verdict == "none") {
+    // The sizes the explanation promises, checked beyond first order.
+    const Effect* any = EffectCatalogue().front();
+    const double zero = AbsorbedCost(*any, any->parameters().front(), 0.0, r->baseline, warm, o);
+    for (EffectFit& f : r->ranking) {
+      const Effect* effect = FindEffect(f.effect);
+      for (auto& [name, v] : f.minimal_detectable) {
+        v = CheckedDetectable(*effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
+      }
+    }
     std::ostringstream small;
     for (const EffectFit& f : r->ranking) {
       for (const auto& [name, v] : f.minimal_detectable) {
