@@ -1,5 +1,6 @@
 #include "model/assignment.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace ringid {
@@ -9,6 +10,23 @@ std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score) {
   const int cols = static_cast<int>(score.cols());
   std::vector<int> result(rows, -1);
   if (rows == 0 || rows > cols || cols > 16) return result;
+  // When every row's best column is its own, no assignment beats the sum of
+  // the row maxima: that is the answer (the usual case for mode labels).
+  int used = 0;
+  for (int row = 0; row < rows; ++row) {
+    int c_best = -1;
+    for (int c = 0; c < cols; ++c) {
+      if (score(row, c) > -std::numeric_limits<double>::infinity() &&
+          (c_best < 0 || score(row, c) > score(row, c_best))) {
+        c_best = c;
+      }
+    }
+    if (c_best < 0 || (used & (1 << c_best))) break;
+    used |= 1 << c_best;
+    result[row] = c_best;
+    if (row == rows - 1) return result;
+  }
+  std::fill(result.begin(), result.end(), -1);
   const double kNone = -std::numeric_limits<double>::infinity();
   // best[mask]: best total for the first popcount(mask) rows using columns mask.
   const int n = 1 << cols;
