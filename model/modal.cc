@@ -84,6 +84,11 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
     }
   }
 
+  // Unlabelled couplings (k_xy) count in the total, not for any label.
+  MechanicalSystem::Matrix rest = s.K();
+  for (ModeLabel l : labels) rest -= s.K_label(l);
+  const CMat Minv_T = Minv.transpose().cast<std::complex<double>>();
+
   std::vector<Mode> modes;
   for (int j = 0; j < 2 * k; ++j) {
     const std::complex<double> lam = lambda[j];
@@ -94,9 +99,7 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
     mode.damping_ratio = -lam.real() / std::abs(lam);
     CVec v = V.col(j).head(k);
     // For w^T (lambda^2 M + lambda C + K) = 0: w = M^-T y2 (see ERRATA eq. 13).
-    CVec w = have_left ? CVec(Minv.transpose().cast<std::complex<double>>() *
-                              Y.row(j).tail(k).transpose())
-                       : CVec(v.conjugate());
+    CVec w = have_left ? CVec(Minv_T * Y.row(j).tail(k).transpose()) : CVec(v.conjugate());
     mode.energy.fill(0);
     double labelled = 0;
     for (ModeLabel l : labels) {
@@ -104,9 +107,6 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
       mode.energy[static_cast<int>(l)] = e;
       labelled += e;
     }
-    // Unlabelled couplings (k_xy) count in the total, not for any label.
-    MechanicalSystem::Matrix rest = s.K();
-    for (ModeLabel l : labels) rest -= s.K_label(l);
     double total = labelled + Bilinear(w, rest, dofs, v);
     if (!(total > 0) || !std::isfinite(total)) total = 1;
     for (double& e : mode.energy) e /= total;
