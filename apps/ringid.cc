@@ -18,6 +18,7 @@
 #include <glog/logging.h>
 
 #include "apps/campaign.h"
+#include "apps/html_report.h"
 #include "apps/progress.h"
 #include "apps/reports.h"
 #include "benchmarks/suites.h"
@@ -55,6 +56,8 @@ DEFINE_string(markdown, "", "bench: also write the Markdown table here");
 DEFINE_string(output_dir, "", "identify, diagnose: a campaign; one report per dataset and campaign.json here");
 DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)");
 DEFINE_string(shard, "0/1", "identify, diagnose: I/N, analyse every N-th dataset from the I-th (0-based)");
+DEFINE_string(input, "", "report: a JSON report of ringid");
+DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg");
 DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
 
 namespace ringid {
@@ -100,6 +103,9 @@ const char kHelp[] =
     "  bench      accuracy and conditioning suites, run from the repository root\n"
     "             --suite=paper|synthetic|conditioning|diagnosis [--replicates=N] [--seed=N]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
+    "  report     any JSON report of ringid as one self-contained HTML page: tables\n"
+    "             and figures (SVG drawn by gnuplot, package gnuplot-nox)\n"
+    "             --input=REPORT.json --output=FILE.html [--figures_dir=DIR]\n"
     "\n"
     "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
     "         axle_torsion, sensor_mass, lug_coupling\n"
@@ -612,6 +618,34 @@ int BenchCommand(int argc, char** argv) {
   return kExitOk;
 }
 
+int ReportCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, {"input", "output", "figures_dir"}, &error)) return Usage(error);
+  if (FLAGS_input.empty() || FLAGS_output.empty()) {
+    return Usage("report needs --input=REPORT.json and --output=FILE.html");
+  }
+  if (!CanWrite(FLAGS_output, &error)) return Usage(error);
+  if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir)) {
+    return Usage("--figures_dir: " + FLAGS_figures_dir + ": not a directory");
+  }
+  nlohmann::json report;
+  if (!LoadReport(FLAGS_input, &report, &error)) return Usage(error);
+  std::string html;
+  std::vector<HtmlFigure> figures;
+  if (!RenderHtmlReport(report, FLAGS_input, &html, &error, &figures)) {
+    std::fprintf(stderr, "ringid: report: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  for (const HtmlFigure& f : figures) {
+    if (FLAGS_figures_dir.empty()) break;
+    const std::string path = (std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string();
+    if (!WriteFileAtomically(path, f.svg, &error)) return Usage(error);
+  }
+  if (!WriteFileAtomically(FLAGS_output, html, &error)) return Usage(error);
+  std::printf("wrote %s (%zu figure(s))\n", FLAGS_output.c_str(), figures.size());
+  return kExitOk;
+}
+
 }  // namespace
 }  // namespace ringid
 
@@ -632,5 +666,6 @@ int main(int argc, char** argv) {
   if (command == "bench") return ringid::BenchCommand(argc, argv);
   if (command == "simulate") return ringid::SimulateCommand(argc, argv);
   if (command == "diagnose") return ringid::DiagnoseCommand(argc, argv);
+  if (command == "report") return ringid::ReportCommand(argc, argv);
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }

@@ -1,0 +1,597 @@
+// ringid report: every kind of JSON report as one self-contained HTML page
+// with its figures drawn by gnuplot; the error contract; screenshots.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "tests/test_support.h"
+
+namespace {
+
+using json = nlohmann::json;
+using ringid::testing::Exists;
+using ringid::testing::ReadFile;
+using ringid::testing::Ringid;
+using ringid::testing::RunResult;
+using ringid::testing::Scratch;
+
+std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
+
+bool HaveGnuplot() { return Exists("/usr/bin/gnuplot"); }
+
+std::string Chromium() {
+  if (Exists("/usr/bin/chromium")) return "/usr/bin/chromium";
+  return std::system("command -v chromium > /dev/null 2>&1") == 0 ? "chromium" : "";
+}
+
+// `command` through the shell; exit status and stderr.
+RunResult Shell(const std::string& command) {
+  const std::string err = Scratch("shell_stderr.txt");
+  const int raw = std::system((command + " > /dev/null 2> " + err).c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(err)};
+}
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t i = text.find(what); i != std::string::npos; i = text.find(what, i + 1)) ++n;
+  return n;
+}
+
+json ReadJson(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+// A page: the report it was made from and its HTML.
+struct Made {
+  std::string report_path;
+  json report;
+  std::string html_path;
+  std::string html;
+};
+
+// Renders `report_path` (already written) with `ringid report`.
+Made Render(const std::string& report_path) {
+  Made m;
+  m.report_path = report_path;
+  m.report = ReadJson(report_path);
+  m.html_path = report_path + ".html";
+  std::remove(m.html_path.c_str());
+  const RunResult r = Ringid("report --input=" + report_path + " --output=" + m.html_path);
+  EXPECT_EQ(r.status, 0) << r.err;
+  m.html = ReadFile(m.html_path);
+  return m;
+}
+
+// Runs `ringid ARGS --output=NAME.json` (in the source tree for bench) and
+// renders the report.
+Made Make(const std::string& name, const std::string& args, bool in_source = false) {
+  const std::string out = Scratch(name + ".json");
+  std::remove(out.c_str());
+  const std::string command = (in_source ? "cd " + Source("") + " && " : std::string()) +
+                              RINGID_BINARY + " " + args + " --output=" + out;
+  const RunResult r = Shell(command);
+  EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+  return Render(out);
+}
+
+// A dataset simulated from the paper's parameters (full modal data).
+std::string Simulate(const std::string& name, const std::string& extra = "") {
+  const std::string out = Scratch(name + ".json");
+  const RunResult r =
+      Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+             " --seed=3 --set=m_a=15 " + extra + " --output=" + out + " --truth=" +
+             Scratch("truth_" + std::to_string(std::hash<std::string>()(name)) + ".json"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  return out;
+}
+
+// What every page must be: one document, self-contained, figures whole and
+// numbered, each with a caption.
+void ExpectWellFormed(const std::string& html, int figures) {
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+  EXPECT_EQ(Count(html, "<svg"), figures);
+  EXPECT_EQ(Count(html, "</svg>"), figures);
+  EXPECT_EQ(Count(html, "<figcaption>"), figures);
+  for (int i = 1; i <= figures; ++i) {
+    EXPECT_NE(html.find("Figure " + std::to_string(i) + "."), std::string::npos) << i;
+  }
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  EXPECT_EQ(html.find("<!DOCTYPE svg"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  // The only URLs are the SVG and XLink namespaces.
+  for (const std::string scheme : {"http://", "https://"}) {
+    for (size_t i = html.find(scheme); i != std::string::npos; i = html.find(scheme, i + 1)) {
+      const std::string url = html.substr(i, 40);
+      EXPECT_TRUE(url.rfind("http://www.w3.org/2000/svg", 0) == 0 ||
+                  url.rfind("http://www.w3.org/1999/xlink", 0) == 0)
+          << url;
+    }
+  }
+}
+
+// The text of the SVG figures only.
+std::string Figures(const std::string& html) {
+  std::string out;
+  for (size_t i = html.find("<svg"); i != std::string::npos; i = html.find("<svg", i + 1)) {
+    out += html.substr(i, html.find("</svg>", i) - i);
+  }
+  return out;
+}
+
+// Mode labels as the figures show them.
+std::string Shown(std::string label) {
+  std::replace(label.begin(), label.end(), '_', ' ');
+  return label;
+}
+
+// ------------------------------------------------------------ the pages
+
+Made IdentifyPaper() {
+  return Make("identify", "identify --dataset=" + Source("datasets/paper/table1.json"));
+}
+
+Made IdentifyShapes() {
+  return Make("identify_shapes", "identify --starts=1 --dataset=" + Simulate("shapes"));
+}
+
+Made Identifiability() {
+  return Make("identifiability", "identifiability --starts=1 --dataset=" + Simulate("profiled"));
+}
+
+Made Compare() {
+  return Make("compare", "compare --starts=3 --dataset=" + Source("datasets/paper/table1.json"));
+}
+
+Made Diagnose() {
+  return Make("diagnose",
+              "diagnose --dataset=" + Simulate("lug", "--effects=lug_coupling --shift=0.05"));
+}
+
+Made Predict() {
+  return Make("predict", "predict --parameters=" + Source("datasets/paper/parameters.json"));
+}
+
+Made Campaign() {
+  const std::string dir = Scratch("campaign");
+  ::mkdir(dir.c_str(), 0700);
+  const std::string dataset = Simulate("campaign/case000", "--effects=lug_coupling --shift=0.05");
+  const std::string reports = Scratch("campaign_reports");
+  const RunResult r = Ringid("diagnose --dataset=" + dir + " --output_dir=" + reports);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return Render(reports + "/campaign.json");
+}
+
+Made Bench(const std::string& suite) {
+  return Make("bench_" + suite, "bench --suite=" + suite + " --replicates=2", true);
+}
+
+// The diagnosis suite takes minutes; its report, as the suite writes it, for
+// two withheld effects.
+Made BenchDiagnosis() {
+  const json report = {
+      {"report", "bench"},
+      {"suite", "diagnosis"},
+      {"accuracy", 0.75},
+      {"false_alarms", 0},
+      {"named", 1},
+      {"no_effect_cases", 2},
+      {"absorbed_and_explained", 1},
+      {"mean_shrink_when_named", 1.0},
+      {"seconds_per_diagnosis", 1.5},
+      {"confusion",
+       {{"none", {{"none", 2}, {"lug_coupling", 0}, {"hub_compliance", 0}}},
+        {"hub_compliance", {{"none", 1}, {"lug_coupling", 0}, {"hub_compliance", 3}}},
+        {"lug_coupling", {{"none", 0}, {"lug_coupling", 4}, {"hub_compliance", 0}}}}},
+      {"cases",
+       {{{"case", "none-0"},
+         {"truth", "none"},
+         {"verdict", "none"},
+         {"correct", true},
+         {"shift", 0.0},
+         {"value", 0.0},
+         {"gap_p_value", 0.9},
+         {"indistinguishable", json::array()},
+         {"absorbed_explained", false},
+         {"seconds", 1.2}}}}};
+  const std::string path = Scratch("bench_diagnosis.json");
+  std::ofstream(path) << report.dump(2);
+  return Render(path);
+}
+
+// --------------------------------------------------------------- tests
+
+TEST(HtmlReportTest, IdentifyOfThePaperDrawsTheFrequencies) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = IdentifyPaper();
+  // Table 1 has no shapes and leaves 9 directions free (rank 7 of 16): no
+  // MAC and no standard deviation, so only the frequency figure.
+  for (const json& mode : m.report["modes"]) ASSERT_FALSE(mode.contains("mac_all"));
+  ExpectWellFormed(m.html, 1);
+  EXPECT_NE(m.html.find("No MAC figure"), std::string::npos);
+  EXPECT_NE(m.html.find("No interval figure"), std::string::npos);
+  const std::string svg = Figures(m.html);
+  ASSERT_EQ(m.report["modes"].size(), 7u);
+  for (const json& mode : m.report["modes"]) {
+    EXPECT_NE(m.html.find(mode["label"].get<std::string>()), std::string::npos);
+    EXPECT_NE(svg.find(">" + Shown(mode["label"]) + "<"), std::string::npos) << mode["label"];
+  }
+  for (const auto& [name, p] : m.report["parameters"].items()) {
+    EXPECT_NE(m.html.find("<td>" + name + "</td>"), std::string::npos) << name;
+  }
+  EXPECT_NE(svg.find("frequency (Hz)"), std::string::npos);
+  EXPECT_NE(svg.find("model − measured (Hz)"), std::string::npos);
+}
+
+TEST(HtmlReportTest, IdentifyWithShapesDrawsMacAndIntervals) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = IdentifyShapes();
+  int with_std = 0;
+  for (const auto& [name, p] : m.report["parameters"].items()) {
+    with_std += p["free"].get<bool>() && p["std"].is_number();
+  }
+  ASSERT_GT(with_std, 0);
+  ExpectWellFormed(m.html, 3);
+  const std::string svg = Figures(m.html);
+  // Every MAC of the first mode is printed in its cell, to two decimals.
+  const json& mac = m.report["modes"][0]["mac_all"];
+  ASSERT_FALSE(mac.empty());
+  for (const auto& [label, value] : mac.items()) {
+    char cell[16];
+    std::snprintf(cell, sizeof cell, "%.2f", value.get<double>());
+    EXPECT_NE(svg.find(std::string(">") + cell + "<"), std::string::npos) << label << " " << cell;
+  }
+  for (const auto& [name, p] : m.report["parameters"].items()) {
+    if (p["free"].get<bool>() && p["std"].is_number()) {
+      EXPECT_NE(svg.find(">" + name + "<"), std::string::npos) << name;
+    }
+  }
+  EXPECT_NE(svg.find("interval / value (log scale)"), std::string::npos);
+}
+
+TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Identifiability();
+  ExpectWellFormed(m.html, 3);
+  const std::string svg = Figures(m.html);
+  for (const auto& [name, p] : m.report["parameters"].items()) {
+    EXPECT_NE(m.html.find("<td>" + name + "</td>"), std::string::npos) << name;
+    if (p["profile_curve"].size() >= 2) {  // a panel titled with its name
+      EXPECT_NE(svg.find(">" + name + "<"), std::string::npos) << name;
+    }
+  }
+  // ringid's profiles are in Δχ² = 2 Δcost, with the 95 % threshold 3.84.
+  EXPECT_NE(svg.find("Δχ² = 2 Δcost"), std::string::npos);
+  EXPECT_NE(m.html.find("threshold 3.84"), std::string::npos);
+  EXPECT_NE(svg.find("rank " + std::to_string(m.report["rank"].get<int>()) + " of " +
+                     std::to_string(m.report["coordinates"].size())),
+            std::string::npos);
+}
+
+TEST(HtmlReportTest, CompareDrawsCostsAndConvergence) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Compare();
+  ExpectWellFormed(m.html, 2);
+  const std::string svg = Figures(m.html);
+  EXPECT_NE(svg.find("Levenberg–Marquardt"), std::string::npos);
+  EXPECT_NE(svg.find("Downhill Simplex"), std::string::npos);
+  // With histories, one line per start and method.
+  ASSERT_EQ(m.report["lm"]["histories"].size(), 3u);
+  EXPECT_NE(m.html.find("one line per start"), std::string::npos);
+  EXPECT_NE(svg.find("model evaluations"), std::string::npos);
+}
+
+TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Diagnose();
+  const json& verdict = m.report["verdict"];
+  ExpectWellFormed(m.html, 3);
+  const std::string svg = Figures(m.html);
+  for (const json& w : m.report["where"]) {
+    EXPECT_NE(m.html.find("<td>" + w["label"].get<std::string>() + "</td>"), std::string::npos);
+    EXPECT_NE(svg.find(">" + Shown(w["label"]) + "<"), std::string::npos) << w["label"];
+  }
+  for (const json& f : m.report["ranking"]) {
+    if (!f.contains("shrink")) continue;  // not fitted: not drawn
+    EXPECT_NE(svg.find(">" + f["effect"].get<std::string>() + "<"), std::string::npos)
+        << f["effect"];
+  }
+  EXPECT_NE(m.html.find(verdict["explanation"].get<std::string>()), std::string::npos);
+  if (verdict.contains("where_after")) {  // before and after, one panel each
+    EXPECT_NE(svg.find("after: with " + verdict["effect"].get<std::string>()), std::string::npos);
+  }
+}
+
+TEST(HtmlReportTest, PredictIsTablesOnly) {
+  // No figure, so no gnuplot needed.
+  const Made m = Predict();
+  ExpectWellFormed(m.html, 0);
+  for (const json& mode : m.report["modes"]) {
+    EXPECT_NE(m.html.find("<td>" + mode["label"].get<std::string>() + "</td>"), std::string::npos);
+  }
+  EXPECT_NE(m.html.find("72.133"), std::string::npos);  // Table 3's vertical mode, 72.1 Hz
+}
+
+TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGaps) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Campaign();
+  ExpectWellFormed(m.html, 1);
+  EXPECT_NE(Figures(m.html).find(">case000<"), std::string::npos);
+  EXPECT_NE(m.html.find(m.report["datasets"][0]["verdict"].get<std::string>()), std::string::npos);
+}
+
+TEST(HtmlReportTest, BenchPaperDrawsTable3) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Bench("paper");
+  ExpectWellFormed(m.html, 1);
+  const std::string svg = Figures(m.html);
+  for (const json& row : m.report["table3"]) {
+    EXPECT_NE(svg.find(">" + Shown(row["label"]) + "<"), std::string::npos) << row["label"];
+  }
+  EXPECT_NE(svg.find("model − paper (Hz)"), std::string::npos);
+}
+
+TEST(HtmlReportTest, BenchConditioningDrawsRankPerVariant) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Bench("conditioning");
+  ExpectWellFormed(m.html, 1);
+  const std::string svg = Figures(m.html);
+  for (const json& v : m.report["variants"]) {
+    EXPECT_NE(svg.find(">" + v["data"].get<std::string>() + "<"), std::string::npos) << v["data"];
+  }
+  EXPECT_NE(svg.find(">" + std::to_string(m.report["variants"][0]["classes"].size()) + " free<"),
+            std::string::npos);
+}
+
+TEST(HtmlReportTest, BenchSyntheticDrawsCoverage) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = Bench("synthetic");
+  ExpectWellFormed(m.html, 1);
+  const std::string svg = Figures(m.html);
+  for (const json& t : m.report["tires"]) {
+    EXPECT_NE(svg.find(">" + t["tire"].get<std::string>() + "<"), std::string::npos) << t["tire"];
+  }
+  EXPECT_NE(svg.find("nominal 95 %"), std::string::npos);
+}
+
+TEST(HtmlReportTest, BenchDiagnosisDrawsTheConfusionCounts) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = BenchDiagnosis();
+  ExpectWellFormed(m.html, 1);
+  const std::string svg = Figures(m.html);
+  // Nine cells, each count printed once in the heat map.
+  for (const std::string count : {"1", "2", "3", "4"}) {
+    EXPECT_EQ(Count(svg, ">" + count + "<"), 1) << count;
+  }
+  EXPECT_EQ(Count(svg, ">0<"), 5);
+  for (const std::string effect : {"none", "hub_compliance", "lug_coupling"}) {
+    EXPECT_GE(Count(svg, ">" + effect + "<"), 2) << effect;  // a row and a column
+  }
+}
+
+TEST(HtmlReportTest, FiguresDirHoldsEachFigureAsAFile) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const Made m = IdentifyPaper();
+  const std::string dir = Scratch("figures");
+  ::mkdir(dir.c_str(), 0700);
+  const RunResult r = Ringid("report --input=" + m.report_path + " --output=" + Scratch("f.html") +
+                             " --figures_dir=" + dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string svg = ReadFile(dir + "/identify-frequencies.svg");
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find(">rotation in phase<"), std::string::npos);
+  const RunResult bad =
+      Ringid("report --input=" + m.report_path + " --output=" + Scratch("g.html") +
+             " --figures_dir=/nonexistent-dir");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_FALSE(Exists(Scratch("g.html")));
+}
+
+TEST(HtmlReportTest, BadInputIsOneLineExitTwoAndNoOutput) {
+  const std::string dir = Scratch("");
+  const std::string good = dir + "good.json";
+  std::ofstream(good) << R"({"report": "predict", "modes": []})";
+  const struct {
+    const char* name;
+    const char* text;
+    const char* field;
+  } files[] = {
+      {"malformed.json", "{\"report\": \"identify\",", ""},
+      {"empty.json", "", ""},
+      {"not_a_report.json", R"({"format": "ringid-modal-dataset/1", "modes": []})", "report"},
+      {"unknown_kind.json", R"({"report": "frobnicate"})", "report"},
+      {"array.json", "[1, 2, 3]", ""},
+      {"unknown_suite.json", R"({"report": "bench", "suite": "speed"})", "suite"},
+      {"deep.json", "", ""}};
+  const std::string out = dir + "never.html";
+  std::vector<std::pair<std::string, std::string>> cases;  // arguments, what stderr names
+  for (const auto& f : files) {
+    const std::string path = dir + f.name;
+    std::ofstream(path) << (std::string(f.name) == "deep.json"
+                                ? std::string(200, '[') + std::string(200, ']')
+                                : std::string(f.text));
+    cases.push_back({"report --input=" + path + " --output=" + out, path + ": " + f.field});
+  }
+  cases.push_back({"report --input=" + dir + "missing.json --output=" + out, dir + "missing.json"});
+  cases.push_back({"report --input=" + good + " --output=" + out + " --bogus=1", "--bogus"});
+  cases.push_back({"report --input=" + good, "--output"});
+  cases.push_back({"report --output=" + out, "--input"});
+  cases.push_back(
+      {"report --input=" + good + " --output=/nonexistent-dir/x.html", "/nonexistent-dir/x.html"});
+  for (const auto& [args, named] : cases) {
+    std::remove(out.c_str());
+    const RunResult r = Ringid(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << args;
+  }
+  // An existing output is left as it was.
+  std::ofstream(out) << "keep";
+  EXPECT_EQ(Ringid("report --input=" + dir + "malformed.json --output=" + out).status, 2);
+  EXPECT_EQ(ReadFile(out), "keep");
+}
+
+TEST(HtmlReportTest, MissingOrFailingGnuplotIsExitOneAndNoOutput) {
+  const std::string dir = Scratch("");
+  const std::string report = dir + "needs_figures.json";
+  std::ofstream(report) << R"({"report": "identify", "modes": [{"label": "vertical",
+      "measured_hz": 74.5, "measured_sigma_hz": 0.14, "model_hz": 74.4}]})";
+  const std::string out = dir + "no_gnuplot.html";
+  std::remove(out.c_str());
+  const std::string run =
+      std::string(RINGID_BINARY) + " report --input=" + report + " --output=" + out;
+  RunResult r = Shell("PATH=/nonexistent " + run);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("gnuplot not found"), std::string::npos) << r.err;
+  EXPECT_FALSE(Exists(out));
+  // A gnuplot that fails.
+  const std::string bin = Scratch("fake_bin");
+  ::mkdir(bin.c_str(), 0700);
+  std::ofstream(bin + "/gnuplot") << "#!/bin/sh\necho 'line 1: broken' >&2\nexit 3\n";
+  ::chmod((bin + "/gnuplot").c_str(), 0700);
+  r = Shell("PATH=" + bin + " " + run);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("gnuplot failed: line 1: broken"), std::string::npos) << r.err;
+  EXPECT_FALSE(Exists(out));
+  // A report without figures needs no gnuplot.
+  std::ofstream(dir + "predict.json") << R"({"report": "predict", "modes": []})";
+  r = Shell("PATH=/nonexistent " + std::string(RINGID_BINARY) + " report --input=" + dir +
+            "predict.json --output=" + out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(Exists(out));
+}
+
+TEST(HtmlReportTest, SparseAndOddReportsRenderWhatIsThere) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string reports[] = {
+      R"({"report": "identify"})",
+      R"({"report": "identify", "modes": "x", "parameters": [1], "covariance": null})",
+      R"({"report": "identify", "modes": [null, {"label": 3, "measured_hz": null, "model_hz": "a"}],
+          "parameters": {"k": {"value": 0, "std": 1, "free": true}, "m": null}})",
+      R"({"report": "identifiability", "correlation": [[1, null], [null]], "coordinates": ["a", "b"],
+          "singular_values": [0, -1, null], "rank": null,
+          "parameters": {"a": {"profile_curve": [[1, 0], [2, "x"], [3], [-1, 5]], "profile_95": [null, 7]}}})",
+      R"({"report": "compare", "lm": {"final_costs": [null, -1, 0, 1e-300], "histories": [[[1, null]], "x"]},
+          "simplex": {"evaluations": [1, 2], "final_costs": [3]}})",
+      R"({"report": "diagnose", "where": [{"label": 5, "frequency_sigma": "a"}, {}],
+          "verdict": {"effect": null, "where_after": [null]}, "ranking": [{"effect": "x"}]})",
+      R"({"report": "campaign", "command": "diagnose", "columns": [1],
+          "datasets": [{"dataset": "a", "gap_before": null}, 7]})",
+      R"({"report": "predict", "modes": [{"label": ["x"]}]})",
+      R"({"report": "bench", "suite": "paper", "table3": [{}]})",
+      R"({"report": "bench", "suite": "synthetic", "tires": [{"intervals": 0}]})",
+      R"({"report": "bench", "suite": "conditioning", "variants": [{"classes": 5}]})",
+      R"({"report": "bench", "suite": "diagnosis", "confusion": {"none": 3}})",
+      R"({"table3": []})"};  // a bench report written before it named itself
+  int n = 0;
+  for (const std::string& text : reports) {
+    const std::string path = Scratch("sparse_" + std::to_string(n++) + ".json");
+    std::ofstream(path) << text;
+    const std::string out = path + ".html";
+    const RunResult r = Ringid("report --input=" + path + " --output=" + out);
+    EXPECT_EQ(r.status, 0) << text << ": " << r.err;
+    const std::string html = ReadFile(out);
+    EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u) << text;
+    EXPECT_EQ(Count(html, "<svg"), Count(html, "</svg>")) << text;
+  }
+}
+
+TEST(HtmlReportTest, TextFromTheReportIsEscaped) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const json report = {{"report", "identify"},
+                       {"dataset", "<script>alert(1)</script>"},
+                       {"message", "a & b"},
+                       {"modes",
+                        {{{"label", "it's `touch /tmp/ringid-pwned` <b>&"},
+                          {"measured_hz", 50.0},
+                          {"measured_sigma_hz", 0.1},
+                          {"model_hz", 50.05}}}}};
+  const std::string path = Scratch("escaped.json");
+  std::ofstream(path) << report.dump();
+  std::remove("/tmp/ringid-pwned");
+  const Made m = Render(path);
+  ExpectWellFormed(m.html, 1);
+  EXPECT_FALSE(Exists("/tmp/ringid-pwned"));
+  EXPECT_NE(m.html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(m.html.find("a &amp; b"), std::string::npos);
+  EXPECT_EQ(m.html.find("<b>&"), std::string::npos);
+  EXPECT_NE(Figures(m.html).find("&lt;b>&amp;"), std::string::npos);  // the tic label in the SVG
+}
+
+// ------------------------------------------------------------ screenshots
+
+// Renders `m` in headless Chromium and checks a real picture came out.
+// RINGID_SCREENS=DIR keeps the PNG there as KIND.png.
+void Screenshot(const std::string& kind, const Made& m) {
+  const std::string chromium = Chromium();
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed";
+  const std::string png = Scratch(kind + ".png");
+  std::remove(png.c_str());
+  const RunResult r = Shell("timeout 120 " + chromium +
+                            " --headless --no-sandbox --disable-gpu --hide-scrollbars"
+                            " --user-data-dir=" +
+                            Scratch("chromium-" + kind) + " --screenshot=" + png +
+                            " --window-size=1200,3000 file://" + m.html_path);
+  ASSERT_TRUE(Exists(png)) << r.err;
+  const std::string bytes = ReadFile(png);
+  ASSERT_GT(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  const auto be32 = [&](size_t at) {
+    return (static_cast<unsigned char>(bytes[at]) << 24) |
+           (static_cast<unsigned char>(bytes[at + 1]) << 16) |
+           (static_cast<unsigned char>(bytes[at + 2]) << 8) |
+           static_cast<unsigned char>(bytes[at + 3]);
+  };
+  EXPECT_EQ(be32(16), 1200u);  // IHDR width and height
+  EXPECT_EQ(be32(20), 3000u);
+  // A blank 1200 x 3000 page compresses to a few kB; tables and figures do not.
+  EXPECT_GT(bytes.size(), 30000u) << png;
+  if (const char* keep = std::getenv("RINGID_SCREENS")) {
+    std::ifstream in(png, std::ios::binary);
+    std::ofstream(std::string(keep) + "/" + kind + ".png", std::ios::binary) << in.rdbuf();
+  }
+}
+
+struct Kind {
+  const char* name;
+  std::function<Made()> make;
+};
+
+void PrintTo(const Kind& k, std::ostream* os) { *os << k.name; }
+
+class ScreenshotTest : public ::testing::TestWithParam<Kind> {};
+
+TEST_P(ScreenshotTest, PageRendersInChromium) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (Chromium().empty()) GTEST_SKIP() << "chromium is not installed";
+  Screenshot(GetParam().name, GetParam().make());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryKind, ScreenshotTest,
+    ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identifiability", Identifiability},
+                      Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
+                      Kind{"predict", Predict}, Kind{"campaign", Campaign},
+                      Kind{"bench_paper", [] { return Bench("paper"); }},
+                      Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
+                      Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
+                      Kind{"bench_diagnosis", BenchDiagnosis}),
+    [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
+
+}  // namespace
