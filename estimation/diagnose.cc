@@ -421,6 +421,12 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
       }
     }
     if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
+    if (r->held_out_before && best->held_out_chi2 && *r->held_out_before > 0) {
+      why_text << "; on held-out modes (each predicted from a fit without it) the misfit falls "
+               << "from chi-square " << *r->held_out_before << " to " << *best->held_out_chi2 << " ("
+               << static_cast<int>(std::round(100 * (1 - *best->held_out_chi2 / *r->held_out_before)))
+               << " % less)";
+    }
     for (size_t i = 0; i < before.size() && i < best->mode_chi2.size(); ++i) {
       r->mode_shrink.push_back(before[i] > 0 ? 1 - best->mode_chi2[i] / before[i] : 0);
     }

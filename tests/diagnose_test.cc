@@ -15,7 +15,8 @@ namespace {
 
 using testing::PaperIdentified;
 
-DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed) {
+DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
+                                 bool held_out = false) {
   Parameters truth = PaperIdentified();
   truth[Param::m_a] = 15;
   std::vector<const Effect*> withheld;
@@ -30,7 +31,7 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
   std::string why;
   EXPECT_TRUE(Simulate(RigidRingModel(withheld), truth, SimulateOptions{}, &rng, &d, &why)) << why;
   DiagnoseOptions o;
-  o.held_out = false;
+  o.held_out = held_out;
   DiagnosisReport r;
   Diagnose(d, o, &r);
   EXPECT_TRUE(r.success) << r.message;
@@ -50,6 +51,18 @@ TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
   EXPECT_EQ(r.verdict, "lug_coupling") << r.explanation;
   EXPECT_GT(r.ranking.front().shrink, 0.8);
   EXPECT_TRUE(r.significant);
+}
+
+// Held-out modes, each predicted from a fit without it: the withheld effect
+// predicts them far better than the re-calibrated baseline.
+TEST(DiagnoseTest, TheEffectPredictsHeldOutModes) {
+  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, true);
+  ASSERT_EQ(r.verdict, "lug_coupling") << r.explanation;
+  ASSERT_TRUE(r.held_out_before.has_value());
+  const EffectFit& lug = r.ranking.front();
+  ASSERT_TRUE(lug.held_out_chi2.has_value());
+  EXPECT_LT(*lug.held_out_chi2, 0.1 * *r.held_out_before);
+  EXPECT_NE(r.explanation.find("held-out modes"), std::string::npos) << r.explanation;
 }
 
 TEST(DiagnoseTest, NamesASoftHub) {
