@@ -5,6 +5,8 @@
 # in tests/fuzz/corpus.
 # Usage: bash scripts/fuzz.sh [SECONDS [TARGET...]]
 #   e.g. bash scripts/fuzz.sh 3600 identify   (an hour on the identify target)
+# FUZZ_SANITIZERS=undefined drops ASan for long runs (about 3x the executions;
+# memory errors are then caught only as crashes), building into build-fuzz-undefined/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -18,21 +20,24 @@ bash scripts/install_deps.sh clang libclang-rt-14-dev
 # Coverage is not traced inside Eigen, Ceres and the standard library
 # (tests/fuzz/coverage_ignorelist.txt): their inner loops took 55 % of an
 # identify execution. ASan and UBSan still check them.
-flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -g -O2 -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
+sanitizers=${FUZZ_SANITIZERS:-address,undefined}
+build=build-fuzz
+[ "$sanitizers" = address,undefined ] || build=build-fuzz-${sanitizers//,/-}
+flags="-fsanitize=fuzzer-no-link,$sanitizers -fno-sanitize-recover=all -g -O2 -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
 flags+=" -fsanitize-coverage-ignorelist=$PWD/tests/fuzz/coverage_ignorelist.txt"
-cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRINGID_BUILD_TESTS=OFF -DRINGID_BUILD_BENCHMARKS=OFF -DRINGID_BUILD_FUZZERS=ON \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > /dev/null
-cmake --build build-fuzz -j"$(nproc)" --target dataset_fuzzer model_fuzzer identify_fuzzer
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$sanitizers" > /dev/null
+cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer model_fuzzer identify_fuzzer
 export ASAN_OPTIONS=detect_leaks=1
 for target in $targets; do
-  work=build-fuzz/corpus-$target
+  work=$build/corpus-$target
   mkdir -p "$work"
   cp tests/fuzz/corpus/$target/* "$work"/ 2>/dev/null || true
   [ "$target" = dataset ] && cp datasets/paper/*.json "$work"/
   echo "fuzzing $target for ${seconds}s" >&2
   # The last status line carries the executions reached over all workers.
-  ./build-fuzz/tests/fuzz/${target}_fuzzer "$work" -fork="$(nproc)" -max_total_time="$seconds" \
+  ./$build/tests/fuzz/${target}_fuzzer "$work" -fork="$(nproc)" -max_total_time="$seconds" \
     -max_len=8192 -timeout=10 -rss_limit_mb=2048 2>&1 \
     | grep -E "^#[0-9]+:|ERROR|SUMMARY|crash-|timeout-|oom-" | tail -3 || true
   # libFuzzer leaves crash-*/timeout-*/oom-* files behind on a finding.
