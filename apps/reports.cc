@@ -324,6 +324,10 @@ bool CanWrite(const std::string& path, std::string* error) {
   return true;
 }
 
+std::string JsonText(const nlohmann::json& report) {
+  return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 bool WriteFileAtomically(const std::string& path, const std::string& text,
                          std::string* error) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());

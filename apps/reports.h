@@ -27,6 +27,10 @@ nlohmann::json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset
 nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,
                                 const std::string& description);
 
+// A report as text. Paths and names from the command line need not be UTF-8:
+// invalid bytes become U+FFFD instead of an exception.
+std::string JsonText(const nlohmann::json& report);
+
 // Writes via a temporary file beside `path` and a rename: a reader never sees
 // a half-written report. False with a one-line message on failure.
 bool WriteFileAtomically(const std::string& path, const std::string& text,

@@ -172,7 +172,7 @@ bool ParseEffects(std::vector<const Effect*>* effects, std::string* error) {
 
 int Write(const std::string& path, const nlohmann::json& report) {
   std::string error;
-  if (!WriteFileAtomically(path, report.dump(2) + "\n", &error)) {
+  if (!WriteFileAtomically(path, JsonText(report), &error)) {
     return Usage(error);
   }
   return kExitOk;
@@ -274,7 +274,7 @@ struct CampaignItem {
   nlohmann::json row;  // the summary's columns, "dataset" first
   bool ok = false;
 };
-using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
+using CampaignWork = std::function<CampaignItem(const Dataset&)>;
 
 std::string Cell(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
@@ -327,8 +327,8 @@ int RunCampaign(const std::string& command, const std::vector<std::string>& colu
   {
     Progress progress(command, n);
     ParallelFor(n, FLAGS_jobs, &progress, [&](int i) {
-      items[i] = work(datasets[i], files[i]);
-      WriteFileAtomically(reports[i], items[i].report.dump(2) + "\n", &write_errors[i]);
+      items[i] = work(datasets[i]);
+      WriteFileAtomically(reports[i], JsonText(items[i].report), &write_errors[i]);
     });
   }
   const double seconds =
@@ -380,7 +380,7 @@ int IdentifyCommand(int argc, char** argv) {
           ParameterSetup setup;
           return ParameterSetup::Build(model, d, &setup, why);
         },
-        [&](const Dataset& d, const std::string&) {
+        [&](const Dataset& d) {
           IdentifySummary s;
           Identify(model, d, o, &s);
           CampaignItem item;
@@ -496,14 +496,14 @@ int SimulateCommand(int argc, char** argv) {
   if (FLAGS_shift != 0) {
     if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) return Usage("--shift: must be in (0, 0.5)");
     if (effects.size() != 1) return Usage("--shift: needs exactly one effect in --effects");
-    truth[SizeParameter(*effects[0])] = 0;  // set below
+    truth[effects[0]->size()] = 0;  // set below
   }
   const RigidRingModel model(effects);
   for (Param q : model.parameters()) {
     if (!truth.IsSet(q)) return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
   }
   if (FLAGS_shift != 0) {
-    const Param p = SizeParameter(*effects[0]);
+    const Param p = effects[0]->size();
     truth[p] = ValueForShift(truth, *effects[0], p, FLAGS_shift);
     if (!(LargestShift(truth, *effects[0], p, truth[p]) < 2 * FLAGS_shift)) {
       std::fprintf(stderr, "ringid: simulate: %s cannot shift a frequency by %g\n",
@@ -556,7 +556,7 @@ int DiagnoseCommand(int argc, char** argv) {
           ParameterSetup setup;
           return ParameterSetup::Build(RigidRingModel(), d, &setup, why);
         },
-        [&](const Dataset& d, const std::string&) {
+        [&](const Dataset& d) {
           DiagnosisReport r;
           Diagnose(d, o, &r);
           CampaignItem item;

@@ -399,7 +399,8 @@ std::string DatasetToJson(const Dataset& d) {
     if (m.shape_sigma) o["shape_sigma"] = *m.shape_sigma;
     j["modes"].push_back(o);
   }
-  return j.dump(2) + "\n";
+  // Names may come from file names, which need not be UTF-8.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace ringid

@@ -108,6 +108,25 @@ TEST(CampaignTest, ABadDatasetStopsTheCampaignBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
+// File names need not be UTF-8; the reports that name them are still
+// written whole (the byte becomes U+FFFD), never an uncaught exception.
+TEST(CampaignTest, ANonUtf8FileNameIsReportedNotFatal) {
+  const std::string dir = Scratch("utf8");
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/data");
+  const std::string name = dir + "/data/tire\xff";
+  const RunResult sim = Ringid("simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
+                               " --output='" + name + ".json' --truth='" + name + "-truth.txt'");
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const RunResult r = Ringid("identify --dataset=" + dir + "/data --output_dir=" + dir + "/out");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json summary = Load(dir + "/out/campaign.json");
+  ASSERT_EQ(summary["datasets"].size(), 1u);
+  EXPECT_NE(summary["datasets"][0]["dataset"].get<std::string>().find("tire\xef\xbf\xbd"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(fs::path(dir + "/out/tire\xff.json")));
+}
+
 TEST(CampaignTest, BadCampaignFlagsAreRefused) {
   const std::string data = SourcePath("datasets/paper/table1.json");
   const std::string out = Scratch("flags-out");
