@@ -226,7 +226,7 @@ SuiteResult Diagnosis(const SuiteOptions& o) {
   if (!LoadPaper(o, &table1, &paper, &r.error)) return r;
   // The parameter each effect is withheld through.
   std::vector<std::pair<const char*, Param>> effects = {{"none", Param::m_b}};
-  for (const Effect* e : EffectCatalogue()) effects.push_back({e->name(), SizeParameter(*e)});
+  for (const Effect* e : EffectCatalogue()) effects.push_back({e->name(), e->size()});
   std::vector<std::string> names;
   for (const auto& e : effects) names.push_back(e.first);
   std::map<std::string, std::map<std::string, int>> confusion;

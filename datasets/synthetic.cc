@@ -60,16 +60,6 @@ void SetEngineerPriors(const Parameters& truth, double prior_spread,
   }
 }
 
-Param SizeParameter(const Effect& effect) {
-  const std::string name = effect.name();
-  if (name == "anisotropic_sidewall") return Param::dk_bpsi;
-  if (name == "hub_compliance") return Param::s_h;
-  if (name == "contact_yaw_stiffness") return Param::k_cpsi;
-  if (name == "axle_torsion") return Param::k_atheta;
-  if (name == "sensor_mass") return Param::dm;
-  return Param::k_xy;  // lug_coupling
-}
-
 double LargestShift(const Parameters& truth, const Effect& effect, Param p, double value) {
   const ModalSolution base = RigidRingModel().Solve(truth);
   Parameters q = truth;

@@ -38,11 +38,6 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
 void SetEngineerPriors(const Parameters& truth, double prior_spread,
                        std::mt19937_64* rng, Dataset* dataset);
 
-// The parameter an effect's size is set through in withheld-effect data
-// (anisotropic_sidewall: dk_bpsi; hub_compliance: s_h; contact_yaw_stiffness:
-// k_cpsi; axle_torsion: k_atheta; sensor_mass: dm; lug_coupling: k_xy).
-Param SizeParameter(const Effect& effect);
-
 // The largest relative frequency shift over the contract's modes when `p` of
 // `effect` is set to `value` (infinity when a mode is lost).
 double LargestShift(const Parameters& truth, const Effect& effect, Param p, double value);

@@ -200,22 +200,13 @@ bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& 
   return true;
 }
 
-// The likelihood ratio by which the re-calibrated baseline misses noise-free
-// data of the calibrated point with `effect`'s parameter `p` at `value`: what
-// the diagnosis sees of that effect, noise aside. The re-calibration starts
-// at the calibrated point and keeps the diagnosis' prior.
-double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifySummary& calibrated,
-                    const Dataset& warm, const DiagnoseOptions& o) {
-  Parameters truth = calibrated.parameters;
-  for (Param q : effect.parameters()) {
-    if (q == p) truth[q] = value;
-    else if (warm.known.count(q)) truth[q] = warm.known.at(q);
-    else truth[q] = Info(q).domain == Domain::kPositive ? TypicalScale(q) : 0.0;
-  }
+// The cost at which the baseline, re-calibrated from the calibrated point
+// with the diagnosis' prior, fits noise-free data of `truth` under `model`:
+// what the diagnosis would see of the difference, noise aside.
+double RecalibratedCost(const ModalModel& model, const Parameters& truth, const Dataset& warm,
+                        const DiagnoseOptions& o) {
   Dataset data;
-  if (!Remeasure(RigidRingModel({&effect}), truth, warm, o.fit.residuals.shape_convention, &data)) {
-    return INFINITY;
-  }
+  if (!Remeasure(model, truth, warm, o.fit.residuals.shape_convention, &data)) return INFINITY;
   const RigidRingModel baseline;
   ParameterSetup setup;
   std::string why;
@@ -228,12 +219,25 @@ double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifyS
   return fit.cost;
 }
 
+// RecalibratedCost of the calibrated point with `effect`'s parameter `p` at
+// `value` (its other parameters known, or at a typical value).
+double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifySummary& calibrated,
+                    const Dataset& warm, const DiagnoseOptions& o) {
+  Parameters truth = calibrated.parameters;
+  for (Param q : effect.parameters()) {
+    if (q == p) truth[q] = value;
+    else if (warm.known.count(q)) truth[q] = warm.known.at(q);
+    else truth[q] = Info(q).domain == Domain::kPositive ? TypicalScale(q) : 0.0;
+  }
+  return RecalibratedCost(RigidRingModel({&effect}), truth, warm, o);
+}
+
 // The linearised detectable size `linear` of `p`, checked against the
 // re-calibrated baseline (AbsorbedCost) and moved by secant steps in log-log
 // until the likelihood ratio is within a factor 1.5 of `detect`. A column
 // outside the baseline's span can be absorbed at second order (a compliant
 // hub against softer stiffnesses): the linear size then promises too much.
-// `zero` is AbsorbedCost at size 0, where every effect equals the baseline.
+// `zero` is RecalibratedCost of the calibrated baseline itself.
 double CheckedDetectable(const Effect& effect, Param p, double linear, const IdentifySummary& calibrated,
                          const Dataset& warm, const DiagnoseOptions& o, double zero, double detect) {
   if (!std::isfinite(linear) || !(linear > 0) || !std::isfinite(zero)) return linear;
@@ -433,8 +437,7 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
   }
   if (r->verdict == "none") {
     // The sizes the explanation promises, checked beyond first order.
-    const Effect* any = EffectCatalogue().front();
-    const double zero = AbsorbedCost(*any, any->parameters().front(), 0.0, r->baseline, warm, o);
+    const double zero = RecalibratedCost(baseline, r->baseline.parameters, warm, o);
     for (EffectFit& f : r->ranking) {
       const Effect* effect = FindEffect(f.effect);
       for (auto& [name, v] : f.minimal_detectable) {

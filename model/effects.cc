@@ -8,6 +8,7 @@ using L = ModeLabel;
 // k_bz = k_bx + dk_bz and k_bpsi = k_bgamma + dk_bpsi when the ties hold.
 class AnisotropicSidewall final : public Effect {
   const char* name() const override { return "anisotropic_sidewall"; }
+  Param size() const override { return Param::dk_bpsi; }
   std::vector<Param> parameters() const override {
     return {Param::dk_bz, Param::dk_bpsi};
   }
@@ -21,6 +22,7 @@ class AnisotropicSidewall final : public Effect {
 // already acts on x_b - x_a etc., so freeing the hub is all this needs.
 class HubCompliance final : public Effect {
   const char* name() const override { return "hub_compliance"; }
+  Param size() const override { return Param::s_h; }
   std::vector<Param> parameters() const override {
     return {Param::s_h, Param::m_a};
   }
@@ -41,6 +43,7 @@ class HubCompliance final : public Effect {
 // S[psi_b, psi_b] += k_cpsi.
 class ContactYawStiffness final : public Effect {
   const char* name() const override { return "contact_yaw_stiffness"; }
+  Param size() const override { return Param::k_cpsi; }
   std::vector<Param> parameters() const override { return {Param::k_cpsi}; }
   void Apply(const Parameters& p, MechanicalSystem* s) const override {
     s->AddSpring(L::kYaw, p[Param::k_cpsi], {{Dof::kPsiB, 1}});
@@ -50,6 +53,7 @@ class ContactYawStiffness final : public Effect {
 // K[theta_a, theta_a] += k_atheta.
 class AxleTorsion final : public Effect {
   const char* name() const override { return "axle_torsion"; }
+  Param size() const override { return Param::k_atheta; }
   std::vector<Param> parameters() const override { return {Param::k_atheta}; }
   void Apply(const Parameters& p, MechanicalSystem* s) const override {
     s->AddSpring(L::kRotationInPhase, p[Param::k_atheta], {{Dof::kThetaA, 1}});
@@ -59,6 +63,7 @@ class AxleTorsion final : public Effect {
 // dm spread round the tread at r_e0: translation dm, spin dm r^2, tilt dm r^2/2.
 class SensorMass final : public Effect {
   const char* name() const override { return "sensor_mass"; }
+  Param size() const override { return Param::dm; }
   std::vector<Param> parameters() const override { return {Param::dm}; }
   void Apply(const Parameters& p, MechanicalSystem* s) const override {
     const double dm = p[Param::dm];
@@ -73,6 +78,7 @@ class SensorMass final : public Effect {
 // K[x_b, y_b] = K[y_b, x_b] = k_xy: the planes become one coupled system.
 class LugCoupling final : public Effect {
   const char* name() const override { return "lug_coupling"; }
+  Param size() const override { return Param::k_xy; }
   std::vector<Param> parameters() const override { return {Param::k_xy}; }
   void Apply(const Parameters& p, MechanicalSystem* s) const override {
     s->AddStiffness(std::nullopt, Dof::kXb, Dof::kYb, p[Param::k_xy]);

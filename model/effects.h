@@ -17,6 +17,8 @@ class Effect {
   virtual const char* name() const = 0;
   // The parameters the effect adds (baseline value 0 unless noted).
   virtual std::vector<Param> parameters() const = 0;
+  // The parameter that sizes the effect: at 0 the model is the baseline.
+  virtual Param size() const = 0;
   virtual void Apply(const Parameters& p, MechanicalSystem* s) const = 0;
 };
 
