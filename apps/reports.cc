@@ -330,18 +330,33 @@ std::string JsonText(const nlohmann::json& report) {
 
 bool WriteFileAtomically(const std::string& path, const std::string& text,
                          std::string* error) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) {
+  return WriteFilesAtomically({{path, text}}, error);
+}
+
+bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
+                          std::string* error) {
+  std::vector<std::string> tmps;
+  auto fail = [&](const std::string& path) {
     *error = path + ": cannot write: " + std::strerror(errno);
+    for (const std::string& t : tmps) std::remove(t.c_str());
     return false;
+  };
+  for (const auto& [path, text] : files) {
+    tmps.push_back(path + ".tmp." + std::to_string(::getpid()));
+    std::FILE* f = std::fopen(tmps.back().c_str(), "wb");
+    if (!f) {
+      tmps.pop_back();
+      return fail(path);
+    }
+    const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (std::fclose(f) != 0 || !wrote) return fail(path);
   }
-  const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!wrote || !closed || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    *error = path + ": cannot write: " + std::strerror(errno);
-    std::remove(tmp.c_str());
-    return false;
+  // Every file is complete before the first rename.
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (std::rename(tmps[i].c_str(), files[i].first.c_str()) != 0) {
+      tmps.erase(tmps.begin(), tmps.begin() + i);
+      return fail(files[i].first);
+    }
   }
   return true;
 }

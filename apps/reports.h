@@ -4,6 +4,8 @@
 
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +37,10 @@ std::string JsonText(const nlohmann::json& report);
 // a half-written report. False with a one-line message on failure.
 bool WriteFileAtomically(const std::string& path, const std::string& text,
                          std::string* error);
+// Several files, all or none: each is written to a temporary file, and the
+// renames start only once every one is complete (e.g. a dataset and its truth).
+bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
+                          std::string* error);
 // Whether `path` could be written, checked before a long run starts.
 bool CanWrite(const std::string& path, std::string* error);
 

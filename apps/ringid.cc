@@ -404,15 +404,13 @@ int IdentifyCommand(int argc, char** argv) {
     return Usage(FLAGS_dataset + ": " + s.message);
   }
   std::printf("%s", s.FullReport().c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, IdentifyReport(s, d, o));
-    if (rc != kExitOk) return rc;
-  }
+  std::vector<std::pair<std::string, std::string>> files;
+  if (!FLAGS_output.empty()) files.emplace_back(FLAGS_output, JsonText(IdentifyReport(s, d, o)));
   if (!FLAGS_save_parameters.empty() && s.success) {
-    const int rc = Write(FLAGS_save_parameters,
-                         ParameterSetJson(s, d.name, "identified by ringid from " + FLAGS_dataset));
-    if (rc != kExitOk) return rc;
+    files.emplace_back(FLAGS_save_parameters,
+                       JsonText(ParameterSetJson(s, d.name, "identified by ringid from " + FLAGS_dataset)));
   }
+  if (!WriteFilesAtomically(files, &error)) return Usage(error);
   return s.success ? kExitOk : kExitFailure;
 }
 
@@ -531,9 +529,10 @@ int SimulateCommand(int argc, char** argv) {
   for (const Effect* e : effects) names += (names.empty() ? "" : ",") + std::string(e->name());
   t["effect"] = names.empty() ? "none" : names;
   for (Param q : model.parameters()) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
-  if (!WriteFileAtomically(FLAGS_output, DatasetToJson(d), &error)) return Usage(error);
-  const int rc = Write(FLAGS_truth, t);
-  if (rc != kExitOk) return rc;
+  if (!WriteFilesAtomically({{FLAGS_output, DatasetToJson(d)}, {FLAGS_truth, JsonText(t)}},
+                            &error)) {
+    return Usage(error);
+  }
   std::printf("wrote %s (7 modes) and %s (effect %s)\n", FLAGS_output.c_str(), FLAGS_truth.c_str(),
               t["effect"].get<std::string>().c_str());
   return kExitOk;
@@ -608,13 +607,10 @@ int BenchCommand(int argc, char** argv) {
   const SuiteResult r = RunSuite(FLAGS_suite, o);
   if (!r.ok) return Usage("--suite: " + r.error);
   std::printf("%s", r.markdown.c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, r.report);
-    if (rc != kExitOk) return rc;
-  }
-  if (!FLAGS_markdown.empty() && !WriteFileAtomically(FLAGS_markdown, r.markdown, &error)) {
-    return Usage(error);
-  }
+  std::vector<std::pair<std::string, std::string>> files;
+  if (!FLAGS_output.empty()) files.emplace_back(FLAGS_output, JsonText(r.report));
+  if (!FLAGS_markdown.empty()) files.emplace_back(FLAGS_markdown, r.markdown);
+  if (!WriteFilesAtomically(files, &error)) return Usage(error);
   return kExitOk;
 }
 
@@ -636,12 +632,13 @@ int ReportCommand(int argc, char** argv) {
     std::fprintf(stderr, "ringid: report: %s\n", error.c_str());
     return kExitFailure;
   }
+  std::vector<std::pair<std::string, std::string>> files;
   for (const HtmlFigure& f : figures) {
     if (FLAGS_figures_dir.empty()) break;
-    const std::string path = (std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string();
-    if (!WriteFileAtomically(path, f.svg, &error)) return Usage(error);
+    files.emplace_back((std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string(), f.svg);
   }
-  if (!WriteFileAtomically(FLAGS_output, html, &error)) return Usage(error);
+  files.emplace_back(FLAGS_output, html);
+  if (!WriteFilesAtomically(files, &error)) return Usage(error);
   std::printf("wrote %s (%zu figure(s))\n", FLAGS_output.c_str(), figures.size());
   return kExitOk;
 }

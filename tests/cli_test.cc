@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <string>
 #include <sys/stat.h>
@@ -11,11 +13,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/reports.h"
 #include "tests/test_support.h"
 
 namespace {
 
 using ringid::testing::Exists;
+using ringid::testing::ReadFile;
 using ringid::testing::Ringid;
 using ringid::testing::RunResult;
 using ringid::testing::Scratch;
@@ -128,6 +132,28 @@ TEST(CliTest, UnwritableOutputIsRefusedBeforeTheRun) {
                        " --output=/nonexistent-dir/report.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("/nonexistent-dir/report.json"), std::string::npos);
+}
+
+// A dataset and its truth (or a report and its figures) appear together or
+// not at all: a failure on the second file leaves no first file behind.
+TEST(CliTest, SeveralFilesAreWrittenAllOrNone) {
+  const std::string dir = Scratch("all_or_none");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string first = dir + "/dataset.json";
+  const std::string second = dir + "/missing-dir/truth.json";
+  std::string error;
+  EXPECT_FALSE(ringid::WriteFilesAtomically({{first, "a"}, {second, "b"}}, &error));
+  EXPECT_NE(error.find(second), std::string::npos) << error;
+  EXPECT_FALSE(Exists(first));
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a temporary file was left behind";
+
+  const std::string other = dir + "/truth.json";
+  ASSERT_TRUE(ringid::WriteFilesAtomically({{first, "a"}, {other, "b"}}, &error)) << error;
+  EXPECT_EQ(ReadFile(first), "a");
+  EXPECT_EQ(ReadFile(other), "b");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()), 2);
 }
 
 }  // namespace
