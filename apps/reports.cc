@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 #include <unistd.h>
 
@@ -335,6 +336,15 @@ bool WriteFileAtomically(const std::string& path, const std::string& text,
 
 bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
                           std::string* error) {
+  for (size_t i = 0; i < files.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (std::filesystem::path(files[i].first).lexically_normal() ==
+          std::filesystem::path(files[j].first).lexically_normal()) {
+        *error = files[i].first + ": named for two outputs";
+        return false;
+      }
+    }
+  }
   std::vector<std::string> tmps;
   auto fail = [&](const std::string& path) {
     *error = path + ": cannot write: " + std::strerror(errno);

@@ -39,6 +39,7 @@ bool WriteFileAtomically(const std::string& path, const std::string& text,
                          std::string* error);
 // Several files, all or none: each is written to a temporary file, and the
 // renames start only once every one is complete (e.g. a dataset and its truth).
+// A path named twice is refused before anything is written.
 bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
                           std::string* error);
 // Whether `path` could be written, checked before a long run starts.

@@ -154,6 +154,12 @@ TEST(CliTest, SeveralFilesAreWrittenAllOrNone) {
   EXPECT_EQ(ReadFile(other), "b");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
                           std::filesystem::directory_iterator()), 2);
+
+  // One path for two outputs (--output equal to --save_parameters): refused,
+  // and the file already there is left as it was.
+  EXPECT_FALSE(ringid::WriteFilesAtomically({{first, "c"}, {dir + "/./dataset.json", "d"}}, &error));
+  EXPECT_NE(error.find("named for two outputs"), std::string::npos) << error;
+  EXPECT_EQ(ReadFile(first), "a");
 }
 
 }  // namespace
