@@ -1,8 +1,7 @@
-// JSON reports of contract section 6, parameter-set files, atomic writes.
+// Parameter-set files and atomic writes of the files a command makes.
 #ifndef RINGID_APPS_REPORTS_H_
 #define RINGID_APPS_REPORTS_H_
 
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,20 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
-#include "estimation/compare.h"
-#include "estimation/diagnose.h"
-#include "estimation/identifiability.h"
 #include "estimation/identify.h"
-#include "model/modal.h"
 
 namespace ringid {
-
-nlohmann::json IdentifyReport(const IdentifySummary& s, const Dataset& d,
-                              const IdentifyOptions& o);
-nlohmann::json PredictReport(const ModalSolution& s);
-nlohmann::json DiagnoseJson(const DiagnosisReport& r, const Dataset& d);
-nlohmann::json CompareJson(const ComparisonReport& r, const Dataset& d);
-nlohmann::json IdentifiabilityJson(const IdentifiabilityReport& r, const Dataset& d);
 
 // A parameter set (see LoadParameterSet in datasets/dataset.h).
 nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,
@@ -37,9 +25,12 @@ std::string JsonText(const nlohmann::json& report);
 // a half-written report. False with a one-line message on failure.
 bool WriteFileAtomically(const std::string& path, const std::string& text,
                          std::string* error);
-// Several files, all or none: each is written to a temporary file, and the
-// renames start only once every one is complete (e.g. a dataset and its truth).
-// A path named twice is refused before anything is written.
+// Several files, all or none (e.g. a dataset and its truth): each is written
+// to a temporary file and renamed only once every one is complete; if a rename
+// fails, the files renamed before it are put back as they were (an existing
+// file from a hard link kept beside it, a new one removed). A path named
+// twice is refused before anything is written. Not atomic against a crash
+// between two renames.
 bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
                           std::string* error);
 // Whether `path` could be written, checked before a long run starts.

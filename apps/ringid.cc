@@ -21,6 +21,7 @@
 #include "apps/html_report.h"
 #include "apps/progress.h"
 #include "apps/reports.h"
+#include "report/report.h"
 #include "benchmarks/suites.h"
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
@@ -30,7 +31,7 @@
 #include "model/effects.h"
 #include "model/rigid_ring_model.h"
 
-DEFINE_string(dataset, "", "modal dataset (contract section 3)");
+DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3)");
 DEFINE_string(parameters, "", "parameter set (ringid-parameters/1 or an identify report)");
 DEFINE_string(output, "", "write the JSON report here");
 DEFINE_string(save_parameters, "", "identify: also write the fitted parameter set here");
@@ -58,7 +59,7 @@ DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)")
 DEFINE_string(shard, "0/1", "identify, diagnose: I/N, analyse every N-th dataset from the I-th (0-based)");
 DEFINE_string(input, "", "report: a JSON report of ringid");
 DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg");
-DEFINE_string(effects, "", "comma-separated effects of contract section 4 to add to the model");
+DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
 
 namespace ringid {
 namespace {
@@ -170,12 +171,22 @@ bool ParseEffects(std::vector<const Effect*>* effects, std::string* error) {
   return true;
 }
 
-int Write(const std::string& path, const nlohmann::json& report) {
+int Write(const std::string& path, const std::string& text) {
   std::string error;
-  if (!WriteFileAtomically(path, JsonText(report), &error)) {
+  if (!WriteFileAtomically(path, text, &error)) {
     return Usage(error);
   }
   return kExitOk;
+}
+
+// This process's provenance, with the inputs its flags named.
+// A campaign names each report's own dataset file.
+Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
+                   const std::string& dataset = FLAGS_dataset) {
+  return MakeProvenance(argc, argv,
+                        {{"dataset", dataset}, {"parameters", FLAGS_parameters},
+                         {"input", FLAGS_input}},
+                        seed);
 }
 
 int Predict(int argc, char** argv) {
@@ -221,7 +232,9 @@ int Predict(int argc, char** argv) {
     }
   }
   if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, PredictReport(s));
+    const int rc =
+        Write(FLAGS_output, ReportText(PredictReport{ThisRun(argc, argv, std::nullopt),
+                                                     PredictBody::From(s)}));
     if (rc != kExitOk) return rc;
   }
   return s.ok ? kExitOk : kExitFailure;
@@ -232,19 +245,25 @@ const std::set<std::string> kFitFlags = {
     "shapes", "damping", "shape_convention", "effects", "output"};
 const std::set<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
+// --NAME=VALUE of an enum flag; the valid names on error.
+template <class E>
+bool ParseFlag(const char* name, const std::string& value, E* e, std::string* error) {
+  const std::optional<E> parsed = FromString<E>(value);
+  if (parsed) *e = *parsed;
+  else *error = std::string("--") + name + ": must be " + EnumChoices<E>();
+  return parsed.has_value();
+}
+
 // The flags every fitting command shares, read into options and the model's
 // effects; false with a one-line message on bad input.
 bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
                     std::string* error) {
-  if (FLAGS_method == "lm") o->method = Method::kLevenbergMarquardt;
-  else if (FLAGS_method == "simplex") o->method = Method::kSimplex;
-  else { *error = "--method: must be lm or simplex"; return false; }
-  if (FLAGS_weighting == "sigma") o->residuals.frequency_weighting = FrequencyWeighting::kSigma;
-  else if (FLAGS_weighting == "relative") o->residuals.frequency_weighting = FrequencyWeighting::kRelative;
-  else { *error = "--weighting: must be sigma or relative"; return false; }
-  if (FLAGS_shape_convention == "contract") o->residuals.shape_convention = ShapeConvention::kContract;
-  else if (FLAGS_shape_convention == "paper") o->residuals.shape_convention = ShapeConvention::kPaper;
-  else { *error = "--shape_convention: must be contract or paper"; return false; }
+  if (!ParseFlag("method", FLAGS_method, &o->method, error) ||
+      !ParseFlag("weighting", FLAGS_weighting, &o->residuals.frequency_weighting, error) ||
+      !ParseFlag("shape_convention", FLAGS_shape_convention, &o->residuals.shape_convention,
+                 error)) {
+    return false;
+  }
   o->starts = FLAGS_starts;
   o->seed = static_cast<unsigned>(FLAGS_seed);
   o->residuals.relative_sigma = FLAGS_relative_sigma;
@@ -270,28 +289,16 @@ bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
 
 // One dataset's share of a campaign: its report and its row of the summary.
 struct CampaignItem {
-  nlohmann::json report;
-  nlohmann::json row;  // the summary's columns, "dataset" first
-  bool ok = false;
+  std::string report;
+  CampaignRow row;
 };
-using CampaignWork = std::function<CampaignItem(const Dataset&)>;
-
-std::string Cell(const nlohmann::json& v) {
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number()) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v.get<double>());
-    return b;
-  }
-  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
-  return "-";
-}
+using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
 
 // --output_dir: every dataset of --dataset (this shard's share), --jobs at
 // once. Every input is loaded and checked before anything runs, so a bad one
 // stops the campaign with exit 2 and nothing written. `check` refuses a
 // dataset the analysis could not start on.
-int RunCampaign(const std::string& command, const std::vector<std::string>& columns,
+int RunCampaign(int argc, char** argv, ReportKind command,
                 const std::function<bool(const Dataset&, std::string*)>& check,
                 const CampaignWork& work) {
   std::string error;
@@ -325,10 +332,10 @@ int RunCampaign(const std::string& command, const std::vector<std::string>& colu
   std::vector<std::string> write_errors(n);
   const auto t0 = std::chrono::steady_clock::now();
   {
-    Progress progress(command, n);
+    Progress progress(ToString(command), n);
     ParallelFor(n, FLAGS_jobs, &progress, [&](int i) {
-      items[i] = work(datasets[i]);
-      WriteFileAtomically(reports[i], JsonText(items[i].report), &write_errors[i]);
+      items[i] = work(datasets[i], files[i]);
+      WriteFileAtomically(reports[i], items[i].report, &write_errors[i]);
     });
   }
   const double seconds =
@@ -336,28 +343,21 @@ int RunCampaign(const std::string& command, const std::vector<std::string>& colu
   for (const std::string& e : write_errors) {
     if (!e.empty()) return Usage(e);
   }
-  nlohmann::json summary = {{"report", "campaign"}, {"command", command},
-                            {"shard", FLAGS_shard}, {"jobs", FLAGS_jobs},
-                            {"seconds", seconds}, {"columns", columns},
-                            {"datasets", nlohmann::json::array()}};
+  std::vector<std::pair<std::string, std::string>> inputs;
+  for (const std::string& f : files) inputs.emplace_back("dataset", f);
+  CampaignReport summary{MakeProvenance(argc, argv, inputs, FLAGS_seed),
+                         {command, FLAGS_shard, FLAGS_jobs, seconds, {}}};
   bool all_ok = true;
-  std::string table;
-  for (const std::string& c : columns) table += "| " + c + " ";
-  table += "|\n";
-  for (size_t c = 0; c < columns.size(); ++c) table += "| --- ";
-  table += "|\n";
   for (int i = 0; i < n; ++i) {
-    nlohmann::json row = items[i].row;
-    row["dataset"] = files[i];
-    row["report_file"] = reports[i];
-    for (const std::string& c : columns) table += "| " + Cell(row[c]) + " ";
-    table += "|\n";
-    summary["datasets"].push_back(row);
-    all_ok &= items[i].ok;
+    items[i].row.dataset = files[i];
+    items[i].row.report_file = reports[i];
+    all_ok &= items[i].row.status.ok();
+    summary.body.datasets.push_back(items[i].row);
   }
-  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; reports in %s\n", table.c_str(), n,
-              FLAGS_jobs, seconds, FLAGS_output_dir.c_str());
-  const int rc = Write(summary_path, summary);
+  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; reports in %s\n",
+              CampaignTable(summary.body).c_str(), n, FLAGS_jobs, seconds,
+              FLAGS_output_dir.c_str());
+  const int rc = Write(summary_path, ReportText(summary));
   if (rc != kExitOk) return rc;
   return all_ok ? kExitOk : kExitFailure;
 }
@@ -375,23 +375,22 @@ int IdentifyCommand(int argc, char** argv) {
     if (!FLAGS_save_parameters.empty()) return Usage("--save_parameters: not in a campaign");
     const RigidRingModel model(effects);
     return RunCampaign(
-        "identify", {"dataset", "status", "cost", "eq19", "eq20", "seconds"},
+        argc, argv, ReportKind::kIdentify,
         [&](const Dataset& d, std::string* why) {
           ParameterSetup setup;
           return ParameterSetup::Build(model, d, &setup, why);
         },
-        [&](const Dataset& d) {
+        [&](const Dataset& d, const std::string& file) {
           IdentifySummary s;
           Identify(model, d, o, &s);
           CampaignItem item;
-          item.report = IdentifyReport(s, d, o);
-          item.ok = s.success;
-          item.row = {{"status", s.success ? (s.converged ? "converged" : "not converged")
-                                           : "failed: " + s.message},
-                      {"cost", s.cost},
-                      {"eq19", s.relative_error_in_plane},
-                      {"eq20", s.relative_error_out_of_plane},
-                      {"seconds", s.seconds}};
+          item.report = ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, s}});
+          item.row.status = s.status;
+          item.row.converged = s.converged;
+          item.row.cost = s.cost;
+          item.row.relative_error_in_plane_eq19 = s.relative_error_in_plane;
+          item.row.relative_error_out_of_plane_eq20 = s.relative_error_out_of_plane;
+          item.row.seconds = s.seconds;
           return item;
         });
   }
@@ -400,18 +399,19 @@ int IdentifyCommand(int argc, char** argv) {
   const RigidRingModel model(effects);
   IdentifySummary s;
   Identify(model, d, o, &s);
-  if (s.invalid_input) {
-    return Usage(FLAGS_dataset + ": " + s.message);
-  }
+  if (s.status.invalid_input()) return Usage(FLAGS_dataset + ": " + s.status.message);
   std::printf("%s", s.FullReport().c_str());
   std::vector<std::pair<std::string, std::string>> files;
-  if (!FLAGS_output.empty()) files.emplace_back(FLAGS_output, JsonText(IdentifyReport(s, d, o)));
-  if (!FLAGS_save_parameters.empty() && s.success) {
+  if (!FLAGS_output.empty()) {
+    files.emplace_back(FLAGS_output,
+                       ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed), {d.name, s}}));
+  }
+  if (!FLAGS_save_parameters.empty() && s.status.ok()) {
     files.emplace_back(FLAGS_save_parameters,
                        JsonText(ParameterSetJson(s, d.name, "identified by ringid from " + FLAGS_dataset)));
   }
   if (!WriteFilesAtomically(files, &error)) return Usage(error);
-  return s.success ? kExitOk : kExitFailure;
+  return s.status.ok() ? kExitOk : kExitFailure;
 }
 
 int IdentifiabilityCommand(int argc, char** argv) {
@@ -424,13 +424,14 @@ int IdentifiabilityCommand(int argc, char** argv) {
   const RigidRingModel model(effects);
   IdentifiabilityReport r;
   AnalyzeIdentifiability(model, d, o, &r);
-  if (r.fit.invalid_input) return Usage(FLAGS_dataset + ": " + r.fit.message);
+  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, IdentifiabilityJson(r, d));
+    const int rc = Write(FLAGS_output, ReportText(IdentifiabilityFile{
+                                           ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
     if (rc != kExitOk) return rc;
   }
-  return r.success ? kExitOk : kExitFailure;
+  return r.status.ok() ? kExitOk : kExitFailure;
 }
 
 int CompareCommand(int argc, char** argv) {
@@ -447,13 +448,14 @@ int CompareCommand(int argc, char** argv) {
     o.on_fit = [&] { progress.Add(); };
     CompareMethods(model, d, o, &r);
   }
-  if (r.invalid_input) return Usage(FLAGS_dataset + ": " + r.message);
+  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, CompareJson(r, d));
+    const int rc = Write(FLAGS_output,
+                         ReportText(CompareReport{ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
     if (rc != kExitOk) return rc;
   }
-  return r.success ? kExitOk : kExitFailure;
+  return r.status.ok() ? kExitOk : kExitFailure;
 }
 
 int SimulateCommand(int argc, char** argv) {
@@ -549,30 +551,27 @@ int DiagnoseCommand(int argc, char** argv) {
     if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
     if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
     return RunCampaign(
-        "diagnose",
-        {"dataset", "verdict", "indistinguishable", "gap_before", "gap_after", "shrink", "seconds"},
+        argc, argv, ReportKind::kDiagnose,
         [&](const Dataset& d, std::string* why) {
           ParameterSetup setup;
           return ParameterSetup::Build(RigidRingModel(), d, &setup, why);
         },
-        [&](const Dataset& d) {
+        [&](const Dataset& d, const std::string& file) {
           DiagnosisReport r;
           Diagnose(d, o, &r);
           CampaignItem item;
-          item.report = DiagnoseJson(r, d);
-          item.ok = r.success;
-          double after = r.gap_before, shrink = 0;
-          for (const EffectFit& f : r.ranking) {
-            if (f.effect == r.verdict) after = f.gap_after, shrink = f.shrink;
+          item.report = ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}});
+          item.row.status = r.status;
+          item.row.seconds = r.seconds;
+          if (r.status.ok()) {
+            item.row.verdict = r.verdict;
+            item.row.indistinguishable = r.indistinguishable;
+            item.row.gap_before = item.row.gap_after = r.gap_before;
+            item.row.shrink = 0;
+            for (const EffectFit& f : r.ranking) {
+              if (f.effect == r.verdict) item.row.gap_after = f.gap_after, item.row.shrink = f.shrink;
+            }
           }
-          std::string group;
-          for (const std::string& g : r.indistinguishable) group += (group.empty() ? "" : "+") + g;
-          item.row = {{"verdict", r.success ? r.verdict : "failed: " + r.message},
-                      {"indistinguishable", group},
-                      {"gap_before", r.gap_before},
-                      {"gap_after", after},
-                      {"shrink", shrink},
-                      {"seconds", r.seconds}};
           return item;
         });
   }
@@ -581,13 +580,14 @@ int DiagnoseCommand(int argc, char** argv) {
   if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
   DiagnosisReport r;
   Diagnose(d, o, &r);
-  if (r.invalid_input) return Usage(FLAGS_dataset + ": " + r.message);
+  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, DiagnoseJson(r, d));
+    const int rc = Write(FLAGS_output,
+                         ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
     if (rc != kExitOk) return rc;
   }
-  return r.success ? kExitOk : kExitFailure;
+  return r.status.ok() ? kExitOk : kExitFailure;
 }
 
 int BenchCommand(int argc, char** argv) {

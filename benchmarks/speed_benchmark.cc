@@ -61,7 +61,7 @@ void Fit(benchmark::State& state, bool in_plane_only) {
   for (auto _ : state) {
     IdentifySummary s;
     Identify(model, d, o, &s);
-    if (!s.success) state.SkipWithError("fit failed");
+    if (!s.status.ok()) state.SkipWithError("fit failed");
     benchmark::DoNotOptimize(s);
   }
 }

@@ -12,6 +12,8 @@
 #include "model/effects.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
+#include "estimation/statistics.h"
+#include "datasets/paper.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -82,14 +84,15 @@ SuiteResult Paper(const SuiteOptions& o) {
     io.starts = 1;
     IdentifySummary f;
     Identify(RigidRingModel(), table1, io, &f);
-    r.report["identify"][MethodName(method)] = {
+    r.report["identify"][ToString(method)] = {
         {"eq19", f.relative_error_in_plane}, {"eq20", f.relative_error_out_of_plane},
         {"evaluations", f.evaluations}, {"seconds", f.seconds}, {"rank", f.uncertainty.rank}};
-    md += std::string("| ") + MethodName(method) + " | " + Fmt("%.2e", f.relative_error_in_plane) + " | " +
+    md += std::string("| ") + ToString(method) + " | " + Fmt("%.2e", f.relative_error_in_plane) + " | " +
           Fmt("%.2e", f.relative_error_out_of_plane) + " | " + std::to_string(f.evaluations) + " | " +
           Fmt("%.1f", 1e3 * f.seconds) + " |\n";
   }
-  md += "| paper (simplex) | 1.41e-03 | 6.10e-03 | - | - |\n";
+  md += "| paper (simplex) | " + Fmt("%.2e", kPaperSimplexErrorInPlane) + " | " +
+        Fmt("%.2e", kPaperSimplexErrorOutOfPlane) + " | - | - |\n";
   r.markdown = md;
   r.ok = true;
   return r;
@@ -130,7 +133,7 @@ SuiteResult Synthetic(const SuiteOptions& o) {
       io.starts = 1;
       IdentifySummary f;
       Identify(RigidRingModel(), d, io, &f);
-      if (!f.success) {
+      if (!f.status.ok()) {
         ++failed;
         continue;
       }
@@ -140,7 +143,7 @@ SuiteResult Synthetic(const SuiteOptions& o) {
         const double sd = *e.std / e.value;
         z.push_back(err / sd);
         ++total;
-        inside += err <= 1.96 * sd;
+        inside += err <= kNormal95 * sd;
       }
       if (o.on_case) o.on_case(++done, 3 * o.replicates);
     }
@@ -195,15 +198,15 @@ SuiteResult Conditioning(const SuiteOptions& o) {
     io.profile_steps = 0;
     IdentifiabilityReport a;
     AnalyzeIdentifiability(RigidRingModel(), d, io, &a);
-    if (!a.success) {
-      r.error = std::string(v.name) + ": " + a.message;
+    if (!a.status.ok()) {
+      r.error = std::string(v.name) + ": " + a.status.message;
       return r;
     }
     int count[3] = {0, 0, 0};
     json classes = json::object();
     for (const auto& p : a.parameters) {
       ++count[static_cast<int>(p.identifiable)];
-      classes[ParamName(p.param)] = IdentifiabilityName(p.identifiable);
+      classes[ParamName(p.param)] = ToString(p.identifiable);
     }
     r.report["variants"].push_back({{"data", v.name}, {"residuals", a.num_residuals},
                                     {"rank", a.rank}, {"condition_number", std::isfinite(a.condition_number) ? json(a.condition_number) : json(nullptr)},
@@ -263,8 +266,8 @@ SuiteResult Diagnosis(const SuiteOptions& o) {
         DiagnoseOptions dopt;
         dopt.held_out = false;  // reported by diagnose, not voted on; skipped for speed
         Diagnose(d, dopt, &dr);
-        if (!dr.success) {
-          r.error = d.name + ": " + dr.message;
+        if (!dr.status.ok()) {
+          r.error = d.name + ": " + dr.status.message;
           return r;
         }
         seconds += dr.seconds;

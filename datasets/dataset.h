@@ -1,4 +1,4 @@
-// The modal dataset of contract section 3 and its strict loader.
+// The modal dataset of docs/conventions.md §3 and its strict loader.
 #ifndef RINGID_DATASETS_DATASET_H_
 #define RINGID_DATASETS_DATASET_H_
 
@@ -34,8 +34,8 @@ struct Dataset {
 };
 
 // Limits the loader enforces (README "Limits").
-// At most one measured mode per contract label, one shape component per
-// degree of freedom.
+// At most one measured mode per mode label of docs/conventions.md §1, one
+// shape component per degree of freedom.
 inline constexpr int kMaxModes = 7;
 inline constexpr int kMaxJsonDepth = 16;
 inline constexpr long kMaxFileBytes = 4 << 20;
@@ -63,7 +63,7 @@ bool ParseDataset(const std::string& text, const std::string& path,
 // "parameters" object and reads back as one.
 bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
 
-// Writes a dataset back to the contract's JSON form.
+// Writes a dataset back to the JSON form of docs/conventions.md §3.
 std::string DatasetToJson(const Dataset& dataset);
 
 }  // namespace ringid

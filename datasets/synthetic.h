@@ -23,10 +23,10 @@ struct SimulateOptions {
   bool hub_components = true;
 };
 
-// Measures the contract's seven modes of `truth` under `model`: fills
-// `dataset->modes` (sigmas equal to the noise levels) and leaves its other
-// fields as they are. False with a reason when the truth model cannot be
-// solved or a contract mode is overdamped.
+// Measures the seven modes of docs/conventions.md §1 of `truth` under
+// `model`: fills `dataset->modes` (sigmas equal to the noise levels) and
+// leaves its other fields as they are. False with a reason when the truth
+// model cannot be solved or one of those modes is overdamped.
 bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& options, std::mt19937_64* rng,
               Dataset* dataset, std::string* error);
@@ -38,8 +38,9 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
 void SetEngineerPriors(const Parameters& truth, double prior_spread,
                        std::mt19937_64* rng, Dataset* dataset);
 
-// The largest relative frequency shift over the contract's modes when `p` of
-// `effect` is set to `value` (infinity when a mode is lost).
+// The largest relative frequency shift over the seven modes of
+// docs/conventions.md §1 when `p` of `effect` is set to `value` (infinity
+// when a mode is lost).
 double LargestShift(const Parameters& truth, const Effect& effect, Param p, double value);
 
 // The value of `p` whose largest frequency shift is `target` (bisection in log).

@@ -3,6 +3,8 @@
 #define RINGID_ESTIMATION_COMPARE_H_
 
 #include <functional>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -34,12 +36,26 @@ struct MethodRun {
   double success_rate = 0;
   double seconds_per_fit = 0;
   double median_evaluations = 0;
+
+  template <class Archive>  // keyed by method in ComparisonReport
+  void Serialize(Archive* a) {
+    a->Derived("starts", final_costs.size());
+    a->Visit("success_rate", &success_rate);
+    a->Visit("final_costs", &final_costs);
+    a->Visit("evaluations", &evaluations);
+    a->Visit("seconds", &seconds);
+    a->Visit("seconds_per_fit", &seconds_per_fit);
+    a->Visit("median_evaluations", &median_evaluations);
+    a->Group("relative_error", [&](auto* g) {
+      g->Visit("in_plane_eq19", &relative_error_in_plane);
+      g->Visit("out_of_plane_eq20", &relative_error_out_of_plane);
+    });
+    a->Visit("histories_evaluations_cost", &histories);
+  }
 };
 
 struct ComparisonReport {
-  bool success = false;
-  bool invalid_input = false;
-  std::string message;
+  Status status;
   int starts = 0;
   double best_cost = 0;
   std::vector<MethodRun> methods;  // lm, simplex
@@ -47,8 +63,27 @@ struct ComparisonReport {
   // paper's own stopping errors for reference.
   double initial_cost = 0;
   double initial_error_in_plane = 0, initial_error_out_of_plane = 0;
+  // The stopping errors the paper reported for its simplex, where the
+  // dataset is the paper's Table 1 (eq. 19, eq. 20; docs/model.md section 10).
+  std::optional<std::pair<double, double>> paper_reported;
 
   std::string FullReport() const;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    status.Serialize(a);
+    a->Visit("starts", &starts);
+    a->Visit("best_cost", &best_cost);
+    a->VisitKeyed("methods", &methods, &MethodRun::method);
+    a->Group("initial", [&](auto* g) {
+      g->Visit("cost", &initial_cost);
+      g->Group("relative_error", [&](auto* e) {
+        e->Visit("in_plane_eq19", &initial_error_in_plane);
+        e->Visit("out_of_plane_eq20", &initial_error_out_of_plane);
+      });
+    });
+    a->VisitIfSet("paper_reported_eq19_eq20", &paper_reported);
+  }
 };
 
 void CompareMethods(const ModalModel& model, const Dataset& dataset,

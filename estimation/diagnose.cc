@@ -95,7 +95,7 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
     without.modes.erase(without.modes.begin() + j);
     IdentifySummary s;
     Identify(model, without, one, &s);
-    if (!s.success) return std::nullopt;
+    if (!s.status.ok()) return std::nullopt;
     std::vector<ModalResiduals::Slot> slots;
     std::vector<double> r;
     if (!ResidualsAt(model, warm, s.parameters, &slots, &r, o.fit.residuals)) return std::nullopt;
@@ -145,8 +145,8 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
     for (const Dataset* start : starts) {
       IdentifySummary s;
       Identify(model, *start, one, &s);
-      if (s.success && (!best.success || s.cost < best.cost)) best = s;
-      if (!best.success && best.message.empty()) best = s;
+      if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
+      if (!best.status.ok() && best.status.message.empty()) best = s;
     }
   }
   return best;
@@ -290,8 +290,7 @@ void Diagnose(const Dataset& dataset, const DiagnoseOptions& o,
   *r = DiagnosisReport{};
   std::string why;
   if (!o.IsValid(&why)) {
-    r->invalid_input = true;
-    r->message = "invalid options: " + why;
+    r->status = Status::InvalidInput("invalid options: " + why);
     return;
   }
   // The dataset's initial values are the prior of the baseline's parameters:
@@ -310,9 +309,9 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
   // The gap: calibrate the baseline.
   const RigidRingModel baseline;
   Identify(baseline, dataset, o.fit, &r->baseline);
-  if (!r->baseline.success) {
-    r->invalid_input = r->baseline.invalid_input;
-    r->message = "the baseline could not be calibrated: " + r->baseline.message;
+  if (!r->baseline.status.ok()) {
+    r->status = {r->baseline.status.outcome,
+                 "the baseline could not be calibrated: " + r->baseline.status.message};
     return;
   }
   const int m = static_cast<int>(r->baseline.uncertainty.jacobian.rows());
@@ -329,7 +328,7 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
   std::vector<ModalResiduals::Slot> slots;
   std::vector<double> res;
   if (!ResidualsAt(baseline, dataset, r->baseline.parameters, &slots, &res, o.fit.residuals)) {
-    r->message = "the calibrated baseline cannot be evaluated";
+    r->status = Status::Failed("the calibrated baseline cannot be evaluated");
     return;
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
@@ -356,8 +355,8 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
     f.effect = effect->name();
     const RigidRingModel model({effect});
     IdentifySummary s = FitEffect(model, *effect, warm, dataset, o);
-    if (!s.success) {
-      f.note = s.message;
+    if (!s.status.ok()) {
+      f.note = s.status.message;
       r->ranking.push_back(f);
       continue;
     }
@@ -457,14 +456,14 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
     }
   }
   r->explanation = why_text.str();
-  r->success = true;
+  r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 std::string DiagnosisReport::FullReport() const {
   std::ostringstream o;
   char line[256];
-  if (!success) return "ringid diagnose: FAILED: " + message + "\n";
+  if (!status.ok()) return "ringid diagnose: FAILED: " + status.message + "\n";
   o << "ringid diagnose: verdict " << verdict;
   if (!indistinguishable.empty()) {
     o << " (indistinguishable:";

@@ -46,6 +46,17 @@ struct ModeMisfit {
   double shape_chi2 = 0;
   std::string worst_component;          // the shape component furthest off
   double worst_component_sigma = 0;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("label", &label);
+    a->Visit("chi2", &chi2);
+    a->Visit("frequency_sigma", &frequency_sigma);
+    a->Visit("damping_sigma", &damping_sigma);
+    a->Visit("shape_chi2", &shape_chi2);
+    a->Visit("worst_component", &worst_component);
+    a->Visit("worst_component_sigma", &worst_component_sigma);
+  }
 };
 
 struct EffectFit {
@@ -66,12 +77,33 @@ struct EffectFit {
   // Per effect parameter: the smallest |value| whose signature a
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).
   std::map<std::string, double> minimal_detectable;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("effect", &effect);
+    a->Visit("fitted", &ok);
+    a->Visit("note", &note);
+    a->Visit("gap_after", &gap_after);
+    a->Visit("shrink", &shrink);
+    a->Visit("supported", &supported);
+    a->Visit("values", &values);
+    a->Visit("minimal_detectable", &minimal_detectable);
+    a->Visit("where", &where);
+    a->Group("evidence", [&](auto* g) {
+      g->Visit("chi2", &chi2);
+      g->Visit("likelihood_ratio", &lrt_statistic);
+      g->Visit("extra_parameters", &extra_parameters);
+      g->Visit("lrt_p_value", &lrt_p);
+      g->Visit("aic", &aic);
+      g->Visit("bic", &bic);
+      g->Visit("held_out_chi2", &held_out_chi2);
+      g->Visit("mode_chi2", &mode_chi2);
+    });
+  }
 };
 
 struct DiagnosisReport {
-  bool success = false;
-  bool invalid_input = false;
-  std::string message;
+  Status status;
   // The gap: the calibrated baseline.
   IdentifySummary baseline;
   double chi2_before = 0;
@@ -92,6 +124,29 @@ struct DiagnosisReport {
   double seconds = 0;
 
   std::string FullReport() const;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    status.Serialize(a);
+    a->Group("gap_before", [&](auto* g) {
+      g->Visit("chi2", &chi2_before);
+      g->Visit("dof", &dof);
+      g->Visit("p_value", &p_value);
+      g->Visit("significant", &significant);
+      g->Visit("excess", &gap_before);
+    });
+    a->Visit("where", &where);
+    a->Visit("mode_shrink", &mode_shrink);
+    a->Visit("absorbed", &absorbed);
+    a->Visit("ranking", &ranking);
+    a->Visit("held_out_before", &held_out_before);
+    a->Group("verdict", [&](auto* g) {
+      g->Visit("effect", &verdict);
+      g->Visit("indistinguishable", &indistinguishable);
+      g->Visit("explanation", &explanation);
+    });
+    a->Visit("seconds", &seconds);
+  }
 };
 
 void Diagnose(const Dataset& dataset, const DiagnoseOptions& options,

@@ -91,10 +91,6 @@ LocalFit FitSimplex(const ModalResiduals& residuals,
 
 }  // namespace
 
-const char* MethodName(Method m) {
-  return m == Method::kSimplex ? "simplex" : "lm";
-}
-
 Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
                  double bound_factor) {
   const int n = setup.size();

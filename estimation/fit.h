@@ -18,7 +18,10 @@
 namespace ringid {
 
 enum class Method { kLevenbergMarquardt, kSimplex };
-const char* MethodName(Method m);  // "lm", "simplex"
+template <>
+struct EnumNames<Method> {
+  static constexpr std::array<const char*, 2> kNames = {"lm", "simplex"};
+};
 
 struct Box {
   Eigen::VectorXd lower, upper;

@@ -1,5 +1,7 @@
 #include "estimation/identifiability.h"
 
+#include "estimation/statistics.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,7 +16,6 @@
 namespace ringid {
 namespace {
 
-constexpr double kChiSquare1At95 = 3.841458820694124;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // "log K_cx" for a log coordinate, the name otherwise.
@@ -95,11 +96,11 @@ ProfileInterval Profile(const ModalResiduals& residuals,
       x = fit.x;
       const double d = std::max(0.0, 2 * (fit.cost - cost_min));
       p.curve.emplace_back(Physical(setup, i, t), d);
-      if (d >= kChiSquare1At95) {
+      if (d >= kChiSquare1Dof95) {
         // The signed root of 2 delta cost is linear in t for a quadratic
         // profile: interpolating it is exact there.
         const double a = std::sqrt(d_prev), b = std::sqrt(d);
-        const double cross = t_prev + (std::sqrt(kChiSquare1At95) - a) / (b - a) * (t - t_prev);
+        const double cross = t_prev + (std::sqrt(kChiSquare1Dof95) - a) / (b - a) * (t - t_prev);
         (side < 0 ? p.lower : p.upper) = Physical(setup, i, cross);
         break;
       }
@@ -132,18 +133,17 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   *r = IdentifiabilityReport{};
   std::string why;
   if (!o.IsValid(&why)) {
-    r->message = "invalid options: " + why;
-    r->fit.invalid_input = true;
+    r->status = r->fit.status = Status::InvalidInput("invalid options: " + why);
     return;
   }
   Identify(model, dataset, o.fit, &r->fit);
-  if (!r->fit.success) {
-    r->message = "identification failed: " + r->fit.message;
+  if (!r->fit.status.ok()) {
+    r->status = {r->fit.status.outcome, "identification failed: " + r->fit.status.message};
     return;
   }
   const Uncertainty& u = r->fit.uncertainty;
   if (!u.ok) {
-    r->message = "no Jacobian at the fitted point: " + u.error;
+    r->status = Status::Failed("no Jacobian at the fitted point: " + u.error);
     return;
   }
   ParameterSetup setup;
@@ -152,7 +152,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   const int n = setup.size();
   const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
   const Eigen::MatrixXd& J = u.jacobian;
-  r->success = true;
+  r->status = Status::Success();
   r->rank = u.rank;
   r->num_residuals = static_cast<int>(J.rows());
   r->condition_number = u.condition_number;
@@ -184,8 +184,8 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
       const double s = u.std[i];
       p.std = setup.PhysicalStd(i, xhat[i], s);
       p.wald_95 = setup.is_log(i)
-                      ? std::make_pair(p.value * std::exp(-1.96 * s), p.value * std::exp(1.96 * s))
-                      : std::make_pair(p.value - 1.96 * *p.std, p.value + 1.96 * *p.std);
+                      ? std::make_pair(p.value * std::exp(-kNormal95 * s), p.value * std::exp(kNormal95 * s))
+                      : std::make_pair(p.value - kNormal95 * *p.std, p.value + kNormal95 * *p.std);
     }
     if (o.profile_steps > 0) {
       p.profile_95 = Profile(residuals, setup, xhat, r->fit.cost, box, i, u.std[i], o);
@@ -347,8 +347,8 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
 std::string IdentifiabilityReport::FullReport() const {
   std::ostringstream o;
   char line[512];
-  o << "ringid identifiability: " << (success ? "" : "FAILED: " + message) << "\n";
-  if (!success) return o.str();
+  o << "ringid identifiability: " << (status.ok() ? "" : "FAILED: " + status.message) << "\n";
+  if (!status.ok()) return o.str();
   o << "  fit: " << fit.BriefReport() << "\n";
   o << "  " << rank_explanation << "\n";
   std::snprintf(line, sizeof line, "  condition number %.3e; singular values:", condition_number);
@@ -371,7 +371,7 @@ std::string IdentifiabilityReport::FullReport() const {
                                  ? "[" + opt(p.profile_95.lower) + ", " + opt(p.profile_95.upper) + "]"
                                  : "-";
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", ParamName(p.param),
-                  p.value, IdentifiabilityName(p.identifiable), sd, wald, prof.c_str());
+                  p.value, ToString(p.identifiable), sd, wald, prof.c_str());
     o << line;
   }
   o << "\n  combinations the data leave free:\n";

@@ -45,6 +45,14 @@ struct ProfileInterval {
   bool computed = false;
   std::optional<double> lower, upper;  // physical units; none: did not close
   std::vector<std::pair<double, double>> curve;  // (value, 2 delta cost)
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("computed", &computed);
+    a->Visit("lower", &lower);
+    a->Visit("upper", &upper);
+    a->Visit("curve_value_delta_chi2", &curve);
+  }
 };
 
 struct ParameterIdentifiability {
@@ -55,6 +63,19 @@ struct ParameterIdentifiability {
   std::optional<double> std;
   std::optional<std::pair<double, double>> wald_95;
   ProfileInterval profile_95;
+
+  template <class Archive>  // keyed by param in IdentifiabilityReport
+  void Serialize(Archive* a) {
+    a->Visit("value", &value);
+    a->Visit("identifiable", &identifiable);
+    a->Visit("reason", &reason);
+    a->Visit("std", &std);
+    a->Visit("wald_95", &wald_95);
+    a->Derived("profile_95", profile_95.computed
+                                 ? std::optional(std::pair(profile_95.lower, profile_95.upper))
+                                 : std::nullopt);
+    a->Visit("profile", &profile_95);
+  }
 };
 
 struct Combination {
@@ -62,11 +83,25 @@ struct Combination {
   std::string meaning;         // e.g. "only K_cx / sigma_cx is determined"
   double singular_value = 0;   // of the direction (0 for a structural pair)
   std::vector<std::pair<std::string, double>> terms;  // coordinate, coefficient
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("text", &text);
+    a->Visit("meaning", &meaning);
+    a->Visit("singular_value", &singular_value);
+    a->Visit("terms", &terms);
+  }
 };
 
 struct CollinearSubset {
   std::vector<std::string> names;
   double index = 0;  // collinearity index; inf for exact collinearity
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("parameters", &names);
+    a->Visit("collinearity_index", &index);
+  }
 };
 
 struct Advice {
@@ -74,11 +109,18 @@ struct Advice {
   std::string observation;  // e.g. "damping ratio of rotation_anti_phase"
   double information_gain = 0;  // 1/2 log(var before / var after), nats
   bool makes_identifiable = false;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("parameter", &parameter);
+    a->Visit("observation", &observation);
+    a->Visit("information_gain_nats", &information_gain);
+    a->Visit("makes_identifiable", &makes_identifiable);
+  }
 };
 
 struct IdentifiabilityReport {
-  bool success = false;
-  std::string message;
+  Status status;
   IdentifySummary fit;
   int rank = 0;
   int num_residuals = 0;
@@ -95,6 +137,24 @@ struct IdentifiabilityReport {
   double seconds = 0;
 
   std::string FullReport() const;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    status.Serialize(a);
+    a->Visit("rank", &rank);
+    a->Visit("num_residuals", &num_residuals);
+    a->Visit("condition_number", &condition_number);
+    a->Visit("rank_explanation", &rank_explanation);
+    a->Visit("singular_values", &singular_values);
+    a->Visit("coordinates", &coordinate_names);
+    a->VisitKeyed("parameters", &parameters, &ParameterIdentifiability::param);
+    a->Visit("combinations", &combinations);
+    a->Visit("correlation", &correlation);
+    a->Visit("collinear_pairs", &collinear_pairs);
+    a->Visit("identifiable_subset", &identifiable_subset);
+    a->Visit("advice", &advice);
+    a->Visit("seconds", &seconds);
+  }
 };
 
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,

@@ -43,16 +43,15 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   const auto t0 = std::chrono::steady_clock::now();
   *s = IdentifySummary{};
   s->method = o.method;
+  s->frequency_weighting = o.residuals.frequency_weighting;
   std::string why;
   if (!o.IsValid(&why)) {
-    s->invalid_input = true;
-    s->message = "invalid options: " + why;
+    s->status = Status::InvalidInput("invalid options: " + why);
     return;
   }
   ParameterSetup setup;
   if (!ParameterSetup::Build(model, dataset, &setup, &why)) {
-    s->invalid_input = true;
-    s->message = why;
+    s->status = Status::InvalidInput(why);
     return;
   }
   ModalResiduals residuals(model, dataset, setup, o.residuals);
@@ -73,13 +72,12 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->starts = static_cast<int>(s->start_costs.size());
   s->evaluations = residuals.evaluations();
   if (!std::isfinite(best.cost)) {
-    s->message = "no start produced a usable fit: " + best.message;
+    s->status = Status::Failed("no start produced a usable fit: " + best.message);
     s->seconds = Seconds(t0);
     return;
   }
-  s->success = true;
+  s->status = Status::Success(best.message);
   s->converged = best.converged;
-  s->message = best.message;
   s->cost = best.cost;
   s->parameters = setup.Decode(best.x.data());
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
@@ -128,8 +126,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       if (!m.shape.empty()) {
         f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention), m.shape);
         for (const Mode& other : solution.modes) {
-          f.mac_all.emplace_back(other.label,
-                                 Mac(ComparableShape(other, o.residuals.shape_convention), m.shape));
+          f.mac_all[other.label] = Mac(ComparableShape(other, o.residuals.shape_convention), m.shape);
         }
       }
       const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
@@ -151,11 +148,11 @@ void Identify(const ModalModel& model, const Dataset& dataset,
 
 std::string IdentifySummary::BriefReport() const {
   std::ostringstream o;
-  o << "ringid identify (" << MethodName(method) << "): "
-    << (success ? (converged ? "converged" : "not converged") : "FAILED")
+  o << "ringid identify (" << ToString(method) << "): "
+    << (status.ok() ? (converged ? "converged" : "not converged") : "FAILED")
     << ", cost " << cost << ", " << evaluations << " model evaluations in "
     << starts << " start(s), " << seconds * 1e3 << " ms";
-  if (!success) o << ": " << message;
+  if (!status.ok()) o << ": " << status.message;
   return o.str();
 }
 
@@ -163,8 +160,8 @@ std::string IdentifySummary::FullReport() const {
   std::ostringstream o;
   char line[256];
   o << BriefReport() << "\n";
-  if (!success) return o.str();
-  o << "  termination: " << message << "\n";
+  if (!status.ok()) return o.str();
+  o << "  termination: " << status.message << "\n";
   std::snprintf(line, sizeof line,
                 "  eq. (19) in-plane error %.3e, eq. (20) out-of-plane error %.3e\n",
                 relative_error_in_plane, relative_error_out_of_plane);
@@ -190,7 +187,7 @@ std::string IdentifySummary::FullReport() const {
     }
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-11s  %-15s %s\n",
                   ParamName(e.param), e.value, sd.c_str(),
-                  e.free || e.tied_to ? IdentifiabilityName(e.identifiable)
+                  e.free || e.tied_to ? ToString(e.identifiable)
                                       : "(fixed)",
                   e.tied_to ? (std::string("= ") + ParamName(*e.tied_to)).c_str()
                             : "");

@@ -2,6 +2,7 @@
 #ifndef RINGID_ESTIMATION_IDENTIFY_H_
 #define RINGID_ESTIMATION_IDENTIFY_H_
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
 #include "estimation/simplex.h"
+#include "estimation/status.h"
 #include "estimation/uncertainty.h"
 #include "model/rigid_ring_model.h"
 
@@ -42,6 +44,17 @@ struct ParameterEstimate {
   Identifiability identifiable = Identifiability::kYes;
   std::string reason;
   std::optional<double> std;  // physical units; none where not defined
+
+  template <class Archive>  // keyed by param in IdentifySummary
+  void Serialize(Archive* a) {
+    a->Visit("value", &value);
+    a->Derived("unit", std::string(Info(param).unit));
+    a->Visit("free", &free);
+    a->VisitIfSet("tied_to", &tied_to);
+    a->Visit("std", &std);
+    a->Visit("identifiable", &identifiable);
+    a->Visit("reason", &reason);
+  }
 };
 
 struct ModeFit {
@@ -54,17 +67,29 @@ struct ModeFit {
   double model_damping = 0;
   std::optional<double> mac;  // where a shape was measured
   // MAC against every model mode (by label), where a shape was measured.
-  std::vector<std::pair<ModeLabel, double>> mac_all;
+  std::map<ModeLabel, double> mac_all;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("label", &label);
+    a->Visit("measured_hz", &measured_hz);
+    a->Visit("measured_sigma_hz", &measured_sigma_hz);
+    a->Visit("model_hz", &model_hz);
+    a->Visit("model_label", &model_label);
+    a->Visit("model_damping_ratio", &model_damping);
+    a->VisitIfSet("measured_damping_ratio", &measured_damping);
+    a->VisitIfSet("mac", &mac);
+    a->Visit("mac_all", &mac_all);
+  }
 };
 
 struct IdentifySummary {
-  bool success = false;     // a fit was obtained (false: see message)
+  // Success: a fit was obtained, and message says how the winning start
+  // stopped; invalid input: nothing was fitted.
+  Status status;
   bool converged = false;   // the winning start met its convergence test
-  // The options or the dataset's setup were unusable (nothing was fitted);
-  // otherwise a failure is numerical.
-  bool invalid_input = false;
-  std::string message;
   Method method = Method::kLevenbergMarquardt;
+  FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
   double cost = 0;          // 1/2 sum of squared weighted residuals
   long evaluations = 0;     // model solutions, all starts
   double seconds = 0;
@@ -82,6 +107,30 @@ struct IdentifySummary {
 
   std::string BriefReport() const;
   std::string FullReport() const;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("method", &method);
+    a->Visit("frequency_weighting", &frequency_weighting);
+    status.Serialize(a);
+    a->Visit("converged", &converged);
+    a->Visit("cost", &cost);
+    a->Visit("evaluations", &evaluations);
+    a->Visit("seconds", &seconds);
+    a->Visit("starts", &starts);
+    a->Visit("start_costs", &start_costs);
+    a->Group("relative_error", [&](auto* g) {
+      g->Visit("in_plane_eq19", &relative_error_in_plane);
+      g->Visit("out_of_plane_eq20", &relative_error_out_of_plane);
+    });
+    a->VisitKeyed("parameters", &estimates, &ParameterEstimate::param);
+    a->Group("covariance", [&](auto* g) {
+      g->Visit("names", &coordinate_names);
+      g->Derived("coordinates", std::string("log for positive parameters"));
+      uncertainty.Serialize(g);
+    });
+    a->Visit("modes", &modes);
+  }
 };
 
 // Never aborts: invalid setups and numerical failures come back in

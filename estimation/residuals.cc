@@ -84,7 +84,7 @@ bool ModalResiduals::Pair(const double* x, ModalSolution* solution,
   const auto& measured = dataset_.modes;
   const auto& modes = solution->modes;
   pairs->assign(measured.size(), -1);
-  // Measured shapes decide their pairing by MAC (contract section 2) ...
+  // Measured shapes decide their pairing by MAC (docs/conventions.md §2) ...
   std::vector<int> shaped;
   for (int i = 0; i < static_cast<int>(measured.size()); ++i) {
     if (!measured[i].shape.empty()) shaped.push_back(i);

@@ -25,8 +25,17 @@ enum class FrequencyWeighting {
 
 // How a measured real shape was made from a complex eigenvector.
 enum class ShapeConvention {
-  kContract,  // contract section 2: largest displacement real, real part
+  kContract,  // docs/conventions.md §2: largest displacement real, real part
   kPaper,     // the paper's Tables 4-5 (Mode::PaperShape)
+};
+
+template <>
+struct EnumNames<FrequencyWeighting> {
+  static constexpr std::array<const char*, 2> kNames = {"sigma", "relative"};
+};
+template <>
+struct EnumNames<ShapeConvention> {
+  static constexpr std::array<const char*, 2> kNames = {"contract", "paper"};
 };
 
 struct ResidualOptions {

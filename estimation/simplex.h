@@ -1,5 +1,6 @@
-// Downhill Simplex (Nelder and Mead 1965), the method of the paper, on the
-// same objective as Levenberg-Marquardt for a like-for-like comparison.
+// Downhill Simplex (Nelder and Mead 1965), the method of the paper
+// (docs/model.md section 10), on the same objective as Levenberg-Marquardt
+// for a like-for-like comparison.
 #ifndef RINGID_ESTIMATION_SIMPLEX_H_
 #define RINGID_ESTIMATION_SIMPLEX_H_
 

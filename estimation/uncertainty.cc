@@ -10,15 +10,6 @@
 
 namespace ringid {
 
-const char* IdentifiabilityName(Identifiability c) {
-  switch (c) {
-    case Identifiability::kYes: return "yes";
-    case Identifiability::kPracticallyNo: return "practically_no";
-    case Identifiability::kNo: return "no";
-  }
-  return "no";
-}
-
 bool UncertaintyOptions::IsValid(std::string* why) const {
   if (!(rank_tolerance > 0 && rank_tolerance < 1)) {
     *why = "rank_tolerance must lie in (0, 1)";
@@ -59,13 +50,13 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
   u.std.assign(n, std::numeric_limits<double>::quiet_NaN());
   if (n == 0) {
     u.ok = true;
-    u.error = "no free parameters";
+    u.error = u.covariance_error = "no free parameters";
     return u;
   }
   Eigen::VectorXd x = x_in;
   Eigen::MatrixXd J;
   if (!EvaluateJacobian(residuals, x, &J)) {
-    u.error = "the Jacobian could not be evaluated at the fitted point";
+    u.error = u.covariance_error = "the Jacobian could not be evaluated at the fitted point";
     return u;
   }
   ceres::CostFunction* cost = NewCentralDifferenceCost(residuals);

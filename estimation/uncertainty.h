@@ -13,7 +13,10 @@
 namespace ringid {
 
 enum class Identifiability { kYes, kPracticallyNo, kNo };
-const char* IdentifiabilityName(Identifiability c);
+template <>
+struct EnumNames<Identifiability> {
+  static constexpr std::array<const char*, 3> kNames = {"yes", "practically_no", "no"};
+};
 
 struct UncertaintyOptions {
   // Singular values below rank_tolerance * largest count as zero; the same
@@ -33,7 +36,7 @@ struct Uncertainty {
   bool ok = false;           // the Jacobian could be evaluated
   std::string error;
   bool covariance_ok = false;  // ceres::Covariance::Compute succeeded
-  std::string covariance_error;
+  std::string covariance_error;  // why not, when !covariance_ok
   Eigen::MatrixXd jacobian;        // weighted residuals by coordinates
   Eigen::VectorXd singular_values;  // descending, min(m, n) of them
   int rank = 0;
@@ -44,6 +47,17 @@ struct Uncertainty {
   std::vector<Identifiability> classes;  // per coordinate
   std::vector<std::string> reasons;
   std::vector<double> std;  // per coordinate; NaN where not defined
+
+  // The report's part; classes and std go with each parameter.
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rank", &rank);
+    a->Visit("computed", &covariance_ok);
+    a->Visit("error", &covariance_error);
+    a->Visit("matrix", &covariance);
+    a->Visit("singular_values", &singular_values);
+    a->Visit("condition_number", &condition_number);
+  }
 };
 
 // The weighted Jacobian dr/dx at x by the fit's own central differences.

@@ -21,5 +21,5 @@ int main(int argc, char** argv) {
     std::printf("%-10s %12.6g", ringid::ParamName(e.param), e.value);
     if (e.std) std::printf(" +- %.2g\n", *e.std); else std::printf("  (std not defined)\n");
   }
-  return summary.success ? 0 : 1;
+  return summary.status.ok() ? 0 : 1;
 }

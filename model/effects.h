@@ -1,4 +1,4 @@
-// Unmodelled effects of contract section 4: each one small unit that extends
+// Unmodelled effects of docs/conventions.md §4: each one small unit that extends
 // the baseline system and leaves it unchanged with its parameters at zero.
 #ifndef RINGID_MODEL_EFFECTS_H_
 #define RINGID_MODEL_EFFECTS_H_
@@ -22,7 +22,8 @@ class Effect {
   virtual void Apply(const Parameters& p, MechanicalSystem* s) const = 0;
 };
 
-// The catalogue, in contract order; pointers live for the program's life.
+// The catalogue, in the order of docs/conventions.md §4; pointers live for
+// the program's life.
 const std::vector<const Effect*>& EffectCatalogue();
 const Effect* FindEffect(const std::string& name);
 

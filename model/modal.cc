@@ -98,7 +98,8 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
     mode.frequency_hz = lam.imag() / (2 * M_PI);
     mode.damping_ratio = -lam.real() / std::abs(lam);
     CVec v = V.col(j).head(k);
-    // For w^T (lambda^2 M + lambda C + K) = 0: w = M^-T y2 (see ERRATA eq. 13).
+    // For w^T (lambda^2 M + lambda C + K) = 0: w = M^-T y2 (see docs/model.md
+    // section 9).
     CVec w = have_left ? CVec(Minv_T * Y.row(j).tail(k).transpose()) : CVec(v.conjugate());
     mode.energy.fill(0);
     double labelled = 0;

@@ -21,7 +21,7 @@ struct Mode {
   ModeLabel label;
   // The eigenvalue lambda of A = [[0, I], [-M^-1 K, -M^-1 C]] with Im > 0.
   std::complex<double> eigenvalue;
-  double frequency_hz;   // damped: Im(lambda) / 2 pi (contract section 2)
+  double frequency_hz;   // damped: Im(lambda) / 2 pi (docs/conventions.md §2)
   double damping_ratio;  // -Re(lambda) / |lambda|
   // Displacement eigenvector, rotated so its largest-magnitude component is
   // real and positive, scaled so that component is 1; zero off its block.
@@ -31,10 +31,11 @@ struct Mode {
   std::array<double, kNumLabels> energy;
 
   Plane plane() const { return LabelPlane(label); }
-  // Contract convention for comparison with a measured real shape.
+  // The convention of docs/conventions.md §2 for comparison with a measured real shape.
   RealShapeVector RealShape() const { return shape.real(); }
-  // The paper's Tables 4-5 convention: real part of the displacement half of
-  // the state vector [v; lambda v] scaled to unit 2-norm, largest entry real.
+  // The paper's Tables 4-5 convention (docs/model.md section 8): real part of
+  // the displacement half of the state vector [v; lambda v] scaled to unit
+  // 2-norm, largest entry real.
   RealShapeVector PaperShape() const;
 };
 

@@ -1,9 +1,12 @@
-// Degrees of freedom, mode labels and planes: the names of contract section 1.
+// Degrees of freedom, mode labels and planes: the names of docs/conventions.md §1.
 #ifndef RINGID_MODEL_NAMES_H_
 #define RINGID_MODEL_NAMES_H_
 
+#include <array>
 #include <optional>
 #include <string>
+
+#include "model/enum_names.h"
 
 namespace ringid {
 
@@ -27,16 +30,36 @@ enum class ModeLabel : int {
 };
 inline constexpr int kNumLabels = 10;
 
-const char* DofName(Dof dof);
-std::optional<Dof> ParseDof(const std::string& name);
+template <>
+struct EnumNames<Dof> {
+  static constexpr std::array<const char*, kNumDofs> kNames = {
+      "x_b", "z_b", "theta_a", "theta_b", "y_b", "gamma_b", "psi_b",
+      "x_a", "z_a", "y_a"};
+};
+template <>
+struct EnumNames<ModeLabel> {
+  static constexpr std::array<const char*, kNumLabels> kNames = {
+      "rotation_in_phase", "rotation_anti_phase", "vertical", "longitudinal",
+      "camber", "yaw", "lateral",
+      "hub_longitudinal", "hub_vertical", "hub_lateral"};
+};
+template <>
+struct EnumNames<Plane> {
+  static constexpr std::array<const char*, 3> kNames = {"in_plane", "out_of_plane", "hub"};
+};
+
+inline const char* DofName(Dof dof) { return ToString(dof); }
+inline std::optional<Dof> ParseDof(const std::string& name) { return FromString<Dof>(name); }
 Plane DofPlane(Dof dof);
 
-const char* LabelName(ModeLabel label);
-std::optional<ModeLabel> ParseLabel(const std::string& name);
+inline const char* LabelName(ModeLabel label) { return ToString(label); }
+inline std::optional<ModeLabel> ParseLabel(const std::string& name) {
+  return FromString<ModeLabel>(name);
+}
 Plane LabelPlane(ModeLabel label);
 Dof LabelHome(ModeLabel label);
 
-const char* PlaneName(Plane plane);
+inline const char* PlaneName(Plane plane) { return ToString(plane); }
 
 }  // namespace ringid
 

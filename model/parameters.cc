@@ -8,7 +8,7 @@ namespace {
 
 const std::array<ParameterInfo, kNumParams> kCatalogue = {{
 #define RINGID_INFO(name, unit, domain, group, text) \
-  {#name, unit, Domain::domain, Group::group, text},
+  {unit, Domain::domain, Group::group, text},
     RINGID_PARAMETERS(RINGID_INFO)
 #undef RINGID_INFO
 }};
@@ -28,13 +28,6 @@ double TypicalScale(Param p) {
     case Param::k_xy: return 1e4;       // N/m
     default: return 1.0;
   }
-}
-
-std::optional<Param> ParseParam(const std::string& name) {
-  for (int i = 0; i < kNumParams; ++i) {
-    if (name == kCatalogue[i].name) return ParamAt(i);
-  }
-  return std::nullopt;
 }
 
 Parameters::Parameters() {

@@ -1,10 +1,12 @@
-// The parameter catalogue (contract section 1 and 4) and a parameter set.
+// The parameter catalogue (docs/conventions.md §1 and §4) and a parameter set.
 #ifndef RINGID_MODEL_PARAMETERS_H_
 #define RINGID_MODEL_PARAMETERS_H_
 
 #include <array>
 #include <optional>
 #include <string>
+
+#include "model/enum_names.h"
 
 namespace ringid {
 
@@ -62,7 +64,6 @@ inline constexpr int kNumParams = 0 RINGID_PARAMETERS(RINGID_COUNT);
 #undef RINGID_COUNT
 
 struct ParameterInfo {
-  const char* name;
   const char* unit;
   Domain domain;
   Group group;
@@ -74,8 +75,14 @@ const ParameterInfo& Info(Param p);
 // parameters); estimation moves such a parameter in units of it. 1 for the
 // positive ones, which move in log space.
 double TypicalScale(Param p);
-inline const char* ParamName(Param p) { return Info(p).name; }
-std::optional<Param> ParseParam(const std::string& name);
+template <>
+struct EnumNames<Param> {
+#define RINGID_NAME(name, unit, domain, group, text) #name,
+  static constexpr std::array<const char*, kNumParams> kNames = {RINGID_PARAMETERS(RINGID_NAME)};
+#undef RINGID_NAME
+};
+inline const char* ParamName(Param p) { return ToString(p); }
+inline std::optional<Param> ParseParam(const std::string& name) { return FromString<Param>(name); }
 inline Param ParamAt(int i) { return static_cast<Param>(i); }
 
 // A value for every parameter of the catalogue; effect parameters default to

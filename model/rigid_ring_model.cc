@@ -44,7 +44,7 @@ MechanicalSystem RigidRingModel::Assemble(const Parameters& p) const {
   s.AddSpring(L::kLongitudinal, p[P::K_cx] / p[P::sigma_cx],
               {{Dof::kXb, 1}, {Dof::kThetaB, -p[P::r_e0]}});
 
-  // Out-of-plane, eq. (15) with ERRATA: q = [y_b, gamma_b, psi_b].
+  // Out-of-plane, eq. (15) as corrected in docs/model.md: q = [y_b, gamma_b, psi_b].
   s.AddMass(Dof::kYb, p[P::m_b]);
   s.AddMass(Dof::kGammaB, p[P::I_bx]);
   s.AddMass(Dof::kPsiB, p[P::I_bz]);

@@ -1,4 +1,4 @@
-// The standing rigid-ring model of ERRATA.md, optionally extended by effects.
+// The standing rigid-ring model of docs/model.md, optionally extended by effects.
 #ifndef RINGID_MODEL_RIGID_RING_MODEL_H_
 #define RINGID_MODEL_RIGID_RING_MODEL_H_
 
@@ -24,7 +24,7 @@ class RigidRingModel final : public ModalModel {
  public:
   explicit RigidRingModel(std::vector<const Effect*> effects = {});
 
-  // Eqs. (12) and (15) as corrected in ERRATA.md, then each effect.
+  // Eqs. (12) and (15) as corrected in docs/model.md, then each effect.
   MechanicalSystem Assemble(const Parameters& p) const;
   ModalSolution Solve(const Parameters& p) const override;
   std::vector<Param> parameters() const override;

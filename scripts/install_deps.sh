@@ -3,7 +3,7 @@
 # as arguments (scripts/fuzz.sh adds clang), if any is missing.
 set -euo pipefail
 packages=(g++ cmake make libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
-          libgtest-dev libbenchmark-dev nlohmann-json3-dev libboost-dev gnuplot-nox "$@")
+          libgtest-dev libbenchmark-dev nlohmann-json3-dev libssl-dev libboost-dev gnuplot-nox "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

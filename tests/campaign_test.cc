@@ -40,9 +40,10 @@ std::string MakeDatasets(const std::string& name) {
 }
 
 // A report without its timings, which are all that may differ between runs.
+// The report without its timings and the command line that made it.
 nlohmann::json Untimed(nlohmann::json j) {
   if (j.is_object()) {
-    for (const char* key : {"seconds", "seconds_per_fit"}) j.erase(key);
+    for (const char* key : {"seconds", "seconds_per_fit", "command_line"}) j.erase(key);
     for (auto& [k, v] : j.items()) v = Untimed(v);
   } else if (j.is_array()) {
     for (auto& v : j) v = Untimed(v);

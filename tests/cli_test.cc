@@ -1,4 +1,5 @@
-// The ringid tool end to end: reports, and the error contract.
+// The ringid tool end to end: reports, and the error contract (exit status,
+// docs/conventions.md §6).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

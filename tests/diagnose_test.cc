@@ -34,7 +34,7 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
   o.held_out = held_out;
   DiagnosisReport r;
   Diagnose(d, o, &r);
-  EXPECT_TRUE(r.success) << r.message;
+  EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
 
@@ -115,7 +115,7 @@ TEST(DiagnoseTest, ThePapersData) {
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
   DiagnosisReport r;
   Diagnose(d, DiagnoseOptions{}, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.verdict, "none") << r.explanation;
   // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
   // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits: a yaw
@@ -124,7 +124,7 @@ TEST(DiagnoseTest, ThePapersData) {
   // one group.
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1_r_l0_physical.json"), &d, &e));
   Diagnose(d, DiagnoseOptions{}, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_TRUE(r.significant);
   const auto& g = r.indistinguishable;
   EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;

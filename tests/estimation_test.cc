@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "datasets/paper.h"
 #include "estimation/identify.h"
+#include "estimation/statistics.h"
 #include "tests/test_support.h"
 
 namespace ringid {
@@ -32,7 +34,7 @@ TEST(IdentifyTest, LeastSquaresFitsTable1ExactlyAndSaysWhatItDetermines) {
   const Dataset d = Table1();
   IdentifySummary s;
   Identify(RigidRingModel(), d, IdentifyOptions{}, &s);
-  ASSERT_TRUE(s.success) << s.message;
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_LT(s.relative_error_in_plane, 1e-8);
   EXPECT_LT(s.relative_error_out_of_plane, 1e-8);
   // 16 free coordinates, 7 frequencies: rank 7 at most.
@@ -52,10 +54,10 @@ TEST(IdentifyTest, SimplexBeatsThePapersStoppingPointOnTable1) {
   o.starts = 1;
   IdentifySummary s;
   Identify(RigidRingModel(), Table1(), o, &s);
-  ASSERT_TRUE(s.success) << s.message;
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
   // The paper's simplex stopped at 1.41e-3 (eq. 19) and 6.1e-3 (eq. 20).
-  EXPECT_LT(s.relative_error_in_plane, 1.41e-3);
-  EXPECT_LT(s.relative_error_out_of_plane, 6.1e-3);
+  EXPECT_LT(s.relative_error_in_plane, kPaperSimplexErrorInPlane);
+  EXPECT_LT(s.relative_error_out_of_plane, kPaperSimplexErrorOutOfPlane);
   EXPECT_GT(s.evaluations, 0);
 }
 
@@ -92,7 +94,7 @@ TEST(IdentifyTest, RecoversASyntheticTruthWithinItsReportedUncertainty) {
   o.starts = 2;
   IdentifySummary s;
   Identify(RigidRingModel(), d, o, &s);
-  ASSERT_TRUE(s.success) << s.message;
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_EQ(s.uncertainty.rank, 10);
   for (Param p : kFree) {
     const ParameterEstimate& e = Find(s, p);
@@ -110,7 +112,7 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   // Reported standard deviations (log space) at one noisy replicate.
   IdentifySummary first;
   Identify(RigidRingModel(), WellPosed(truth, &rng), o, &first);
-  ASSERT_TRUE(first.success);
+  ASSERT_TRUE(first.status.ok());
   const int n = static_cast<int>(std::size(kFree));
   const int replicates = 120;
   std::vector<double> sum(n, 0), sum2(n, 0);
@@ -118,7 +120,7 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   for (int r = 0; r < replicates; ++r) {
     IdentifySummary s;
     Identify(RigidRingModel(), WellPosed(truth, &rng), o, &s);
-    ASSERT_TRUE(s.success);
+    ASSERT_TRUE(s.status.ok());
     for (int i = 0; i < n; ++i) {
       const ParameterEstimate& e = Find(s, kFree[i]);
       const double dev = std::log(e.value / truth[kFree[i]]);
@@ -126,7 +128,7 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
       sum2[i] += dev * dev;
       if (e.std) {
         ++total;
-        if (std::abs(dev) < 1.96 * *e.std / e.value) ++inside;
+        if (std::abs(dev) < kNormal95 * *e.std / e.value) ++inside;
       }
     }
   }
@@ -152,21 +154,21 @@ TEST(IdentifyTest, DegenerateSetupsFailCleanly) {
   fixed.initial.clear();
   IdentifySummary s;
   Identify(RigidRingModel(), fixed, IdentifyOptions{}, &s);
-  EXPECT_TRUE(s.success) << s.message;
+  EXPECT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_EQ(s.uncertainty.rank, 0);
   // A free parameter without a value is refused with its name.
   Dataset missing = d;
   missing.initial.erase(Param::K_cx);
   Identify(RigidRingModel(), missing, IdentifyOptions{}, &s);
-  EXPECT_FALSE(s.success);
-  EXPECT_TRUE(s.invalid_input);
-  EXPECT_NE(s.message.find("K_cx"), std::string::npos);
+  EXPECT_FALSE(s.status.ok());
+  EXPECT_TRUE(s.status.invalid_input());
+  EXPECT_NE(s.status.message.find("K_cx"), std::string::npos);
   // Invalid options are refused, not asserted.
   IdentifyOptions bad;
   bad.starts = 0;
   Identify(RigidRingModel(), d, bad, &s);
-  EXPECT_FALSE(s.success);
-  EXPECT_TRUE(s.invalid_input);
+  EXPECT_FALSE(s.status.ok());
+  EXPECT_TRUE(s.status.invalid_input());
 }
 
 }  // namespace
@@ -183,19 +185,20 @@ TEST(CompareTest, BothMethodsFromTheSameStartsAndThePapersOwnErrorsAtTable2) {
   o.fit.simplex.max_evaluations = 5000;
   ComparisonReport r;
   CompareMethods(RigidRingModel(), Table1(), o, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_EQ(r.methods.size(), 2u);
   for (const MethodRun& m : r.methods) {
     EXPECT_EQ(m.final_costs.size(), 5u);
-    EXPECT_GT(m.success_rate, 0.0) << MethodName(m.method);
+    EXPECT_GT(m.success_rate, 0.0) << ToString(m.method);
     for (double c : m.final_costs) EXPECT_LE(c, r.initial_cost * (1 + 1e-12));
   }
   // Table 1 can be fitted exactly (7 frequencies, 16 unknowns).
   EXPECT_LT(r.best_cost, 1e-12);
   // At Table 2 (the dataset's initial point, with the recovered inertias)
   // the paper reported the simplex's stopping errors 1.41e-3 and 6.1e-3.
-  EXPECT_NEAR(r.initial_error_in_plane, 1.41e-3, 0.1 * 1.41e-3);
-  EXPECT_NEAR(r.initial_error_out_of_plane, 6.1e-3, 0.1 * 6.1e-3);
+  EXPECT_NEAR(r.initial_error_in_plane, kPaperSimplexErrorInPlane, 0.1 * kPaperSimplexErrorInPlane);
+  EXPECT_NEAR(r.initial_error_out_of_plane, kPaperSimplexErrorOutOfPlane,
+              0.1 * kPaperSimplexErrorOutOfPlane);
 }
 
 }  // namespace

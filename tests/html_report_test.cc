@@ -1,5 +1,6 @@
 // ringid report: every kind of JSON report as one self-contained HTML page
-// with its figures drawn by gnuplot; the error contract; screenshots.
+// with its figures drawn by gnuplot; the error contract (exit status,
+// docs/conventions.md §6); screenshots.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>

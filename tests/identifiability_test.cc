@@ -35,7 +35,7 @@ TEST(IdentifiabilityTest, Table1DeterminesOnlyRatiosOfContactStiffnessAndRelaxat
   o.profile_steps = 0;  // the structure, not the intervals, is tested here
   IdentifiabilityReport r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 7);
   EXPECT_NE(r.rank_explanation.find("7 observations cannot determine 16"), std::string::npos)
       << r.rank_explanation;
@@ -79,7 +79,7 @@ TEST(IdentifiabilityTest, ProfileAndWaldIntervalsAgreeOnAWellPosedProblem) {
                               true);
   IdentifiabilityReport r;
   AnalyzeIdentifiability(RigidRingModel(), d, IdentifiabilityOptions{}, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 6);
   EXPECT_TRUE(r.advice.empty());
   for (const auto& p : r.parameters) {
@@ -101,7 +101,7 @@ TEST(IdentifiabilityTest, VerticalStiffnessesFromOneFrequencyAreOneCombination) 
   o.profile_steps = 0;
   IdentifiabilityReport r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
-  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 2);
   EXPECT_EQ(Find(r, Param::k_bz).identifiable, Identifiability::kNo);
   EXPECT_EQ(Find(r, Param::k_cz).identifiable, Identifiability::kNo);

@@ -1,4 +1,4 @@
-// The model against closed forms and the paper's Tables 3-5.
+// The model against closed forms and the paper's Tables 3-5 (docs/model.md section 12).
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -83,9 +83,10 @@ TEST(ModelTest, Table4And5EigenvectorsUnderThePapersLabels) {
 }
 
 TEST(ModelTest, DominantComponentRuleWouldMislabelTable4) {
-  // The trap of ERRATA.md: the 91.6 Hz mode is 'longitudinal' although its
-  // theta components dominate; its x_b share of kinetic energy is not the
-  // largest either. The labels above must not come from such a rule.
+  // The trap of docs/model.md section 9: the 91.6 Hz mode is 'longitudinal'
+  // although its theta components dominate; its x_b share of kinetic energy
+  // is not the largest either. The labels above must not come from such a
+  // rule.
   const Parameters p = PaperIdentified();
   const ModalSolution s = RigidRingModel().Solve(p);
   const Mode* longitudinal = s.Find(ModeLabel::kLongitudinal);
@@ -103,8 +104,9 @@ TEST(ModelTest, DominantComponentRuleWouldMislabelTable4) {
 }
 
 TEST(ModelTest, YawLabelFollowsTheYawModeThroughTheCamberCrossing) {
-  // Yaw is decoupled one way (ERRATA: S is block triangular): its mode is
-  // pure psi_b with the 1-DOF frequency, wherever it sits against camber.
+  // Yaw is decoupled one way (docs/model.md section 6: S is block
+  // triangular): its mode is pure psi_b with the 1-DOF frequency, wherever it
+  // sits against camber.
   Parameters p = PaperIdentified();
   for (double k = 900; k <= 3000; k += 50) {  // below ~620 yaw is overdamped
     p[Param::k_bpsi] = k;

@@ -13,7 +13,8 @@
 namespace ringid::testing {
 
 std::string SourcePath(const std::string& relative);
-// Table 2 of the paper (with its ties), typed in from the paper.
+// Table 2 of the paper (with its ties), typed in from the paper
+// (docs/model.md section 12).
 Parameters Table2();
 // Table 2 plus the inertias shipped in datasets/paper/parameters.json.
 Parameters PaperIdentified();
@@ -24,7 +25,7 @@ Dataset SyntheticDataset(const RigidRingModel& model, const Parameters& truth,
                          double freq_rel_sigma, double damping_rel_sigma,
                          double shape_sigma, std::mt19937_64* rng);
 
-// Every field of the contract's dataset broken in every way that makes
+// Every field of the dataset of docs/conventions.md §3 broken in every way that makes
 // sense, as file text; `field` is what the error line must name ("" for text
 // that is not JSON at all).
 struct MalformedDataset {

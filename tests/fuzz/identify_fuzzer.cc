@@ -90,8 +90,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   o.method = (in.Byte() & 1) ? Method::kSimplex : Method::kLevenbergMarquardt;
   IdentifySummary s;
   Identify(RigidRingModel(), d, o, &s);
-  if (!s.success && s.message.empty()) std::abort();
-  if (s.success && !std::isfinite(s.cost)) std::abort();
+  if (!s.status.ok() && s.status.message.empty()) std::abort();
+  if (s.status.ok() && !std::isfinite(s.cost)) std::abort();
   if (s.uncertainty.covariance_ok && !s.uncertainty.covariance.allFinite()) std::abort();
   return 0;
 }

@@ -1,0 +1,17 @@
+// Statistical constants, defined once.
+#ifndef RINGID_ESTIMATION_STATISTICS_H_
+#define RINGID_ESTIMATION_STATISTICS_H_
+
+namespace ringid {
+
+// The two-sided 95 % point of the standard normal: a 95 % Wald interval is
+// value +- kNormal95 std.
+inline constexpr double kNormal95 = 1.959963984540054;
+
+// The 95 % point of chi-square with one degree of freedom (= kNormal95^2):
+// a profile-likelihood 95 % interval ends where 2 delta cost passes it.
+inline constexpr double kChiSquare1Dof95 = 3.841458820694124;
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_STATISTICS_H_

@@ -1,0 +1,121 @@
+#include "report/report.h"
+
+#include <openssl/evp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace ringid {
+namespace {
+
+// SHA-256 of a file's bytes in hex; "" where it cannot be read.
+std::string FileSha256(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int size = 0;
+  if (!EVP_Digest(bytes.data(), bytes.size(), digest, &size, EVP_sha256(), nullptr)) return "";
+  static const char kHex[] = "0123456789abcdef";
+  std::string hex;
+  for (unsigned int i = 0; i < size; ++i) {
+    hex += kHex[digest[i] >> 4];
+    hex += kHex[digest[i] & 15];
+  }
+  return hex;
+}
+
+}  // namespace
+
+Provenance MakeProvenance(int argc, const char* const* argv,
+                          const std::vector<std::pair<std::string, std::string>>& role_paths,
+                          std::optional<long> seed) {
+  Provenance p;
+  p.ringid_version = RINGID_VERSION;
+  p.command_line.assign(argv, argv + argc);
+  for (const auto& [role, path] : role_paths) {
+    if (!path.empty()) p.inputs.push_back({role, path, FileSha256(path)});
+  }
+  p.seed = seed;
+  return p;
+}
+
+bool ReportHeader(const Json& json, ReportKind* kind, std::string* error) {
+  if (!json.is_object() || !json.contains("report")) {
+    *error = "report: missing (not a ringid report)";
+    return false;
+  }
+  if (!JsonReader::FromJson(json["report"], "report", kind, error)) return false;
+  const auto version = json.find("schema_version");
+  if (version == json.end() || !version->is_number_integer()) {
+    *error = "schema_version: missing (a report of ringid before schema " +
+             std::to_string(kReportSchemaVersion) + "; write it again with this ringid)";
+    return false;
+  }
+  if (version->get<long>() != kReportSchemaVersion) {
+    *error = "schema_version: " + std::to_string(version->get<long>()) + ", this ringid reads " +
+             std::to_string(kReportSchemaVersion);
+    return false;
+  }
+  return true;
+}
+
+std::string CampaignTable(const CampaignBody& c) {
+  const bool identify = c.command == ReportKind::kIdentify;
+  const auto number = [](const std::optional<double>& v, const char* format) {
+    char text[48] = "-";
+    if (v && std::isfinite(*v)) std::snprintf(text, sizeof text, format, *v);
+    return std::string(text);
+  };
+  std::string table =
+      identify ? "| dataset | status | cost | eq. (19) | eq. (20) | seconds |\n"
+                 "| --- | --- | --- | --- | --- | --- |\n"
+               : "| dataset | verdict | indistinguishable | gap before | gap after | shrink | seconds |\n"
+                 "| --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const CampaignRow& r : c.datasets) {
+    std::string status = r.status.ok() ? (r.converged ? "converged" : "not converged")
+                                       : std::string("failed: ") + r.status.message;
+    table += "| " + r.dataset + " | ";
+    if (identify) {
+      table += status + " | " + number(r.cost, "%.4g") + " | " +
+               number(r.relative_error_in_plane_eq19, "%.3e") + " | " +
+               number(r.relative_error_out_of_plane_eq20, "%.3e");
+    } else {
+      std::string group;
+      for (const std::string& g : r.indistinguishable) group += (group.empty() ? "" : "+") + g;
+      table += (r.status.ok() ? r.verdict.value_or("-") : status) + " | " + group + " | " +
+               number(r.gap_before, "%.4g") + " | " + number(r.gap_after, "%.4g") + " | " +
+               number(r.shrink ? std::optional(100 * *r.shrink) : std::nullopt, "%.1f %%");
+    }
+    table += " | " + number(r.seconds, "%.3g") + " |\n";
+  }
+  return table;
+}
+
+PredictBody PredictBody::From(const ModalSolution& solution) {
+  PredictBody b;
+  b.status = solution.ok ? Status::Success() : Status::Failed(solution.error);
+  for (const Mode& m : solution.modes) {
+    PredictedMode p;
+    p.label = m.label;
+    p.model_hz = m.frequency_hz;
+    p.damping_ratio = m.damping_ratio;
+    p.label_energy_share = m.energy[static_cast<int>(m.label)];
+    const RealShapeVector paper = m.PaperShape();
+    for (int i = 0; i < kNumDofs; ++i) {
+      if (m.shape[i] == std::complex<double>(0, 0)) continue;
+      p.shape[static_cast<Dof>(i)] = m.shape[i];
+      p.paper_eigenvector[static_cast<Dof>(i)] = paper[i];
+    }
+    b.modes.push_back(std::move(p));
+  }
+  b.overdamped = solution.vanished;
+  return b;
+}
+
+}  // namespace ringid

@@ -1,0 +1,222 @@
+// The typed reports ringid writes: one envelope (kind, schema version,
+// provenance) around one body per kind. Each body lists its fields once in
+// Serialize; the JSON writer and reader (report/archive.h) follow that list,
+// so a report written, read and written again is byte-identical.
+#ifndef RINGID_REPORT_REPORT_H_
+#define RINGID_REPORT_REPORT_H_
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "estimation/compare.h"
+#include "estimation/diagnose.h"
+#include "estimation/identifiability.h"
+#include "estimation/identify.h"
+#include "estimation/status.h"
+#include "model/modal.h"
+#include "report/archive.h"
+
+namespace ringid {
+
+// Raised whenever a field is renamed, removed or changes meaning.
+inline constexpr int kReportSchemaVersion = 2;
+
+enum class ReportKind {
+  kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign,
+};
+template <>
+struct EnumNames<ReportKind> {
+  static constexpr std::array<const char*, 6> kNames = {
+      "identify", "predict", "identifiability", "compare", "diagnose", "campaign"};
+};
+
+struct InputFile {
+  std::string role;    // the flag it came from, e.g. "dataset"
+  std::string path;
+  std::string sha256;  // of the bytes read; "" where it could not be read
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("role", &role);
+    a->Visit("path", &path);
+    a->Visit("sha256", &sha256);
+  }
+};
+
+// What made the report: enough to run it again and to know it is the same.
+struct Provenance {
+  std::string ringid_version;
+  std::vector<std::string> command_line;
+  std::vector<InputFile> inputs;
+  std::optional<long> seed;          // of random starts or noise, where used
+  std::string derivatives = "numeric";  // how Jacobians were taken
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("ringid_version", &ringid_version);
+    a->Visit("command_line", &command_line);
+    a->Visit("inputs", &inputs);
+    a->Visit("seed", &seed);
+    a->Visit("derivatives", &derivatives);
+  }
+};
+
+// The provenance of this process: version, argv, and each input's SHA-256.
+Provenance MakeProvenance(int argc, const char* const* argv,
+                          const std::vector<std::pair<std::string, std::string>>& role_paths,
+                          std::optional<long> seed);
+
+// An analysis of one dataset: identify, identifiability, compare, diagnose.
+template <class Result>
+struct DatasetBody {
+  std::string dataset;  // the dataset's name
+  Result result;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("dataset", &dataset);
+    result.Serialize(a);
+  }
+};
+
+struct PredictedMode {
+  ModeLabel label = ModeLabel::kVertical;
+  double model_hz = 0;        // damped (docs/conventions.md §2)
+  double damping_ratio = 0;
+  double label_energy_share = 0;
+  std::map<Dof, std::complex<double>> shape;  // non-zero components
+  std::map<Dof, double> paper_eigenvector;    // Tables 4-5 convention
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("label", &label);
+    a->Derived("plane", LabelPlane(label));
+    a->Visit("model_hz", &model_hz);
+    a->Visit("damping_ratio", &damping_ratio);
+    a->Visit("label_energy_share", &label_energy_share);
+    a->Visit("shape", &shape);
+    a->Visit("paper_eigenvector", &paper_eigenvector);
+  }
+};
+
+struct PredictBody {
+  Status status;
+  std::vector<PredictedMode> modes;
+  std::vector<ModeLabel> overdamped;  // labels whose roots are real
+
+  static PredictBody From(const ModalSolution& solution);
+  template <class Archive>
+  void Serialize(Archive* a) {
+    status.Serialize(a);
+    a->Visit("modes", &modes);
+    a->Visit("overdamped", &overdamped);
+  }
+};
+
+// One dataset of a campaign: its report file and the summary's columns.
+struct CampaignRow {
+  std::string dataset;      // the file
+  std::string report_file;
+  Status status;
+  double seconds = 0;
+  // identify
+  std::optional<double> cost, relative_error_in_plane_eq19, relative_error_out_of_plane_eq20;
+  bool converged = false;
+  // diagnose
+  std::optional<std::string> verdict;
+  std::vector<std::string> indistinguishable;
+  std::optional<double> gap_before, gap_after, shrink;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("dataset", &dataset);
+    a->Visit("report_file", &report_file);
+    status.Serialize(a);
+    a->Visit("seconds", &seconds);
+    a->VisitIfSet("cost", &cost);
+    a->VisitIfSet("relative_error_in_plane_eq19", &relative_error_in_plane_eq19);
+    a->VisitIfSet("relative_error_out_of_plane_eq20", &relative_error_out_of_plane_eq20);
+    a->Visit("converged", &converged);
+    a->VisitIfSet("verdict", &verdict);
+    a->Visit("indistinguishable", &indistinguishable);
+    a->VisitIfSet("gap_before", &gap_before);
+    a->VisitIfSet("gap_after", &gap_after);
+    a->VisitIfSet("shrink", &shrink);
+  }
+};
+
+struct CampaignBody {
+  ReportKind command = ReportKind::kIdentify;  // identify or diagnose
+  std::string shard;  // I/N
+  int jobs = 1;
+  double seconds = 0;
+  std::vector<CampaignRow> datasets;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("command", &command);
+    a->Visit("shard", &shard);
+    a->Visit("jobs", &jobs);
+    a->Visit("seconds", &seconds);
+    a->Visit("datasets", &datasets);
+  }
+};
+
+// The campaign as a Markdown table, one row per dataset (shrink in %).
+std::string CampaignTable(const CampaignBody& campaign);
+
+template <ReportKind K, class Body>
+struct Report {
+  static constexpr ReportKind kKind = K;
+  Provenance provenance;
+  Body body;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    ReportKind kind = K;
+    int version = kReportSchemaVersion;
+    a->Visit("report", &kind);
+    a->Visit("schema_version", &version);
+    a->Visit("provenance", &provenance);
+    body.Serialize(a);
+  }
+};
+
+using IdentifyReport = Report<ReportKind::kIdentify, DatasetBody<IdentifySummary>>;
+using PredictReport = Report<ReportKind::kPredict, PredictBody>;
+using IdentifiabilityFile = Report<ReportKind::kIdentifiability, DatasetBody<IdentifiabilityReport>>;
+using CompareReport = Report<ReportKind::kCompare, DatasetBody<ComparisonReport>>;
+using DiagnoseReport = Report<ReportKind::kDiagnose, DatasetBody<DiagnosisReport>>;
+using CampaignReport = Report<ReportKind::kCampaign, CampaignBody>;
+
+// The report as JSON text (two-space indent, a final newline). Strings that
+// are not UTF-8 (paths from a command line) get U+FFFD, never an exception.
+template <class R>
+std::string ReportText(const R& report) {
+  return JsonWriter::ToJson(report).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+// The kind and version a JSON report says it is; false with a one-line
+// error naming the field when it is not a ringid report of this schema.
+bool ReportHeader(const Json& json, ReportKind* kind, std::string* error);
+
+// Reads a report of kind R::kKind; every field strictly (docs/reports.md).
+template <class R>
+bool ReadReport(const Json& json, R* report, std::string* error) {
+  ReportKind kind;
+  if (!ReportHeader(json, &kind, error)) return false;
+  if (kind != R::kKind) {
+    *error = std::string("report: a ") + ToString(kind) + " report, not " + ToString(R::kKind);
+    return false;
+  }
+  error->clear();
+  return JsonReader::FromJson(json, "", report, error);
+}
+
+}  // namespace ringid
+
+#endif  // RINGID_REPORT_REPORT_H_

@@ -1,0 +1,161 @@
+// Typed reports: each kind the tool writes reads back into its struct and
+// writes again byte for byte; the reader is strict; provenance is true.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "apps/reports.h"
+#include "report/report.h"
+#include "tests/test_support.h"
+
+namespace {
+
+using ringid::Json;
+using ringid::testing::Exists;
+using ringid::testing::ReadFile;
+using ringid::testing::Ringid;
+using ringid::testing::Scratch;
+
+std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
+
+// Reads `text` as report type R and writes it again.
+template <class R>
+std::string RoundTrip(const std::string& text, std::string* error) {
+  R report;
+  if (!ringid::ReadReport(Json::parse(text), &report, error)) return "";
+  return ringid::ReportText(report);
+}
+
+template <class R>
+void ExpectRoundTrip(const std::string& path) {
+  ASSERT_TRUE(Exists(path));
+  const std::string written = ReadFile(path);
+  std::string error;
+  const std::string again = RoundTrip<R>(written, &error);
+  ASSERT_EQ(error, "") << path;
+  EXPECT_EQ(again, written) << path;
+}
+
+std::string Made(const std::string& command, const std::string& out) {
+  const std::string path = Scratch(out);
+  std::remove(path.c_str());
+  const auto r = Ringid(command + " --output=" + path);
+  EXPECT_TRUE(r.status == 0 || r.status == 1) << command << ": " << r.err;
+  return path;
+}
+
+TEST(ReportTest, IdentifyRoundTripsByteForByte) {
+  ExpectRoundTrip<ringid::IdentifyReport>(
+      Made("identify --dataset=" + Source("datasets/paper/table1.json"), "identify.json"));
+}
+
+TEST(ReportTest, IdentifyWithShapesAndDampingRoundTripsByteForByte) {
+  ExpectRoundTrip<ringid::IdentifyReport>(
+      Made("identify --starts=1 --shape_convention=paper --dataset=" +
+               Source("datasets/paper/inertia_recovery.json"),
+           "identify-shapes.json"));
+}
+
+TEST(ReportTest, PredictRoundTripsByteForByte) {
+  ExpectRoundTrip<ringid::PredictReport>(
+      Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "predict.json"));
+}
+
+TEST(ReportTest, IdentifiabilityRoundTripsByteForByte) {
+  ExpectRoundTrip<ringid::IdentifiabilityFile>(Made(
+      "identifiability --starts=1 --dataset=" + Source("datasets/paper/table1.json"),
+      "identifiability.json"));
+}
+
+TEST(ReportTest, CompareRoundTripsByteForByte) {
+  ExpectRoundTrip<ringid::CompareReport>(
+      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"),
+           "compare.json"));
+}
+
+TEST(ReportTest, DiagnoseAndCampaignRoundTripByteForByte) {
+  const std::string dir = Scratch("campaign-data");
+  const std::string out = Scratch("campaign-reports");
+  std::filesystem::create_directories(dir);
+  const auto sim = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+                          " --effects=lug_coupling --shift=0.05 --output=" + dir +
+                          "/lug.json --truth=" + Scratch("lug-truth.json"));
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const auto r = Ringid("diagnose --dataset=" + dir + " --output_dir=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ExpectRoundTrip<ringid::DiagnoseReport>(out + "/lug.json");
+  ExpectRoundTrip<ringid::CampaignReport>(out + "/campaign.json");
+}
+
+TEST(ReportTest, TheProvenanceNamesEachInputWithItsSha256) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string path = Made("identify --starts=1 --dataset=" + table1, "provenance.json");
+  // sha256sum is an independent implementation of the digest.
+  const std::string digest_file = Scratch("table1.sha256");
+  ASSERT_EQ(std::system(("sha256sum '" + table1 + "' > " + digest_file).c_str()), 0);
+  const std::string expected = ReadFile(digest_file).substr(0, 64);
+  const Json report = Json::parse(ReadFile(path));
+  const Json& p = report["provenance"];
+  ASSERT_EQ(p["inputs"].size(), 1u);
+  EXPECT_EQ(p["inputs"][0]["role"], "dataset");
+  EXPECT_EQ(p["inputs"][0]["path"], table1);
+  EXPECT_EQ(p["inputs"][0]["sha256"], expected);
+  EXPECT_EQ(p["command_line"][1], "identify");
+  EXPECT_EQ(p["seed"], 1);
+  EXPECT_EQ(report["schema_version"], ringid::kReportSchemaVersion);
+}
+
+TEST(ReportTest, TheReaderNamesTheFieldThatIsWrong) {
+  const Json good = Json::parse(ReadFile(Made(
+      "identify --starts=1 --dataset=" + Source("datasets/paper/table1.json"), "strict.json")));
+  const struct {
+    const char* what;
+    std::function<void(Json*)> change;
+    const char* error;
+  } cases[] = {
+      {"unknown field", [](Json* j) { (*j)["modes"][0]["extra"] = 1; }, "modes[0].extra: unknown field"},
+      {"missing field", [](Json* j) { (*j)["covariance"].erase("rank"); }, "covariance.rank: missing"},
+      {"wrong type", [](Json* j) { (*j)["cost"] = "low"; }, "cost: expected a number or null, found string"},
+      {"unknown label", [](Json* j) { (*j)["modes"][0]["label"] = "wobble"; },
+       "modes[0].label: unknown name 'wobble'"},
+      {"unknown parameter", [](Json* j) { (*j)["parameters"]["k_bq"] = (*j)["parameters"]["k_bx"]; },
+       "parameters.k_bq: unknown name 'k_bq'"},
+      {"other kind", [](Json* j) { (*j)["report"] = "predict"; }, "report: a predict report, not identify"},
+      {"old schema", [](Json* j) { j->erase("schema_version"); }, "schema_version: missing"},
+  };
+  for (const auto& c : cases) {
+    Json broken = good;
+    c.change(&broken);
+    ringid::IdentifyReport report;
+    std::string error;
+    EXPECT_FALSE(ringid::ReadReport(broken, &report, &error)) << c.what;
+    EXPECT_EQ(error.rfind(c.error, 0), 0u) << c.what << ": " << error;
+  }
+}
+
+TEST(ReportTest, AFailedRenamePutsBackTheFilesRenamedBeforeIt) {
+  const std::string dir = Scratch("rollback");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/blocked");
+  const std::string first = dir + "/first.json";
+  std::ofstream(first) << "old";
+  // The second target is a non-empty directory: its temporary file is
+  // written, but the rename onto it fails.
+  std::ofstream(dir + "/blocked/keep") << "x";
+  std::string error;
+  EXPECT_FALSE(ringid::WriteFilesAtomically({{first, "new"}, {dir + "/blocked", "b"}}, &error));
+  EXPECT_NE(error.find("blocked"), std::string::npos) << error;
+  EXPECT_EQ(ReadFile(first), "old");
+  const std::string fresh = dir + "/fresh.json";
+  EXPECT_FALSE(ringid::WriteFilesAtomically({{fresh, "new"}, {dir + "/blocked", "b"}}, &error));
+  EXPECT_FALSE(Exists(fresh));
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 2) << "temporary or backup files were left behind";
+}
+
+}  // namespace
