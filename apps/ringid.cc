@@ -22,7 +22,7 @@
 #include "apps/progress.h"
 #include "apps/reports.h"
 #include "report/report.h"
-#include "benchmarks/suites.h"
+#include "validation/suites.h"
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/compare.h"
@@ -604,11 +604,23 @@ int BenchCommand(int argc, char** argv) {
   o.seed = static_cast<unsigned>(FLAGS_seed);
   Progress progress(FLAGS_suite + " suite");
   o.on_case = [&](int done, int total) { progress.Set(done, total); };
-  const SuiteResult r = RunSuite(FLAGS_suite, o);
-  if (!r.ok) return Usage("--suite: " + r.error);
+  const SuiteEntry* suite = nullptr;
+  for (const SuiteEntry& s : Suites()) {
+    if (FLAGS_suite == s.name) suite = &s;
+  }
+  if (!suite) {
+    return Usage("--suite: unknown suite '" + FLAGS_suite + "' (" + SuiteNames() +
+                 "; speed: build/benchmarks/ringid_benchmarks)");
+  }
+  const SuiteOutput r = suite->run(o, ThisRun(argc, argv, FLAGS_seed));
+  if (r.status.invalid_input()) return Usage("--suite: " + r.status.message);
+  if (!r.status.ok()) {
+    std::fprintf(stderr, "ringid: bench: %s\n", r.status.message.c_str());
+    return kExitFailure;
+  }
   std::printf("%s", r.markdown.c_str());
   std::vector<std::pair<std::string, std::string>> files;
-  if (!FLAGS_output.empty()) files.emplace_back(FLAGS_output, JsonText(r.report));
+  if (!FLAGS_output.empty()) files.emplace_back(FLAGS_output, r.json);
   if (!FLAGS_markdown.empty()) files.emplace_back(FLAGS_markdown, r.markdown);
   if (!WriteFilesAtomically(files, &error)) return Usage(error);
   return kExitOk;

@@ -2,7 +2,6 @@
 // Targets (README): model evaluation <= 10 us, in-plane LM fit <= 2 ms.
 #include <benchmark/benchmark.h>
 
-#include "apps/reports.h"
 #include "datasets/dataset.h"
 #include "estimation/identify.h"
 #include "model/rigid_ring_model.h"

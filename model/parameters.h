@@ -84,6 +84,14 @@ struct EnumNames<Param> {
 inline const char* ParamName(Param p) { return ToString(p); }
 inline std::optional<Param> ParseParam(const std::string& name) { return FromString<Param>(name); }
 inline Param ParamAt(int i) { return static_cast<Param>(i); }
+// The sidewall dampers c_b* (the rest are stiffnesses, inertias and lengths).
+inline bool IsDamping(Param p) {
+  switch (p) {
+    case Param::c_bx: case Param::c_bz: case Param::c_btheta:
+    case Param::c_by: case Param::c_bgamma: case Param::c_bpsi: return true;
+    default: return false;
+  }
+}
 
 // A value for every parameter of the catalogue; effect parameters default to
 // their baseline value 0, everything else to NaN (unset).

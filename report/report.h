@@ -27,11 +27,13 @@ inline constexpr int kReportSchemaVersion = 2;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign,
+  kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis,  // validation/
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 6> kNames = {
-      "identify", "predict", "identifiability", "compare", "diagnose", "campaign"};
+  static constexpr std::array<const char*, 10> kNames = {
+      "identify", "predict", "identifiability", "compare", "diagnose", "campaign",
+      "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis"};
 };
 
 struct InputFile {

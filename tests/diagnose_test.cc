@@ -4,7 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "benchmarks/suites.h"
+#include "tests/round_trip.h"
+#include "validation/suites.h"
 #include "datasets/synthetic.h"
 #include "estimation/diagnose.h"
 #include "model/effects.h"
@@ -135,10 +136,13 @@ TEST(DiagnoseTest, QuickValidationSuite) {
   SuiteOptions o;
   o.source_dir = RINGID_SOURCE_DIR;
   o.replicates = 1;  // one tire, two effect sizes: 14 cases
-  const SuiteResult r = RunSuite("diagnosis", o);
-  ASSERT_TRUE(r.ok) << r.error;
-  EXPECT_GE(r.report["accuracy"].get<double>(), 0.9) << r.markdown;
-  EXPECT_EQ(r.report["false_alarms"].get<int>(), 0) << r.markdown;
+  DiagnosisSuite r;
+  const Status s = RunDiagnosisSuite(o, &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(r.cases.size(), 14u);
+  EXPECT_GE(r.accuracy, 0.9) << r.Markdown();
+  EXPECT_EQ(r.false_alarms, 0) << r.Markdown();
+  testing::ExpectRoundTrip(BenchDiagnosisReport{{}, r});
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "apps/reports.h"
 #include "report/report.h"
+#include "tests/round_trip.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -22,20 +23,12 @@ using ringid::testing::Scratch;
 
 std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
 
-// Reads `text` as report type R and writes it again.
-template <class R>
-std::string RoundTrip(const std::string& text, std::string* error) {
-  R report;
-  if (!ringid::ReadReport(Json::parse(text), &report, error)) return "";
-  return ringid::ReportText(report);
-}
-
 template <class R>
 void ExpectRoundTrip(const std::string& path) {
   ASSERT_TRUE(Exists(path));
   const std::string written = ReadFile(path);
   std::string error;
-  const std::string again = RoundTrip<R>(written, &error);
+  const std::string again = ringid::testing::ReadAndWriteAgain<R>(written, &error);
   ASSERT_EQ(error, "") << path;
   EXPECT_EQ(again, written) << path;
 }

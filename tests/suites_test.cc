@@ -4,7 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "benchmarks/suites.h"
+#include "validation/suites.h"
+#include "tests/round_trip.h"
 #include "tests/test_support.h"
 
 namespace ringid {
@@ -19,42 +20,48 @@ SuiteOptions Options() {
 TEST(SuitesTest, SyntheticIntervalsCoverTheTruthAtTheirLevel) {
   SuiteOptions o = Options();
   o.replicates = 60;  // 3 tires x 60 x 10 parameters = 1800 intervals
-  const SuiteResult r = RunSuite("synthetic", o);
-  ASSERT_TRUE(r.ok) << r.error;
-  const double coverage = r.report["coverage_95"].get<double>();
-  EXPECT_GT(coverage, 0.90);
-  EXPECT_LT(coverage, 0.99);
-  for (const auto& tire : r.report["tires"]) {
-    EXPECT_EQ(tire["failed_fits"].get<int>(), 0) << tire["tire"];
+  SyntheticSuite r;
+  const Status s = RunSyntheticSuite(o, &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_GT(r.coverage_95, 0.90);
+  EXPECT_LT(r.coverage_95, 0.99);
+  ASSERT_EQ(r.tires.size(), 3u);
+  for (const TireCoverage& tire : r.tires) {
+    EXPECT_EQ(tire.failed_fits, 0) << tire.tire;
     // |error| / std is half-normal when the std is right: median 0.674.
-    EXPECT_NEAR(tire["median_error_over_std"].get<double>(), 0.674, 0.15) << tire["tire"];
+    EXPECT_NEAR(tire.median_error_over_std, 0.674, 0.15) << tire.tire;
   }
+  testing::ExpectRoundTrip(BenchSyntheticReport{{}, r});
 }
 
 TEST(SuitesTest, ConditioningShowsWhatEachKindOfDataDetermines) {
-  const SuiteResult r = RunSuite("conditioning", Options());
-  ASSERT_TRUE(r.ok) << r.error;
-  const auto& v = r.report["variants"];
+  ConditioningSuite r;
+  const Status s = RunConditioningSuite(Options(), &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  const auto& v = r.variants;
   ASSERT_EQ(v.size(), 4u);
-  EXPECT_EQ(v[0]["rank"], 7);  // 7 frequencies
+  EXPECT_EQ(v[0].rank, 7);  // 7 frequencies
   // With shapes and damping only the contact ratios stay undetermined (eq. 9).
-  EXPECT_EQ(v[3]["rank"], 14);
-  EXPECT_EQ(v[3]["classes"]["K_cx"], "no");
-  EXPECT_EQ(v[3]["classes"]["sigma_cy"], "no");
-  EXPECT_EQ(v[3]["classes"]["k_bx"], "yes");
+  EXPECT_EQ(v[3].rank, 14);
+  EXPECT_EQ(v[3].classes.at(Param::K_cx), Identifiability::kNo);
+  EXPECT_EQ(v[3].classes.at(Param::sigma_cy), Identifiability::kNo);
+  EXPECT_EQ(v[3].classes.at(Param::k_bx), Identifiability::kYes);
+  testing::ExpectRoundTrip(BenchConditioningReport{{}, r});
 }
 
 TEST(SuitesTest, PaperSuiteReproducesTable3AndFitsTable1) {
-  const SuiteResult r = RunSuite("paper", Options());
-  ASSERT_TRUE(r.ok) << r.error;
-  for (const auto& row : r.report["table3"]) {
-    const bool in_plane = row["label"] == "rotation_in_phase" || row["label"] == "rotation_anti_phase" ||
-                          row["label"] == "vertical" || row["label"] == "longitudinal";
-    EXPECT_NEAR(row["model_hz"].get<double>(), row["paper_hz"].get<double>(), in_plane ? 0.1 : 0.3)
-        << row["label"];
+  PaperSuite r;
+  const Status s = RunPaperSuite(Options(), &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  ASSERT_EQ(r.table3.size(), 7u);
+  for (const Table3Row& row : r.table3) {
+    const bool in_plane = LabelPlane(row.label) == Plane::kInPlane;
+    EXPECT_NEAR(row.model_hz, row.paper_hz, in_plane ? 0.1 : 0.3) << LabelName(row.label);
   }
-  EXPECT_LT(r.report["identify"]["lm"]["eq19"].get<double>(), 1e-8);
-  EXPECT_LT(r.report["identify"]["lm"]["eq20"].get<double>(), 1e-8);
+  ASSERT_EQ(r.identify[0].method, Method::kLevenbergMarquardt);
+  EXPECT_LT(r.identify[0].relative_error_in_plane_eq19, 1e-8);
+  EXPECT_LT(r.identify[0].relative_error_out_of_plane_eq20, 1e-8);
+  testing::ExpectRoundTrip(BenchPaperReport{{}, r});
 }
 
 TEST(SuitesTest, ScaledTiresKeepTheirDampingRatios) {

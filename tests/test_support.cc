@@ -11,7 +11,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/reports.h"
 #include "datasets/synthetic.h"
 
 namespace ringid::testing {

@@ -1,0 +1,228 @@
+// The validation suites: accuracy and conditioning against independent
+// truths (the paper's tables, synthetic tires, withheld effects). Each suite
+// is a typed report; its Markdown table is drawn from the same struct.
+#ifndef RINGID_VALIDATION_SUITES_H_
+#define RINGID_VALIDATION_SUITES_H_
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "estimation/fit.h"
+#include "estimation/status.h"
+#include "estimation/uncertainty.h"
+#include "model/names.h"
+#include "model/parameters.h"
+#include "report/report.h"
+
+namespace ringid {
+
+struct SuiteOptions {
+  std::string source_dir = ".";  // where datasets/ lives
+  int replicates = 200;          // synthetic: Monte Carlo replicates per tire
+  unsigned seed = 1;
+  // Called with (done, total) as the suite's cases finish.
+  std::function<void(int, int)> on_case;
+};
+
+// --- paper: Table 3 reproduced, Table 1 identified.
+struct Table3Row {
+  ModeLabel label = ModeLabel::kVertical;
+  double paper_hz = 0;
+  double model_hz = 0;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("label", &label);
+    a->Visit("paper_hz", &paper_hz);
+    a->Visit("model_hz", &model_hz);
+  }
+};
+
+struct Table1Fit {
+  Method method = Method::kLevenbergMarquardt;
+  double relative_error_in_plane_eq19 = 0;
+  double relative_error_out_of_plane_eq20 = 0;
+  long evaluations = 0;
+  double seconds = 0;
+  int rank = 0;
+  template <class Archive>  // keyed by method
+  void Serialize(Archive* a) {
+    a->Visit("relative_error_in_plane_eq19", &relative_error_in_plane_eq19);
+    a->Visit("relative_error_out_of_plane_eq20", &relative_error_out_of_plane_eq20);
+    a->Visit("evaluations", &evaluations);
+    a->Visit("seconds", &seconds);
+    a->Visit("rank", &rank);
+  }
+};
+
+struct PaperSuite {
+  std::vector<Table3Row> table3;
+  std::vector<Table1Fit> identify;
+  std::pair<double, double> paper_reported_eq19_eq20{0, 0};
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("table3", &table3);
+    a->VisitKeyed("identify", &identify, &Table1Fit::method);
+    a->Visit("paper_reported_eq19_eq20", &paper_reported_eq19_eq20);
+  }
+};
+
+// --- synthetic: coverage of the 95 % intervals on three tire sizes.
+struct TireCoverage {
+  std::string tire;
+  double scale = 1;
+  int replicates = 0;
+  long intervals = 0;
+  double coverage_95 = 0;
+  double median_error_over_std = 0;
+  int failed_fits = 0;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("tire", &tire);
+    a->Visit("scale", &scale);
+    a->Visit("replicates", &replicates);
+    a->Visit("intervals", &intervals);
+    a->Visit("coverage_95", &coverage_95);
+    a->Visit("median_error_over_std", &median_error_over_std);
+    a->Visit("failed_fits", &failed_fits);
+  }
+};
+
+struct SyntheticSuite {
+  std::vector<TireCoverage> tires;
+  double coverage_95 = 0;  // all tires together
+  double frequency_noise = 0, damping_noise = 0, shape_noise = 0;
+  std::vector<Param> free;
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("tires", &tires);
+    a->Visit("coverage_95", &coverage_95);
+    a->Group("noise", [&](auto* g) {
+      g->Visit("frequency_relative", &frequency_noise);
+      g->Visit("damping_relative", &damping_noise);
+      g->Visit("shape", &shape_noise);
+    });
+    a->Visit("free", &free);
+  }
+};
+
+// --- conditioning: what frequencies, shapes and damping each determine.
+struct ConditioningVariant {
+  std::string data;
+  int residuals = 0;
+  int rank = 0;
+  double condition_number = 0;
+  std::map<Param, Identifiability> classes;
+  std::vector<std::string> identifiable_subset;
+  int Count(Identifiability c) const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("data", &data);
+    a->Visit("residuals", &residuals);
+    a->Visit("rank", &rank);
+    a->Visit("condition_number", &condition_number);
+    a->Visit("classes", &classes);
+    a->Visit("identifiable_subset", &identifiable_subset);
+  }
+};
+
+struct ConditioningSuite {
+  std::vector<ConditioningVariant> variants;
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("variants", &variants);
+  }
+};
+
+// --- diagnosis: blind withheld-effect cases (docs/conventions.md §5).
+struct DiagnosisCase {
+  std::string name;
+  std::string truth;  // the withheld effect, or "none"
+  double value = 0;   // of its size parameter
+  double shift = 0;   // the largest frequency shift it was sized to
+  std::string verdict;
+  std::vector<std::string> indistinguishable;
+  bool correct = false;
+  bool absorbed_explained = false;  // "none", below the stated detectable size
+  std::optional<double> gap_p_value;
+  double seconds = 0;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("case", &name);
+    a->Visit("truth", &truth);
+    a->Visit("value", &value);
+    a->Visit("shift", &shift);
+    a->Visit("verdict", &verdict);
+    a->Visit("indistinguishable", &indistinguishable);
+    a->Visit("correct", &correct);
+    a->Visit("absorbed_explained", &absorbed_explained);
+    a->Visit("gap_p_value", &gap_p_value);
+    a->Visit("seconds", &seconds);
+  }
+};
+
+struct DiagnosisSuite {
+  std::vector<DiagnosisCase> cases;
+  double accuracy = 0;
+  int named = 0;
+  int absorbed_and_explained = 0;
+  int false_alarms = 0;
+  int no_effect_cases = 0;
+  double mean_shrink_when_named = 0;
+  double seconds_per_diagnosis = 0;
+  std::vector<std::string> effects;  // "none" and the catalogue, in order
+  std::map<std::string, std::map<std::string, int>> confusion;  // truth -> verdict -> count
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("cases", &cases);
+    a->Visit("accuracy", &accuracy);
+    a->Visit("named", &named);
+    a->Visit("absorbed_and_explained", &absorbed_and_explained);
+    a->Visit("false_alarms", &false_alarms);
+    a->Visit("no_effect_cases", &no_effect_cases);
+    a->Visit("mean_shrink_when_named", &mean_shrink_when_named);
+    a->Visit("seconds_per_diagnosis", &seconds_per_diagnosis);
+    a->Visit("effects", &effects);
+    a->Visit("confusion", &confusion);
+  }
+};
+
+using BenchPaperReport = Report<ReportKind::kBenchPaper, PaperSuite>;
+using BenchSyntheticReport = Report<ReportKind::kBenchSynthetic, SyntheticSuite>;
+using BenchConditioningReport = Report<ReportKind::kBenchConditioning, ConditioningSuite>;
+using BenchDiagnosisReport = Report<ReportKind::kBenchDiagnosis, DiagnosisSuite>;
+
+Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite);
+Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite);
+Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite);
+Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite);
+
+// A suite by name, run into its report's JSON text and Markdown table.
+struct SuiteOutput {
+  Status status;
+  std::string json;
+  std::string markdown;
+};
+struct SuiteEntry {
+  const char* name;  // --suite=NAME
+  std::function<SuiteOutput(const SuiteOptions&, const Provenance&)> run;
+};
+const std::vector<SuiteEntry>& Suites();
+// The suites' names, for help and error text: "paper, synthetic, ...".
+std::string SuiteNames();
+
+// The paper's tire scaled by s: masses s^2, inertias s^4, lengths s,
+// translational stiffness s, contact stiffness K (N) s^2, rotational
+// stiffness s^3, dampings so that every damping ratio stays the same.
+Parameters ScaledTire(const Parameters& paper, double s);
+
+}  // namespace ringid
+
+#endif  // RINGID_VALIDATION_SUITES_H_
