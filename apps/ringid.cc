@@ -95,7 +95,8 @@ const char kHelp[] =
     "             [--frequency_noise=X] [--damping_noise=X] [--shape_noise=X]\n"
     "             [--shift=X] [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
     "  diagnose   the gap between the calibrated baseline and the data: where it\n"
-    "             lies, which effect explains it, how far it shrinks\n"
+    "             lies, which effect explains it, how far it shrinks; --effects=LIST\n"
+    "             puts effects in the baseline, and the others are tried on top\n"
     "             --dataset=FILE and the fitting flags of identify\n"
     "  campaigns: identify and diagnose take --dataset=FILE,DIR,... (a directory\n"
     "             stands for its *.json) with --output_dir=DIR [--jobs=N] [--shard=I/N];\n"
@@ -549,16 +550,16 @@ int DiagnoseCommand(int argc, char** argv) {
   std::vector<const Effect*> effects;
   if (!FLAGS_output_dir.empty()) {
     if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
-    if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
+    const RigidRingModel baseline(effects);
     return RunCampaign(
         argc, argv, ReportKind::kDiagnose,
         [&](const Dataset& d, std::string* why) {
           ParameterSetup setup;
-          return ParameterSetup::Build(RigidRingModel(), d, &setup, why);
+          return ParameterSetup::Build(baseline, d, &setup, why);
         },
         [&](const Dataset& d, const std::string& file) {
           DiagnosisReport r;
-          Diagnose(d, o, &r);
+          Diagnose(baseline, d, o, &r);
           CampaignItem item;
           item.report = ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}});
           item.row.status = r.status;
@@ -577,9 +578,9 @@ int DiagnoseCommand(int argc, char** argv) {
   }
   Dataset d;
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
-  if (!effects.empty()) return Usage("--effects: diagnose tries every effect itself");
+  const RigidRingModel baseline(effects);
   DiagnosisReport r;
-  Diagnose(d, o, &r);
+  Diagnose(baseline, d, o, &r);
   if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {

@@ -1,6 +1,7 @@
 #include "estimation/compare.h"
 
 #include "datasets/paper.h"
+#include "estimation/problem.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,12 +54,14 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
                     const CompareOptions& o, ComparisonReport* r) {
   *r = ComparisonReport{};
   std::string why;
-  ParameterSetup setup;
-  if (!o.IsValid(&why) || !ParameterSetup::Build(model, dataset, &setup, &why)) {
+  if (!o.IsValid(&why)) {
     r->status = Status::InvalidInput(why);
     return;
   }
-  ModalResiduals residuals(model, dataset, setup, o.fit.residuals);
+  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &r->status);
+  if (!problem) return;
+  const ParameterSetup& setup = problem->setup();
+  const ModalResiduals& residuals = problem->residuals();
   const Eigen::VectorXd x0 = setup.Encode(setup.start());
   const Box box = BoundsAround(setup, x0, o.fit.bound_factor);
   const auto starts = DrawStarts(setup, x0, box, o.fit.starts, o.fit.start_spread, o.fit.seed,

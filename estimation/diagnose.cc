@@ -1,5 +1,7 @@
 #include "estimation/diagnose.h"
 
+#include "estimation/problem.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -54,14 +56,13 @@ std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
 bool ResidualsAt(const ModalModel& model, const Dataset& dataset,
                  const Parameters& p, std::vector<ModalResiduals::Slot>* slots,
                  std::vector<double>* r, const ResidualOptions& options) {
-  ParameterSetup setup;
-  std::string why;
-  if (!ParameterSetup::Build(model, dataset, &setup, &why)) return false;
-  ModalResiduals residuals(model, dataset, setup, options);
-  const Eigen::VectorXd x = setup.Encode(p);
-  r->assign(residuals.num_residuals(), 0);
-  *slots = residuals.slots();
-  return residuals.Evaluate(x.data(), r->data());
+  Status status;
+  const auto problem = Problem::Create(model, dataset, options, &status);
+  if (!problem) return false;
+  const Eigen::VectorXd x = problem->setup().Encode(p);
+  r->assign(problem->residuals().num_residuals(), 0);
+  *slots = problem->residuals().slots();
+  return problem->residuals().Evaluate(x.data(), r->data());
 }
 
 std::vector<double> ModeChi2(const std::vector<ModalResiduals::Slot>& slots,
@@ -106,11 +107,9 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
 
 // Cost of `dataset` under `model` at its initial values (+inf if unsolvable).
 double InitialCost(const ModalModel& model, const Dataset& dataset, const ResidualOptions& options) {
-  ParameterSetup setup;
-  std::string why;
-  if (!ParameterSetup::Build(model, dataset, &setup, &why)) return INFINITY;
-  ModalResiduals residuals(model, dataset, setup, options);
-  return CostAt(residuals, setup.Encode(setup.start()));
+  Status status;
+  const auto problem = Problem::Create(model, dataset, options, &status);
+  return problem ? CostAt(problem->residuals(), problem->start()) : INFINITY;
 }
 
 // An effect refitted from two points: the calibrated baseline (warm) and the
@@ -155,21 +154,24 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
 // The smallest value of each effect parameter a re-calibration of the
 // baseline cannot absorb: the part of its Jacobian column outside the span of
 // the baseline's columns must reach a likelihood ratio of `detect`.
-std::map<std::string, double> MinimalDetectable(const Effect& effect, const Dataset& warm,
+std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
+                                                const Effect& effect, const Dataset& warm,
                                                 const Eigen::MatrixXd& J_base, int rank,
                                                 const DiagnoseOptions& o, double detect) {
   std::map<std::string, double> out;
-  const RigidRingModel model({&effect});
+  const RigidRingModel model = baseline.With(&effect);
   Dataset at = warm;
   for (Param p : effect.parameters()) {
     if (!at.known.count(p)) at.initial[p] = TypicalScale(p);  // away from a kink at 0
   }
-  ParameterSetup setup;
-  std::string why;
-  if (!ParameterSetup::Build(model, at, &setup, &why)) return out;
-  ModalResiduals residuals(model, at, setup, o.fit.residuals);
+  Status status;
+  const auto problem = Problem::Create(model, at, o.fit.residuals, &status);
   Eigen::MatrixXd J;
-  if (!EvaluateJacobian(residuals, setup.Encode(setup.start()), &J) || J.rows() != J_base.rows()) return out;
+  if (!problem || !EvaluateJacobian(problem->residuals(), problem->start(), &J) ||
+      J.rows() != J_base.rows()) {
+    return out;
+  }
+  const ParameterSetup& setup = problem->setup();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_base, Eigen::ComputeThinU);
   const Eigen::MatrixXd U = svd.matrixU().leftCols(rank);
   for (int c = static_cast<int>(J_base.cols()); c < J.cols(); ++c) {
@@ -203,25 +205,25 @@ bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& 
 // The cost at which the baseline, re-calibrated from the calibrated point
 // with the diagnosis' prior, fits noise-free data of `truth` under `model`:
 // what the diagnosis would see of the difference, noise aside.
-double RecalibratedCost(const ModalModel& model, const Parameters& truth, const Dataset& warm,
+double RecalibratedCost(const RigidRingModel& baseline, const ModalModel& model,
+                        const Parameters& truth, const Dataset& warm,
                         const DiagnoseOptions& o) {
   Dataset data;
   if (!Remeasure(model, truth, warm, o.fit.residuals.shape_convention, &data)) return INFINITY;
-  const RigidRingModel baseline;
-  ParameterSetup setup;
-  std::string why;
-  if (!ParameterSetup::Build(baseline, data, &setup, &why)) return NAN;
-  ModalResiduals residuals(baseline, data, setup, o.fit.residuals);
-  const Eigen::VectorXd x0 = setup.Encode(setup.start());
-  const LocalFit fit = FitLocally(residuals, Method::kLevenbergMarquardt, x0,
-                                  BoundsAround(setup, x0, o.fit.bound_factor),
+  Status status;
+  const auto problem = Problem::Create(baseline, data, o.fit.residuals, &status);
+  if (!problem) return NAN;
+  const Eigen::VectorXd x0 = problem->start();
+  const LocalFit fit = FitLocally(problem->residuals(), Method::kLevenbergMarquardt, x0,
+                                  BoundsAround(problem->setup(), x0, o.fit.bound_factor),
                                   o.fit.max_iterations, o.fit.simplex);
   return fit.cost;
 }
 
 // RecalibratedCost of the calibrated point with `effect`'s parameter `p` at
 // `value` (its other parameters known, or at a typical value).
-double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifySummary& calibrated,
+double AbsorbedCost(const RigidRingModel& baseline, const Effect& effect, Param p, double value,
+                    const IdentifySummary& calibrated,
                     const Dataset& warm, const DiagnoseOptions& o) {
   Parameters truth = calibrated.parameters;
   for (Param q : effect.parameters()) {
@@ -229,7 +231,7 @@ double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifyS
     else if (warm.known.count(q)) truth[q] = warm.known.at(q);
     else truth[q] = Info(q).domain == Domain::kPositive ? TypicalScale(q) : 0.0;
   }
-  return RecalibratedCost(RigidRingModel({&effect}), truth, warm, o);
+  return RecalibratedCost(baseline, baseline.With(&effect), truth, warm, o);
 }
 
 // The linearised detectable size `linear` of `p`, checked against the
@@ -238,12 +240,13 @@ double AbsorbedCost(const Effect& effect, Param p, double value, const IdentifyS
 // outside the baseline's span can be absorbed at second order (a compliant
 // hub against softer stiffnesses): the linear size then promises too much.
 // `zero` is RecalibratedCost of the calibrated baseline itself.
-double CheckedDetectable(const Effect& effect, Param p, double linear, const IdentifySummary& calibrated,
+double CheckedDetectable(const RigidRingModel& baseline, const Effect& effect, Param p,
+                         double linear, const IdentifySummary& calibrated,
                          const Dataset& warm, const DiagnoseOptions& o, double zero, double detect) {
   if (!std::isfinite(linear) || !(linear > 0) || !std::isfinite(zero)) return linear;
   double v = linear, v_prev = 0, lr_prev = 0;
   for (int step = 0; step < 5; ++step) {
-    const double lr = 2 * (AbsorbedCost(effect, p, v, calibrated, warm, o) - zero);
+    const double lr = 2 * (AbsorbedCost(baseline, effect, p, v, calibrated, warm, o) - zero);
     if (!std::isfinite(lr)) return v;  // a mode is lost: certainly seen
     if (lr > detect / 1.5 && lr < detect * 1.5) return v;
     double next;
@@ -264,8 +267,8 @@ double CheckedDetectable(const Effect& effect, Param p, double linear, const Ide
 
 }  // namespace
 
-void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
-                         DiagnosisReport* r, std::chrono::steady_clock::time_point t0);
+void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
+                         const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0);
 
 bool DiagnoseOptions::IsValid(std::string* why) const {
   if (!(gap_significance > 0 && gap_significance < 1) ||
@@ -284,7 +287,7 @@ bool DiagnoseOptions::IsValid(std::string* why) const {
   return fit.IsValid(why);
 }
 
-void Diagnose(const Dataset& dataset, const DiagnoseOptions& o,
+void Diagnose(const RigidRingModel& baseline, const Dataset& dataset, const DiagnoseOptions& o,
               DiagnosisReport* r) {
   const auto t0 = std::chrono::steady_clock::now();
   *r = DiagnosisReport{};
@@ -300,14 +303,13 @@ void Diagnose(const Dataset& dataset, const DiagnoseOptions& o,
     with_prior.fit.residuals.prior_sigma = o.prior_sigma;
     with_prior.fit.residuals.prior = dataset.initial;
   }
-  DiagnoseWithOptions(dataset, with_prior, r, t0);
+  DiagnoseWithOptions(baseline, dataset, with_prior, r, t0);
 }
 
-void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
-                         DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
+void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
+                         const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
   std::string why;
   // The gap: calibrate the baseline.
-  const RigidRingModel baseline;
   Identify(baseline, dataset, o.fit, &r->baseline);
   if (!r->baseline.status.ok()) {
     r->status = {r->baseline.status.outcome,
@@ -351,9 +353,10 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
   const double log_m = std::log(std::max(m, 1));
   const double aic_base = r->chi2_before + 2 * n_base;
   for (const Effect* effect : EffectCatalogue()) {
+    if (baseline.Has(effect)) continue;  // already in the model
     EffectFit f;
     f.effect = effect->name();
-    const RigidRingModel model({effect});
+    const RigidRingModel model = baseline.With(effect);
     IdentifySummary s = FitEffect(model, *effect, warm, dataset, o);
     if (!s.status.ok()) {
       f.note = s.status.message;
@@ -382,7 +385,7 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
       f.where = Misfits(es, er, dataset);
     }
     if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
-    f.minimal_detectable = MinimalDetectable(*effect, warm, r->baseline.uncertainty.jacobian,
+    f.minimal_detectable = MinimalDetectable(baseline, *effect, warm, r->baseline.uncertainty.jacobian,
                                              r->baseline.uncertainty.rank, o, 20.0);
     r->ranking.push_back(f);
   }
@@ -436,11 +439,11 @@ void DiagnoseWithOptions(const Dataset& dataset, const DiagnoseOptions& o,
   }
   if (r->verdict == "none") {
     // The sizes the explanation promises, checked beyond first order.
-    const double zero = RecalibratedCost(baseline, r->baseline.parameters, warm, o);
+    const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
     for (EffectFit& f : r->ranking) {
       const Effect* effect = FindEffect(f.effect);
       for (auto& [name, v] : f.minimal_detectable) {
-        v = CheckedDetectable(*effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
+        v = CheckedDetectable(baseline, *effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
       }
     }
     std::ostringstream small;

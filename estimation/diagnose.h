@@ -149,8 +149,10 @@ struct DiagnosisReport {
   }
 };
 
-void Diagnose(const Dataset& dataset, const DiagnoseOptions& options,
-              DiagnosisReport* report);
+// `baseline`: the model calibrated first (usually RigidRingModel(), the
+// standing model); each effect of the catalogue it lacks is tried on top.
+void Diagnose(const RigidRingModel& baseline, const Dataset& dataset,
+              const DiagnoseOptions& options, DiagnosisReport* report);
 
 }  // namespace ringid
 

@@ -1,5 +1,6 @@
 #include "estimation/identifiability.h"
 
+#include "estimation/problem.h"
 #include "estimation/statistics.h"
 
 #include <algorithm>
@@ -146,9 +147,14 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     r->status = Status::Failed("no Jacobian at the fitted point: " + u.error);
     return;
   }
-  ParameterSetup setup;
-  ParameterSetup::Build(model, dataset, &setup, &why);
-  ModalResiduals residuals(model, dataset, setup, o.fit.residuals);
+  Status built;
+  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &built);
+  if (!problem) {  // Identify built the same problem a moment ago
+    r->status = built;
+    return;
+  }
+  const ParameterSetup& setup = problem->setup();
+  const ModalResiduals& residuals = problem->residuals();
   const int n = setup.size();
   const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
   const Eigen::MatrixXd& J = u.jacobian;
@@ -284,10 +290,11 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     }
     ResidualOptions all = o.fit.residuals;
     all.use_damping = all.use_shapes = true;
-    ModalResiduals augmented(model, more, setup, all);
+    Status augmented_status;
+    const auto augmented = Problem::Create(model, more, all, &augmented_status);
     Eigen::MatrixXd Ja;
-    if (EvaluateJacobian(augmented, xhat, &Ja)) {
-      const auto& slots = augmented.slots();
+    if (augmented && EvaluateJacobian(augmented->residuals(), xhat, &Ja)) {
+      const auto& slots = augmented->residuals().slots();
       for (size_t m = 0; m < more.modes.size(); ++m) {
         const std::string label = LabelName(more.modes[m].label);
         const MeasuredMode& original = dataset.modes[m];

@@ -1,5 +1,7 @@
 #include "estimation/identify.h"
 
+#include "estimation/problem.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -49,12 +51,10 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->status = Status::InvalidInput("invalid options: " + why);
     return;
   }
-  ParameterSetup setup;
-  if (!ParameterSetup::Build(model, dataset, &setup, &why)) {
-    s->status = Status::InvalidInput(why);
-    return;
-  }
-  ModalResiduals residuals(model, dataset, setup, o.residuals);
+  const auto problem = Problem::Create(model, dataset, o.residuals, &s->status);
+  if (!problem) return;
+  const ParameterSetup& setup = problem->setup();
+  const ModalResiduals& residuals = problem->residuals();
   const Eigen::VectorXd x0 = setup.Encode(setup.start());
   const Box box = BoundsAround(setup, x0, o.bound_factor);
   const int starts = setup.size() == 0 ? 1 : o.starts;

@@ -78,4 +78,14 @@ ModalSolution RigidRingModel::Solve(const Parameters& p) const {
   return SolveModes(Assemble(p));
 }
 
+bool RigidRingModel::Has(const Effect* effect) const {
+  return std::find(effects_.begin(), effects_.end(), effect) != effects_.end();
+}
+
+RigidRingModel RigidRingModel::With(const Effect* effect) const {
+  std::vector<const Effect*> effects = effects_;
+  effects.push_back(effect);
+  return RigidRingModel(effects);
+}
+
 }  // namespace ringid

@@ -2,6 +2,7 @@
 #ifndef RINGID_MODEL_RIGID_RING_MODEL_H_
 #define RINGID_MODEL_RIGID_RING_MODEL_H_
 
+#include <memory>
 #include <vector>
 
 #include "model/effects.h"
@@ -15,6 +16,7 @@ namespace ringid {
 class ModalModel {
  public:
   virtual ~ModalModel() = default;
+  virtual std::unique_ptr<ModalModel> Clone() const = 0;
   virtual ModalSolution Solve(const Parameters& p) const = 0;
   // The parameters Solve reads, in catalogue order.
   virtual std::vector<Param> parameters() const = 0;
@@ -26,9 +28,15 @@ class RigidRingModel final : public ModalModel {
 
   // Eqs. (12) and (15) as corrected in docs/model.md, then each effect.
   MechanicalSystem Assemble(const Parameters& p) const;
+  std::unique_ptr<ModalModel> Clone() const override {
+    return std::make_unique<RigidRingModel>(*this);
+  }
   ModalSolution Solve(const Parameters& p) const override;
   std::vector<Param> parameters() const override;
   const std::vector<const Effect*>& effects() const { return effects_; }
+  bool Has(const Effect* effect) const;
+  // This model with `effect` added.
+  RigidRingModel With(const Effect* effect) const;
 
  private:
   std::vector<const Effect*> effects_;

@@ -16,8 +16,10 @@ namespace {
 
 using testing::PaperIdentified;
 
+// `baseline`: the model the diagnosis calibrates first.
 DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
-                                 bool held_out = false) {
+                                 bool held_out = false,
+                                 const RigidRingModel& baseline = RigidRingModel()) {
   Parameters truth = PaperIdentified();
   truth[Param::m_a] = 15;
   std::vector<const Effect*> withheld;
@@ -34,7 +36,7 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
   DiagnoseOptions o;
   o.held_out = held_out;
   DiagnosisReport r;
-  Diagnose(d, o, &r);
+  Diagnose(baseline, d, o, &r);
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
@@ -52,6 +54,17 @@ TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
   EXPECT_EQ(r.verdict, "lug_coupling") << r.explanation;
   EXPECT_GT(r.ranking.front().shrink, 0.8);
   EXPECT_TRUE(r.significant);
+}
+
+// With the withheld effect in the baseline there is no gap left to explain,
+// and that effect is not tried again.
+TEST(DiagnoseTest, ABaselineWithTheWithheldEffectLeavesNoGap) {
+  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, false,
+                                             RigidRingModel({FindEffect("lug_coupling")}));
+  EXPECT_EQ(r.verdict, "none") << r.explanation;
+  EXPECT_FALSE(r.significant) << r.chi2_before << " on " << r.dof;
+  ASSERT_EQ(r.ranking.size(), EffectCatalogue().size() - 1);
+  for (const EffectFit& f : r.ranking) EXPECT_NE(f.effect, "lug_coupling");
 }
 
 // Held-out modes, each predicted from a fit without it: the withheld effect
@@ -115,7 +128,7 @@ TEST(DiagnoseTest, ThePapersData) {
   LoadError e;
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
   DiagnosisReport r;
-  Diagnose(d, DiagnoseOptions{}, &r);
+  Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.verdict, "none") << r.explanation;
   // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
@@ -124,7 +137,7 @@ TEST(DiagnoseTest, ThePapersData) {
   // sidewall yaw stiffness enter S[psi, psi] identically: they must come as
   // one group.
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1_r_l0_physical.json"), &d, &e));
-  Diagnose(d, DiagnoseOptions{}, &r);
+  Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_TRUE(r.significant);
   const auto& g = r.indistinguishable;

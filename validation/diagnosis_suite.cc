@@ -71,7 +71,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
         DiagnosisReport dr;
         DiagnoseOptions dopt;
         dopt.held_out = false;  // reported by diagnose, not voted on; skipped for speed
-        Diagnose(d, dopt, &dr);
+        Diagnose(RigidRingModel(), d, dopt, &dr);
         if (!dr.status.ok()) return Status::Failed(d.name + ": " + dr.status.message);
         seconds += dr.seconds;
         c.verdict = dr.verdict;

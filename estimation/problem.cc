@@ -1,0 +1,28 @@
+#include "estimation/problem.h"
+
+#include <string>
+#include <utility>
+
+namespace ringid {
+
+Problem::Problem(std::unique_ptr<ModalModel> model, const Dataset& dataset)
+    : model_(std::move(model)), dataset_(dataset) {}
+
+std::unique_ptr<Problem> Problem::Create(const ModalModel& model, const Dataset& dataset,
+                                         const ResidualOptions& options, Status* status) {
+  std::string why;
+  if (!options.IsValid(&why)) {
+    *status = Status::InvalidInput("invalid options: " + why);
+    return nullptr;
+  }
+  std::unique_ptr<Problem> p(new Problem(model.Clone(), dataset));
+  if (!ParameterSetup::Build(*p->model_, p->dataset_, &p->setup_, &why)) {
+    *status = Status::InvalidInput(why);
+    return nullptr;
+  }
+  p->residuals_ = std::make_unique<ModalResiduals>(*p->model_, p->dataset_, p->setup_, options);
+  *status = Status::Success();
+  return p;
+}
+
+}  // namespace ringid
