@@ -306,9 +306,143 @@ void Diagnose(const RigidRingModel& baseline, const Dataset& dataset, const Diag
   DiagnoseWithOptions(baseline, dataset, with_prior, r, t0);
 }
 
+namespace {
+
+// Baseline parameters a gap pushed beyond o.prior_factor of their prior.
+std::vector<std::string> Absorbed(const Dataset& dataset, const IdentifySummary& calibrated,
+                                  const DiagnoseOptions& o) {
+  std::vector<std::string> absorbed;
+  for (const ParameterEstimate& e : calibrated.estimates) {
+    if (!e.free) continue;
+    const auto prior = dataset.initial.find(e.param);
+    if (prior == dataset.initial.end() || !(prior->second > 0) || !(e.value > 0)) continue;
+    const double factor = e.value / prior->second;
+    if (std::abs(std::log(factor)) > std::log(o.prior_factor)) {
+      char line[160];
+      std::snprintf(line, sizeof line, "%s moved from its initial %.4g to %.4g (x %.2f)",
+                    ParamName(e.param), prior->second, e.value, factor);
+      absorbed.push_back(line);
+    }
+  }
+  return absorbed;
+}
+
+// One candidate effect refitted on top of the calibrated baseline, with the
+// evidence for it against the baseline.
+EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, const Dataset& warm,
+                       const Dataset& dataset, const DiagnosisReport& r, const DiagnoseOptions& o) {
+  EffectFit f;
+  f.effect = effect.name();
+  const RigidRingModel model = baseline.With(&effect);
+  const IdentifySummary s = FitEffect(model, effect, warm, dataset, o);
+  if (!s.status.ok()) {
+    f.note = s.status.message;
+    return f;
+  }
+  const int m = static_cast<int>(r.baseline.uncertainty.jacobian.rows());
+  const int n_base = static_cast<int>(r.baseline.coordinate_names.size());
+  f.ok = true;
+  f.chi2 = 2 * s.cost;
+  f.extra_parameters = static_cast<int>(s.coordinate_names.size()) - n_base;
+  f.lrt_statistic = std::max(0.0, r.chi2_before - f.chi2);
+  f.lrt_p = f.extra_parameters > 0 ? ChiSquareTail(f.lrt_statistic, f.extra_parameters) : 1.0;
+  f.aic = f.chi2 + 2 * (n_base + f.extra_parameters);
+  f.bic = f.chi2 + std::log(std::max(m, 1)) * (n_base + f.extra_parameters);
+  f.gap_after = std::max(0.0, f.chi2 - std::max(r.dof - f.extra_parameters, 0));
+  f.shrink = r.gap_before > 0 ? 1 - f.gap_after / r.gap_before : 0;
+  // The targeted likelihood-ratio test is far more powerful than the
+  // omnibus chi-square of the gap: an effect stands on its own test.
+  const double aic_base = r.chi2_before + 2 * n_base;
+  f.supported = r.p_value && f.lrt_p < o.effect_significance && f.aic < aic_base - 2;
+  for (Param p : effect.parameters()) {
+    if (s.parameters.IsSet(p)) f.values[ParamName(p)] = s.parameters[p];
+  }
+  std::vector<ModalResiduals::Slot> es;
+  std::vector<double> er;
+  if (ResidualsAt(model, dataset, s.parameters, &es, &er, o.fit.residuals)) {
+    f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
+    f.where = Misfits(es, er, dataset);
+  }
+  if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
+  f.minimal_detectable = MinimalDetectable(baseline, effect, warm, r.baseline.uncertainty.jacobian,
+                                           r.baseline.uncertainty.rank, o, 20.0);
+  return f;
+}
+
+// The verdict from the ranking: the supported effect of least AIC, those
+// within o.group_aic of it, and in words why.
+void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vector<double>& before,
+             const DiagnoseOptions& o, DiagnosisReport* r, std::ostringstream* why) {
+  const EffectFit* best = nullptr;
+  for (const EffectFit& f : r->ranking) {
+    if (f.supported && (!best || f.aic < best->aic)) best = &f;
+  }
+  if (!r->p_value) {
+    *why << "no degree of freedom is left (" << r->baseline.uncertainty.jacobian.rows()
+         << " residuals, rank " << r->baseline.uncertainty.rank << "): the baseline can match these data "
+         << "exactly, so no gap can be detected and no effect supported";
+    return;
+  }
+  if (!best && !r->significant) {
+    *why << "no significant gap: chi-square " << r->chi2_before << " on " << r->dof
+         << " degrees of freedom (p = " << *r->p_value << "), and no effect's likelihood-ratio test passes";
+    return;
+  }
+  if (!best) {
+    *why << "the gap is significant (p = " << *r->p_value
+         << ") but no catalogue effect explains it beyond a re-calibration of the baseline";
+    if (!r->absorbed.empty()) *why << "; part of it sits in the parameters";
+    return;
+  }
+  r->verdict = best->effect;
+  for (const EffectFit& f : r->ranking) {
+    if (f.supported && f.aic <= best->aic + o.group_aic) r->indistinguishable.push_back(f.effect);
+  }
+  if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
+  *why << best->effect << " removes " << static_cast<int>(std::round(100 * best->shrink))
+       << " % of the gap (likelihood ratio " << best->lrt_statistic << " on "
+       << best->extra_parameters << " parameter(s), p = " << best->lrt_p << ")";
+  if (!r->indistinguishable.empty()) {
+    *why << "; these data cannot tell it from";
+    for (const std::string& e : r->indistinguishable) {
+      if (e != best->effect) *why << " " << e;
+    }
+  }
+  if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
+  if (r->held_out_before && best->held_out_chi2 && *r->held_out_before > 0) {
+    *why << "; on held-out modes (each predicted from a fit without it) the misfit falls "
+         << "from chi-square " << *r->held_out_before << " to " << *best->held_out_chi2 << " ("
+         << static_cast<int>(std::round(100 * (1 - *best->held_out_chi2 / *r->held_out_before)))
+         << " % less)";
+  }
+  for (size_t i = 0; i < before.size() && i < best->mode_chi2.size(); ++i) {
+    r->mode_shrink.push_back(before[i] > 0 ? 1 - best->mode_chi2[i] / before[i] : 0);
+  }
+}
+
+// For a "none" verdict: the sizes the explanation promises, checked beyond
+// first order, as text ("" when there are none).
+std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
+                            const DiagnoseOptions& o, DiagnosisReport* r) {
+  const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
+  std::ostringstream small;
+  for (EffectFit& f : r->ranking) {
+    const Effect* effect = FindEffect(f.effect);
+    for (auto& [name, v] : f.minimal_detectable) {
+      v = CheckedDetectable(baseline, *effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
+      char b[96];
+      std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect.c_str(),
+                    name.c_str(), v);
+      small << b;
+    }
+  }
+  return small.str();
+}
+
+}  // namespace
+
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
-  std::string why;
   // The gap: calibrate the baseline.
   Identify(baseline, dataset, o.fit, &r->baseline);
   if (!r->baseline.status.ok()) {
@@ -316,10 +450,8 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                  "the baseline could not be calibrated: " + r->baseline.status.message};
     return;
   }
-  const int m = static_cast<int>(r->baseline.uncertainty.jacobian.rows());
-  const int n_base = static_cast<int>(r->baseline.coordinate_names.size());
   r->chi2_before = 2 * r->baseline.cost;
-  r->dof = m - r->baseline.uncertainty.rank;
+  r->dof = static_cast<int>(r->baseline.uncertainty.jacobian.rows()) - r->baseline.uncertainty.rank;
   if (r->dof > 0) {
     r->p_value = ChiSquareTail(r->chi2_before, r->dof);
     r->significant = *r->p_value < o.gap_significance;
@@ -335,130 +467,24 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
   r->where = Misfits(slots, res, dataset);
-  for (const ParameterEstimate& e : r->baseline.estimates) {
-    if (!e.free) continue;
-    const auto prior = dataset.initial.find(e.param);
-    if (prior == dataset.initial.end() || !(prior->second > 0) || !(e.value > 0)) continue;
-    const double factor = e.value / prior->second;
-    if (std::abs(std::log(factor)) > std::log(o.prior_factor)) {
-      char line[160];
-      std::snprintf(line, sizeof line, "%s moved from its initial %.4g to %.4g (x %.2f)",
-                    ParamName(e.param), prior->second, e.value, factor);
-      r->absorbed.push_back(line);
-    }
-  }
+  r->absorbed = Absorbed(dataset, r->baseline, o);
 
   // Which effect: refit with each candidate, from the calibrated baseline.
   const Dataset warm = WarmStart(dataset, r->baseline);
-  const double log_m = std::log(std::max(m, 1));
-  const double aic_base = r->chi2_before + 2 * n_base;
   for (const Effect* effect : EffectCatalogue()) {
-    if (baseline.Has(effect)) continue;  // already in the model
-    EffectFit f;
-    f.effect = effect->name();
-    const RigidRingModel model = baseline.With(effect);
-    IdentifySummary s = FitEffect(model, *effect, warm, dataset, o);
-    if (!s.status.ok()) {
-      f.note = s.status.message;
-      r->ranking.push_back(f);
-      continue;
-    }
-    f.ok = true;
-    f.chi2 = 2 * s.cost;
-    f.extra_parameters = static_cast<int>(s.coordinate_names.size()) - n_base;
-    f.lrt_statistic = std::max(0.0, r->chi2_before - f.chi2);
-    f.lrt_p = f.extra_parameters > 0 ? ChiSquareTail(f.lrt_statistic, f.extra_parameters) : 1.0;
-    f.aic = f.chi2 + 2 * (n_base + f.extra_parameters);
-    f.bic = f.chi2 + log_m * (n_base + f.extra_parameters);
-    f.gap_after = std::max(0.0, f.chi2 - std::max(r->dof - f.extra_parameters, 0));
-    f.shrink = r->gap_before > 0 ? 1 - f.gap_after / r->gap_before : 0;
-    // The targeted likelihood-ratio test is far more powerful than the
-    // omnibus chi-square of the gap: an effect stands on its own test.
-    f.supported = r->p_value && f.lrt_p < o.effect_significance && f.aic < aic_base - 2;
-    for (Param p : effect->parameters()) {
-      if (s.parameters.IsSet(p)) f.values[ParamName(p)] = s.parameters[p];
-    }
-    std::vector<ModalResiduals::Slot> es;
-    std::vector<double> er;
-    if (ResidualsAt(model, dataset, s.parameters, &es, &er, o.fit.residuals)) {
-      f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
-      f.where = Misfits(es, er, dataset);
-    }
-    if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
-    f.minimal_detectable = MinimalDetectable(baseline, *effect, warm, r->baseline.uncertainty.jacobian,
-                                             r->baseline.uncertainty.rank, o, 20.0);
-    r->ranking.push_back(f);
+    if (!baseline.Has(effect)) r->ranking.push_back(FitCandidate(baseline, *effect, warm, dataset, *r, o));
   }
   std::sort(r->ranking.begin(), r->ranking.end(), [](const EffectFit& a, const EffectFit& b) {
     if (a.ok != b.ok) return a.ok;
     return a.aic < b.aic;
   });
-
-  // The verdict.
-  const EffectFit* best = nullptr;
-  for (const EffectFit& f : r->ranking) {
-    if (f.supported && (!best || f.aic < best->aic)) best = &f;
-  }
-  std::ostringstream why_text;
-  if (!r->p_value) {
-    why_text << "no degree of freedom is left (" << m << " residuals, rank "
-             << r->baseline.uncertainty.rank << "): the baseline can match these data "
-             << "exactly, so no gap can be detected and no effect supported";
-  } else if (!best && !r->significant) {
-    why_text << "no significant gap: chi-square " << r->chi2_before << " on " << r->dof
-             << " degrees of freedom (p = " << *r->p_value << "), and no effect's likelihood-ratio test passes";
-  } else if (!best) {
-    why_text << "the gap is significant (p = " << *r->p_value
-             << ") but no catalogue effect explains it beyond a re-calibration of the baseline";
-    if (!r->absorbed.empty()) why_text << "; part of it sits in the parameters";
-  } else {
-    r->verdict = best->effect;
-    for (const EffectFit& f : r->ranking) {
-      if (f.supported && f.aic <= best->aic + o.group_aic) r->indistinguishable.push_back(f.effect);
-    }
-    if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
-    why_text << best->effect << " removes " << static_cast<int>(std::round(100 * best->shrink))
-             << " % of the gap (likelihood ratio " << best->lrt_statistic << " on "
-             << best->extra_parameters << " parameter(s), p = " << best->lrt_p << ")";
-    if (!r->indistinguishable.empty()) {
-      why_text << "; these data cannot tell it from";
-      for (const std::string& e : r->indistinguishable) {
-        if (e != best->effect) why_text << " " << e;
-      }
-    }
-    if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
-    if (r->held_out_before && best->held_out_chi2 && *r->held_out_before > 0) {
-      why_text << "; on held-out modes (each predicted from a fit without it) the misfit falls "
-               << "from chi-square " << *r->held_out_before << " to " << *best->held_out_chi2 << " ("
-               << static_cast<int>(std::round(100 * (1 - *best->held_out_chi2 / *r->held_out_before)))
-               << " % less)";
-    }
-    for (size_t i = 0; i < before.size() && i < best->mode_chi2.size(); ++i) {
-      r->mode_shrink.push_back(before[i] > 0 ? 1 - best->mode_chi2[i] / before[i] : 0);
-    }
-  }
+  std::ostringstream why;
+  Verdict(baseline, warm, before, o, r, &why);
   if (r->verdict == "none") {
-    // The sizes the explanation promises, checked beyond first order.
-    const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
-    for (EffectFit& f : r->ranking) {
-      const Effect* effect = FindEffect(f.effect);
-      for (auto& [name, v] : f.minimal_detectable) {
-        v = CheckedDetectable(baseline, *effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
-      }
-    }
-    std::ostringstream small;
-    for (const EffectFit& f : r->ranking) {
-      for (const auto& [name, v] : f.minimal_detectable) {
-        char b[96];
-        std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect.c_str(), name.c_str(), v);
-        small << b;
-      }
-    }
-    if (small.tellp()) {
-      why_text << ". A re-calibration of the baseline would absorb, undetected: " << small.str();
-    }
+    const std::string sizes = DetectableSizes(baseline, warm, o, r);
+    if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
   }
-  r->explanation = why_text.str();
+  r->explanation = why.str();
   r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -127,60 +127,31 @@ bool IdentifiabilityOptions::IsValid(std::string* why) const {
   return false;
 }
 
-void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
-                            const IdentifiabilityOptions& o,
-                            IdentifiabilityReport* r) {
-  const auto t0 = std::chrono::steady_clock::now();
-  *r = IdentifiabilityReport{};
-  std::string why;
-  if (!o.IsValid(&why)) {
-    r->status = r->fit.status = Status::InvalidInput("invalid options: " + why);
-    return;
-  }
-  Identify(model, dataset, o.fit, &r->fit);
-  if (!r->fit.status.ok()) {
-    r->status = {r->fit.status.outcome, "identification failed: " + r->fit.status.message};
-    return;
-  }
-  const Uncertainty& u = r->fit.uncertainty;
-  if (!u.ok) {
-    r->status = Status::Failed("no Jacobian at the fitted point: " + u.error);
-    return;
-  }
-  Status built;
-  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &built);
-  if (!problem) {  // Identify built the same problem a moment ago
-    r->status = built;
-    return;
-  }
-  const ParameterSetup& setup = problem->setup();
-  const ModalResiduals& residuals = problem->residuals();
-  const int n = setup.size();
-  const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
-  const Eigen::MatrixXd& J = u.jacobian;
-  r->status = Status::Success();
-  r->rank = u.rank;
-  r->num_residuals = static_cast<int>(J.rows());
-  r->condition_number = u.condition_number;
-  r->singular_values = u.singular_values;
-  r->coordinate_names = r->fit.coordinate_names;
-  {
-    std::ostringstream e;
-    e << "rank " << u.rank << " of " << n << " free coordinates from "
-      << J.rows() << " weighted residuals";
-    if (u.rank < n) {
-      e << ": " << n - u.rank << " direction(s) change no residual";
-      if (J.rows() < n) {
-        e << " (" << J.rows() << " observations cannot determine " << n
-          << " unknowns; at least " << n - J.rows() << " are left free)";
-      }
-    }
-    r->rank_explanation = e.str();
-  }
+namespace {
 
-  // Per coordinate: class, std, Wald and profile intervals.
-  const Box box = BoundsAround(setup, setup.Encode(setup.start()), o.fit.bound_factor);
-  for (int i = 0; i < n; ++i) {
+std::string RankExplanation(const Uncertainty& u, int n) {
+  const long rows = u.jacobian.rows();
+  std::ostringstream e;
+  e << "rank " << u.rank << " of " << n << " free coordinates from " << rows
+    << " weighted residuals";
+  if (u.rank < n) {
+    e << ": " << n - u.rank << " direction(s) change no residual";
+    if (rows < n) {
+      e << " (" << rows << " observations cannot determine " << n << " unknowns; at least "
+        << n - rows << " are left free)";
+    }
+  }
+  return e.str();
+}
+
+// Per coordinate: class, std, Wald and profile intervals.
+std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eigen::VectorXd& xhat,
+                                               double cost, const Uncertainty& u,
+                                               const IdentifiabilityOptions& o) {
+  const ParameterSetup& setup = problem.setup();
+  const Box box = BoundsAround(setup, problem.start(), o.fit.bound_factor);
+  std::vector<ParameterIdentifiability> out;
+  for (int i = 0; i < setup.size(); ++i) {
     ParameterIdentifiability p;
     p.param = setup.free()[i];
     p.value = Physical(setup, i, xhat[i]);
@@ -194,13 +165,18 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                       : std::make_pair(p.value - kNormal95 * *p.std, p.value + kNormal95 * *p.std);
     }
     if (o.profile_steps > 0) {
-      p.profile_95 = Profile(residuals, setup, xhat, r->fit.cost, box, i, u.std[i], o);
+      p.profile_95 = Profile(problem.residuals(), setup, xhat, cost, box, i, u.std[i], o);
     }
-    r->parameters.push_back(p);
+    out.push_back(p);
   }
+  return out;
+}
 
-  // Structurally collinear pairs (Brun et al. 2001: index 1/sqrt(lambda_min)
-  // of the normalised columns), named as the combination they leave free.
+// Structurally collinear pairs (Brun et al. 2001: index 1/sqrt(lambda_min)
+// of the normalised columns), named as the combination they leave free.
+void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
+                    const IdentifiabilityOptions& o, IdentifiabilityReport* r) {
+  const int n = setup.size();
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       const double ni = J.col(i).norm(), nj = J.col(j).norm();
@@ -226,128 +202,210 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
       r->combinations.push_back(c);
     }
   }
-  // Null and near-null directions of the whole Jacobian.
+}
+
+// Null and near-null directions of the whole Jacobian.
+void NullDirections(const Eigen::MatrixXd& J, const Uncertainty& u, const ParameterSetup& setup,
+                    const IdentifiabilityOptions& o, std::vector<Combination>* combinations) {
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
   const double smax = u.singular_values.size() ? u.singular_values[0] : 0;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < setup.size(); ++k) {
     const double s = k < u.singular_values.size() ? u.singular_values[k] : 0.0;
     const bool null = k >= u.rank;
     if (!null && !(s < o.near_null * smax)) continue;
     Combination c = Describe(setup, svd.matrixV().col(k), null ? 0.0 : s);
     c.meaning = null ? "free: the data do not change along it"
                      : "nearly free: singular value " + std::to_string(s / smax) + " of the largest";
-    r->combinations.push_back(c);
+    combinations->push_back(c);
   }
+}
 
-  if (u.covariance_ok) {
-    r->correlation = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) {
-        if (u.classes[i] == Identifiability::kNo || u.classes[j] == Identifiability::kNo) continue;
-        r->correlation(i, j) = u.covariance(i, j) /
-                               std::sqrt(u.covariance(i, i) * u.covariance(j, j));
-      }
+// Correlations of the determined coordinates; empty without a covariance.
+Eigen::MatrixXd Correlation(const Uncertainty& u) {
+  if (!u.covariance_ok) return {};
+  const int n = static_cast<int>(u.classes.size());
+  Eigen::MatrixXd c = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      if (u.classes[i] == Identifiability::kNo || u.classes[j] == Identifiability::kNo) continue;
+      c(i, j) = u.covariance(i, j) / std::sqrt(u.covariance(i, i) * u.covariance(j, j));
     }
   }
+  return c;
+}
 
-  // Largest identifiable subset: rank-revealing QR with column pivoting on
-  // the column-normalised Jacobian.
-  {
-    Eigen::MatrixXd Jn = J;
-    for (int i = 0; i < n; ++i) {
-      if (Jn.col(i).norm() > 0) Jn.col(i) /= Jn.col(i).norm();
-    }
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Jn);
-    qr.setThreshold(o.fit.uncertainty.rank_tolerance);
-    for (int k = 0; k < qr.rank(); ++k) {
-      r->identifiable_subset.push_back(ParamName(setup.free()[qr.colsPermutation().indices()[k]]));
-    }
+// Largest identifiable subset: rank-revealing QR with column pivoting on the
+// column-normalised Jacobian.
+std::vector<std::string> IdentifiableSubset(const Eigen::MatrixXd& J, const ParameterSetup& setup,
+                                            double rank_tolerance) {
+  Eigen::MatrixXd Jn = J;
+  for (int i = 0; i < Jn.cols(); ++i) {
+    if (Jn.col(i).norm() > 0) Jn.col(i) /= Jn.col(i).norm();
   }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Jn);
+  qr.setThreshold(rank_tolerance);
+  std::vector<std::string> subset;
+  for (int k = 0; k < qr.rank(); ++k) {
+    subset.push_back(ParamName(setup.free()[qr.colsPermutation().indices()[k]]));
+  }
+  return subset;
+}
 
-  // Experiment design: for each parameter not identifiable, the candidate
-  // observations ranked by the information they add on it.
+// An observation the test could add: rows of the augmented Jacobian, or (a
+// known value) rows of its own.
+struct Candidate {
+  std::string text;
+  std::vector<int> rows;
+  Eigen::MatrixXd extra;
+};
+
+// The dataset with every damping ratio and shape the model predicts at its
+// fitted modes, where the test did not measure (or the fit did not use) them.
+Dataset WithEveryObservation(const Dataset& dataset, const ModalSolution& solution,
+                             const std::vector<int>& pairs, const IdentifiabilityOptions& o) {
   Dataset more = dataset;
+  for (size_t m = 0; m < more.modes.size(); ++m) {
+    const Mode& mode = solution.modes[pairs[m]];
+    MeasuredMode& mm = more.modes[m];
+    if (!mm.damping_ratio || !o.fit.residuals.use_damping) {
+      mm.damping_ratio = std::clamp(mode.damping_ratio, 1e-6, 1 - 1e-6);
+      mm.damping_sigma = o.advice_damping_sigma;
+    }
+    if (mm.shape.empty() || !o.fit.residuals.use_shapes) {
+      const RealShapeVector s = ComparableShape(mode, o.fit.residuals.shape_convention);
+      mm.shape.clear();
+      for (int d = 0; d < kNumDofs; ++d) {
+        if (DofPlane(static_cast<Dof>(d)) == mode.plane()) mm.shape.emplace_back(static_cast<Dof>(d), s[d]);
+      }
+      mm.shape_sigma = o.advice_shape_sigma;
+    }
+  }
+  return more;
+}
+
+// The candidates: each unmeasured damping ratio and shape (rows of the
+// augmented problem), and a known value of each free parameter.
+std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augmented,
+                                  const Eigen::VectorXd& xhat, const IdentifiabilityOptions& o) {
+  std::vector<Candidate> candidates;
+  const auto& slots = augmented.residuals().slots();
+  const ParameterSetup& setup = augmented.setup();
+  for (size_t m = 0; m < dataset.modes.size(); ++m) {
+    const std::string label = LabelName(dataset.modes[m].label);
+    const MeasuredMode& original = dataset.modes[m];
+    Candidate damping{"damping ratio of the " + label + " mode", {}, {}};
+    Candidate shape{"mode shape of the " + label + " mode", {}, {}};
+    for (size_t k = 0; k < slots.size(); ++k) {
+      if (slots[k].mode != static_cast<int>(m)) continue;
+      if (slots[k].kind == ModalResiduals::Slot::kDamping &&
+          !(original.damping_ratio && o.fit.residuals.use_damping)) damping.rows.push_back(k);
+      if (slots[k].kind == ModalResiduals::Slot::kShape &&
+          !(!original.shape.empty() && o.fit.residuals.use_shapes)) shape.rows.push_back(k);
+    }
+    if (!damping.rows.empty()) candidates.push_back(damping);
+    if (!shape.rows.empty()) candidates.push_back(shape);
+  }
+  const int n = setup.size();
+  for (int i = 0; i < n; ++i) {
+    Candidate known{std::string("a known value of ") + ParamName(setup.free()[i]) + " (to " +
+                        std::to_string(static_cast<int>(100 * o.advice_known_relative_sigma)) + " %)",
+                    {}, Eigen::MatrixXd::Zero(1, n)};
+    const double sigma = setup.is_log(i) ? o.advice_known_relative_sigma
+                                         : o.advice_known_relative_sigma * std::max(std::abs(xhat[i]), 1e-12);
+    known.extra(0, i) = 1 / sigma;
+    candidates.push_back(known);
+  }
+  return candidates;
+}
+
+// Experiment design: for each parameter not identifiable, the candidate
+// observations ranked by the information they add on it.
+std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::VectorXd& xhat,
+                                     const Uncertainty& u, const IdentifiabilityOptions& o) {
   ModalSolution solution;
   std::vector<int> pairs;
-  if (residuals.Pair(xhat.data(), &solution, &pairs, &why)) {
-    struct Candidate { std::string text; std::vector<int> rows; Eigen::MatrixXd extra; };
-    std::vector<Candidate> candidates;
-    for (size_t m = 0; m < more.modes.size(); ++m) {
-      const Mode& mode = solution.modes[pairs[m]];
-      MeasuredMode& mm = more.modes[m];
-      if (!mm.damping_ratio || !o.fit.residuals.use_damping) {
-        mm.damping_ratio = std::clamp(mode.damping_ratio, 1e-6, 1 - 1e-6);
-        mm.damping_sigma = o.advice_damping_sigma;
-      }
-      if (mm.shape.empty() || !o.fit.residuals.use_shapes) {
-        const RealShapeVector s = ComparableShape(mode, o.fit.residuals.shape_convention);
-        mm.shape.clear();
-        for (int d = 0; d < kNumDofs; ++d) {
-          if (DofPlane(static_cast<Dof>(d)) == mode.plane()) mm.shape.emplace_back(static_cast<Dof>(d), s[d]);
-        }
-        mm.shape_sigma = o.advice_shape_sigma;
-      }
-    }
-    ResidualOptions all = o.fit.residuals;
-    all.use_damping = all.use_shapes = true;
-    Status augmented_status;
-    const auto augmented = Problem::Create(model, more, all, &augmented_status);
-    Eigen::MatrixXd Ja;
-    if (augmented && EvaluateJacobian(augmented->residuals(), xhat, &Ja)) {
-      const auto& slots = augmented->residuals().slots();
-      for (size_t m = 0; m < more.modes.size(); ++m) {
-        const std::string label = LabelName(more.modes[m].label);
-        const MeasuredMode& original = dataset.modes[m];
-        Candidate damping{"damping ratio of the " + label + " mode", {}, {}};
-        Candidate shape{"mode shape of the " + label + " mode", {}, {}};
-        for (size_t k = 0; k < slots.size(); ++k) {
-          if (slots[k].mode != static_cast<int>(m)) continue;
-          if (slots[k].kind == ModalResiduals::Slot::kDamping &&
-              !(original.damping_ratio && o.fit.residuals.use_damping)) damping.rows.push_back(k);
-          if (slots[k].kind == ModalResiduals::Slot::kShape &&
-              !(!original.shape.empty() && o.fit.residuals.use_shapes)) shape.rows.push_back(k);
-        }
-        if (!damping.rows.empty()) candidates.push_back(damping);
-        if (!shape.rows.empty()) candidates.push_back(shape);
-      }
-      for (int i = 0; i < n; ++i) {
-        Candidate known{std::string("a known value of ") + ParamName(setup.free()[i]) + " (to " +
-                            std::to_string(static_cast<int>(100 * o.advice_known_relative_sigma)) + " %)",
-                        {}, Eigen::MatrixXd::Zero(1, n)};
-        const double sigma = setup.is_log(i) ? o.advice_known_relative_sigma
-                                             : o.advice_known_relative_sigma * std::max(std::abs(xhat[i]), 1e-12);
-        known.extra(0, i) = 1 / sigma;
-        candidates.push_back(known);
-      }
-      const Eigen::MatrixXd F0 = Information(J);
-      const Eigen::VectorXd var0 = Variances(F0);
-      std::vector<Eigen::VectorXd> var_after;
-      for (const Candidate& c : candidates) {
-        Eigen::MatrixXd G = c.extra.rows() ? c.extra : Eigen::MatrixXd(c.rows.size(), n);
-        for (size_t k = 0; k < c.rows.size(); ++k) G.row(k) = Ja.row(c.rows[k]);
-        var_after.push_back(Variances(F0 + G.transpose() * G));
-      }
-      for (int i = 0; i < n; ++i) {
-        if (u.classes[i] == Identifiability::kYes) continue;
-        std::vector<Advice> mine;
-        for (size_t c = 0; c < candidates.size(); ++c) {
-          Advice a;
-          a.parameter = ParamName(setup.free()[i]);
-          a.observation = candidates[c].text;
-          a.information_gain = 0.5 * std::log(var0[i] / var_after[c][i]);
-          const double sd = std::sqrt(var_after[c][i]);
-          const double relative = setup.is_log(i) ? sd : sd / std::max(std::abs(xhat[i]), 1e-300);
-          a.makes_identifiable = relative <= o.fit.uncertainty.practical_relative_std;
-          if (a.information_gain > 0.01) mine.push_back(a);
-        }
-        std::sort(mine.begin(), mine.end(), [](const Advice& a, const Advice& b) {
-          return a.information_gain > b.information_gain;
-        });
-        if (static_cast<int>(mine.size()) > o.advice_per_parameter) mine.resize(o.advice_per_parameter);
-        r->advice.insert(r->advice.end(), mine.begin(), mine.end());
-      }
-    }
+  std::string why;
+  if (!problem.residuals().Pair(xhat.data(), &solution, &pairs, &why)) return {};
+  ResidualOptions all = o.fit.residuals;
+  all.use_damping = all.use_shapes = true;
+  Status status;
+  const auto augmented = Problem::Create(
+      problem.model(), WithEveryObservation(problem.dataset(), solution, pairs, o), all, &status);
+  Eigen::MatrixXd Ja;
+  if (!augmented || !EvaluateJacobian(augmented->residuals(), xhat, &Ja)) return {};
+  const std::vector<Candidate> candidates = Candidates(problem.dataset(), *augmented, xhat, o);
+  const ParameterSetup& setup = problem.setup();
+  const int n = setup.size();
+  const Eigen::MatrixXd F0 = Information(u.jacobian);
+  const Eigen::VectorXd var0 = Variances(F0);
+  std::vector<Eigen::VectorXd> var_after;
+  for (const Candidate& c : candidates) {
+    Eigen::MatrixXd G = c.extra.rows() ? c.extra : Eigen::MatrixXd(c.rows.size(), n);
+    for (size_t k = 0; k < c.rows.size(); ++k) G.row(k) = Ja.row(c.rows[k]);
+    var_after.push_back(Variances(F0 + G.transpose() * G));
   }
+  std::vector<Advice> advice;
+  for (int i = 0; i < n; ++i) {
+    if (u.classes[i] == Identifiability::kYes) continue;
+    std::vector<Advice> mine;
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      Advice a;
+      a.parameter = ParamName(setup.free()[i]);
+      a.observation = candidates[c].text;
+      a.information_gain = 0.5 * std::log(var0[i] / var_after[c][i]);
+      const double sd = std::sqrt(var_after[c][i]);
+      const double relative = setup.is_log(i) ? sd : sd / std::max(std::abs(xhat[i]), 1e-300);
+      a.makes_identifiable = relative <= o.fit.uncertainty.practical_relative_std;
+      if (a.information_gain > 0.01) mine.push_back(a);
+    }
+    std::sort(mine.begin(), mine.end(), [](const Advice& a, const Advice& b) {
+      return a.information_gain > b.information_gain;
+    });
+    if (static_cast<int>(mine.size()) > o.advice_per_parameter) mine.resize(o.advice_per_parameter);
+    advice.insert(advice.end(), mine.begin(), mine.end());
+  }
+  return advice;
+}
+
+}  // namespace
+
+void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
+                            const IdentifiabilityOptions& o,
+                            IdentifiabilityReport* r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  *r = IdentifiabilityReport{};
+  std::string why;
+  if (!o.IsValid(&why)) {
+    r->status = r->fit.status = Status::InvalidInput("invalid options: " + why);
+    return;
+  }
+  Identify(model, dataset, o.fit, &r->fit);
+  if (!r->fit.status.ok()) {
+    r->status = {r->fit.status.outcome, "identification failed: " + r->fit.status.message};
+    return;
+  }
+  const Uncertainty& u = r->fit.uncertainty;
+  if (!u.ok) {
+    r->status = Status::Failed("no Jacobian at the fitted point: " + u.error);
+    return;
+  }
+  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &r->status);
+  if (!problem) return;  // Identify built the same problem a moment ago
+  const ParameterSetup& setup = problem->setup();
+  const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
+  const Eigen::MatrixXd& J = u.jacobian;
+  r->rank = u.rank;
+  r->num_residuals = static_cast<int>(J.rows());
+  r->condition_number = u.condition_number;
+  r->singular_values = u.singular_values;
+  r->coordinate_names = r->fit.coordinate_names;
+  r->rank_explanation = RankExplanation(u, setup.size());
+  r->parameters = Classify(*problem, xhat, r->fit.cost, u, o);
+  CollinearPairs(J, setup, o, r);
+  NullDirections(J, u, setup, o, &r->combinations);
+  r->correlation = Correlation(u);
+  r->identifiable_subset = IdentifiableSubset(J, setup, o.fit.uncertainty.rank_tolerance);
+  r->advice = ExperimentAdvice(*problem, xhat, u, o);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
