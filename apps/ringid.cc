@@ -208,9 +208,7 @@ int Predict(int argc, char** argv) {
   } else {
     Dataset d;
     if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
-    for (const auto& [k, v] : d.known) p[k] = v;
-    for (const auto& [k, v] : d.initial) p[k] = v;
-    for (const auto& [from, to] : d.ties) p[from] = p[to];
+    p = InitialParameters(d);
   }
   const RigidRingModel model(effects);
   const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;

@@ -403,4 +403,12 @@ std::string DatasetToJson(const Dataset& d) {
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
+Parameters InitialParameters(const Dataset& d) {
+  Parameters p;
+  for (const auto& [k, v] : d.known) p[k] = v;
+  for (const auto& [k, v] : d.initial) p[k] = v;
+  for (const auto& [from, to] : d.ties) p[from] = p[to];
+  return p;
+}
+
 }  // namespace ringid

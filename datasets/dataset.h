@@ -51,6 +51,9 @@ struct LoadError {
 // Reads a whole input file (at most kMaxFileBytes). False with `error` set.
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
 
+// The dataset's starting point: known values, initial values, ties applied.
+Parameters InitialParameters(const Dataset& dataset);
+
 // Loads and checks a dataset. On failure returns false and fills `error`;
 // `dataset` is then unspecified.
 bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);

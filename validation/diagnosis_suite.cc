@@ -28,15 +28,9 @@ bool AbsorbedAsStated(const DiagnosisReport& r, const Effect& effect, double val
 }  // namespace
 
 Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
-  LoadError load;
   Dataset table1;
-  if (!LoadDataset(o.source_dir + "/datasets/paper/table1.json", &table1, &load)) {
-    return Status::InvalidInput(load.OneLine());
-  }
   Parameters paper;
-  for (const auto& [p, v] : table1.known) paper[p] = v;
-  for (const auto& [p, v] : table1.initial) paper[p] = v;
-  for (const auto& [a, b] : table1.ties) paper[a] = paper[b];
+  if (Status s = LoadPaper(o, &table1, &paper); !s.ok()) return s;
   // nullptr: no effect withheld.
   std::vector<const Effect*> truths = {nullptr};
   for (const Effect* e : EffectCatalogue()) truths.push_back(e);

@@ -20,17 +20,18 @@ namespace {
 
 using P = Param;
 
+}  // namespace
+
 Status LoadPaper(const SuiteOptions& o, Dataset* table1, Parameters* paper) {
   LoadError e;
   if (!LoadDataset(o.source_dir + "/datasets/paper/table1.json", table1, &e)) {
     return Status::InvalidInput(e.OneLine());
   }
-  *paper = Parameters{};
-  for (const auto& [p, v] : table1->known) (*paper)[p] = v;
-  for (const auto& [p, v] : table1->initial) (*paper)[p] = v;
-  for (const auto& [a, b] : table1->ties) (*paper)[a] = (*paper)[b];
+  *paper = InitialParameters(*table1);
   return Status::Success();
 }
+
+namespace {
 
 // datasets/synthetic.h's Simulate, shapes on the seven belt and rim DOFs.
 Dataset Simulated(const Parameters& truth, double freq_rel, double zeta_rel,
@@ -77,8 +78,7 @@ SuiteOutput Output(Status (*run)(const SuiteOptions&, Body*), const SuiteOptions
 Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite) {
   Dataset table1;
   Parameters paper;
-  const Status loaded = LoadPaper(o, &table1, &paper);
-  if (!loaded.ok()) return loaded;
+  if (Status s = LoadPaper(o, &table1, &paper); !s.ok()) return s;
   const ModalSolution s = RigidRingModel().Solve(paper);
   for (int k = 0; k < 7; ++k) {
     const Mode* m = s.Find(static_cast<ModeLabel>(k));
@@ -100,8 +100,7 @@ Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite) {
 Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
   Dataset table1;
   Parameters paper;
-  const Status loaded = LoadPaper(o, &table1, &paper);
-  if (!loaded.ok()) return loaded;
+  if (Status s = LoadPaper(o, &table1, &paper); !s.ok()) return s;
   std::mt19937_64 rng(o.seed);
   const struct { const char* name; double scale; } tires[] = {
       {"small (0.7 x paper)", 0.7}, {"paper", 1.0}, {"large (1.5 x paper)", 1.5}};
@@ -157,8 +156,7 @@ Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
 Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite) {
   Dataset table1;
   Parameters paper;
-  const Status loaded = LoadPaper(o, &table1, &paper);
-  if (!loaded.ok()) return loaded;
+  if (Status s = LoadPaper(o, &table1, &paper); !s.ok()) return s;
   const struct { const char* name; bool damping, shapes; } variants[] = {
       {"frequencies only", false, false}, {"+ mode shapes", false, true},
       {"+ damping ratios", true, false}, {"+ shapes and damping", true, true}};

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "datasets/dataset.h"
 #include "estimation/fit.h"
 #include "estimation/status.h"
 #include "estimation/uncertainty.h"
@@ -217,6 +218,10 @@ struct SuiteEntry {
 const std::vector<SuiteEntry>& Suites();
 // The suites' names, for help and error text: "paper, synthetic, ...".
 std::string SuiteNames();
+
+// Table 1 of datasets/paper/ and the paper's tire (Table 2, its ties, the
+// recovered inertias) from o.source_dir.
+Status LoadPaper(const SuiteOptions& o, Dataset* table1, Parameters* paper);
 
 // The paper's tire scaled by s: masses s^2, inertias s^4, lengths s,
 // translational stiffness s, contact stiffness K (N) s^2, rotational
