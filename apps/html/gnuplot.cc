@@ -81,15 +81,25 @@ bool Wait(const GnuplotRun& run, pid_t pid, int* status, std::string* error) {
   }
 }
 
+// Whether `line` has gnuplot's "line N:", where it places its messages.
+bool NamesAScriptLine(const std::string& line) {
+  for (size_t i = line.find("line "); i != std::string::npos; i = line.find("line ", i + 1)) {
+    size_t end = i + 5;
+    while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) ++end;
+    if (end > i + 5 && end < line.size() && line[end] == ':') return true;
+  }
+  return false;
+}
+
 // The line of gnuplot's log that says what went wrong: the first one that
-// names an error, else the first one with text.
+// names an error or a script line, else the first one with text.
 std::string ErrorLine(const std::string& log) {
   std::stringstream lines(log);
   std::string line, first;
   while (std::getline(lines, line)) {
     if (line.find_first_not_of(" \t^") == std::string::npos) continue;
     if (first.empty()) first = line;
-    if (line.find("rror") != std::string::npos) return line;
+    if (line.find("rror") != std::string::npos || NamesAScriptLine(line)) return line;
   }
   return first;
 }
