@@ -14,14 +14,14 @@ namespace {
 // ------------------------------------------------------------------ paper
 
 // Table 3 of the paper against the model; the frequencies for the figure.
-FrequencyFigureOptions Table3Section(const json& r, Page* page) {
+FrequencyFigureOptions Table3Section(const json& report, Page* page) {
   std::vector<Row> rows;
   FrequencyFigureOptions figure;
   figure.name = "bench-paper-table3";
   figure.reference_title = "paper (Table 3)";
   figure.band_title = "± 0.05 Hz, the paper's rounding";
   figure.reference_name = "paper";
-  for (const json& m : List(r, "table3")) {
+  for (const json& m : List(report, "table3")) {
     const auto paper = Num(m, "paper_hz"), model = Num(m, "model_hz");
     std::optional<double> diff, relative;
     if (paper && model) diff = *model - *paper;
@@ -46,10 +46,10 @@ struct Coverage {
   double low = 90;
 };
 
-Coverage TiresSection(const json& r, Page* page) {
+Coverage TiresSection(const json& report, Page* page) {
   Coverage coverage;
   std::vector<Row> rows;
-  for (const json& t : List(r, "tires")) {
+  for (const json& t : List(report, "tires")) {
     const auto c = Num(t, "coverage_95"), n = Num(t, "intervals");
     rows.push_back({ValueCell(Get(t, "tire")), NumberCell(Num(t, "scale")),
                     ValueCell(Get(t, "replicates")), ValueCell(Get(t, "intervals")), PercentCell(c),
@@ -112,10 +112,10 @@ struct Conditioning {
   int free_max = 0;
 };
 
-Conditioning VariantsSection(const json& r, Page* page) {
+Conditioning VariantsSection(const json& report, Page* page) {
   Conditioning out;
   std::vector<Row> rows;
-  for (const json& v : List(r, "variants")) {
+  for (const json& v : List(report, "variants")) {
     int counts[3] = {0, 0, 0}, n = 0;
     if (const json& classes = Get(v, "classes"); classes.is_object()) {
       for (const auto& [name, c] : classes.items()) {
@@ -223,8 +223,8 @@ void ConfusionLabels(const json& confusion, std::vector<std::string>* truths,
 }
 
 // The confusion table; the heat map's cells.
-HeatMapOptions ConfusionSection(const json& r, Page* page) {
-  const json& confusion = Get(r, "confusion");
+HeatMapOptions ConfusionSection(const json& report, Page* page) {
+  const json& confusion = Get(report, "confusion");
   HeatMapOptions map;
   ConfusionLabels(confusion, &map.rows, &map.columns);
   std::vector<Row> rows;
@@ -245,11 +245,11 @@ HeatMapOptions ConfusionSection(const json& r, Page* page) {
   return map;
 }
 
-void CasesSection(const json& r, Page* page) {
+void CasesSection(const json& report, Page* page) {
   page->Heading("Cases");
   page->Table({"case", "truth", "shift", "value", "verdict", "indistinguishable", "gap p-value",
                "correct", "absorbed and explained", "seconds"},
-              RowsOf(List(r, "cases"), [](const json& c) -> Row {
+              RowsOf(List(report, "cases"), [](const json& c) -> Row {
                 return {ValueCell(Get(c, "case")), ValueCell(Get(c, "truth")),
                         NumberCell(Num(c, "shift")), NumberCell(Num(c, "value")),
                         ValueCell(Get(c, "verdict")), ValueCell(Get(c, "indistinguishable")),

@@ -11,9 +11,9 @@ namespace {
 
 // The table's columns: the report's, else the first dataset's keys; always
 // the report file.
-std::vector<std::string> Columns(const json& r, const json& datasets) {
+std::vector<std::string> Columns(const json& report, const json& datasets) {
   std::vector<std::string> columns;
-  for (const json& c : List(r, "columns")) {
+  for (const json& c : List(report, "columns")) {
     if (c.is_string()) columns.push_back(c.get<std::string>());
   }
   if (columns.empty() && !datasets.empty() && datasets[0].is_object()) {

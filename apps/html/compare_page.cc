@@ -38,11 +38,11 @@ std::vector<double> SortedCosts(const json& list, bool positive_only, int* dropp
 }
 
 // The methods table; the most starts of a method.
-size_t MethodsSection(const json& r, Page* page) {
+size_t MethodsSection(const json& report, Page* page) {
   std::vector<Row> rows;
   size_t starts = 0;
   for (const auto& [key, title] : kMethods) {
-    const json& m = Get(r, key);
+    const json& m = Get(report, key);
     if (!m.is_object()) continue;
     const std::vector<double> costs = SortedCosts(List(m, "final_costs"), false);
     starts = std::max(starts, List(m, "final_costs").size());
@@ -60,13 +60,13 @@ size_t MethodsSection(const json& r, Page* page) {
   return starts;
 }
 
-void PerStartSection(const json& r, size_t starts, Page* page) {
+void PerStartSection(const json& report, size_t starts, Page* page) {
   std::vector<Row> rows;
   for (size_t i = 0; i < starts; ++i) {
     Row row = {TextCell(std::to_string(i + 1))};
     for (const auto& [key, title] : kMethods) {
-      const json& costs = List(Get(r, key), "final_costs");
-      const json& evaluations = List(Get(r, key), "evaluations");
+      const json& costs = List(Get(report, key), "final_costs");
+      const json& evaluations = List(Get(report, key), "evaluations");
       row.push_back(NumberCell(i < costs.size() ? Num(costs[i]) : std::nullopt));
       row.push_back(
           NumberCell(i < evaluations.size() ? Num(evaluations[i]) : std::nullopt, "%.0f"));
@@ -80,8 +80,8 @@ void PerStartSection(const json& r, size_t starts, Page* page) {
 }
 
 // The dashed line of the cost at the initial values; widens `high` to it.
-std::string InitialCostLine(const json& r, double* high) {
-  const auto c = Num(Get(r, "initial"), "cost");
+std::string InitialCostLine(const json& report, double* high) {
+  const auto c = Num(Get(report, "initial"), "cost");
   if (!c || *c <= 0) return "";
   *high = std::max(*high, *c);
   std::ostringstream g;
@@ -92,13 +92,14 @@ std::string InitialCostLine(const json& r, double* high) {
 }
 
 // Final costs of every start, sorted, per method.
-void FinalCostFigure(const json& r, size_t starts, Page* page) {
+void FinalCostFigure(const json& report, size_t starts, Page* page) {
   Figure f("compare-final-costs", 800, 400);
   std::vector<std::string> parts;
   int dropped = 0;
   double low = INFINITY, high = 0;
   for (int k = 0; k < 2; ++k) {
-    const auto costs = SortedCosts(List(Get(r, kMethods[k].key), "final_costs"), true, &dropped);
+    const auto costs =
+        SortedCosts(List(Get(report, kMethods[k].key), "final_costs"), true, &dropped);
     if (costs.empty()) continue;
     Series s;
     for (size_t i = 0; i < costs.size(); ++i) s.Row({i + 1.0, costs[i]});
@@ -116,7 +117,7 @@ void FinalCostFigure(const json& r, size_t starts, Page* page) {
     << "set xlabel 'start, sorted by final cost'\nset ylabel 'final cost (½ Σ weighted "
        "residual²)'\n"
     << "set offsets 0.3, 0.3, 0, 0\n"
-    << (starts <= 30 ? "set xtics 1\n" : "") << InitialCostLine(r, &high);
+    << (starts <= 30 ? "set xtics 1\n" : "") << InitialCostLine(report, &high);
   g << "set yrange [" << low / 5 << ":" << high * 20 << "]\n" << PlotCommand(parts);
   f.script = g.str();
   f.caption =
@@ -157,13 +158,13 @@ Series ConvergenceSeries(const json& m, bool traces, bool* log_x) {
 }
 
 // Cost against evaluations: the traces when present, else the end points.
-void ConvergenceFigure(const json& r, Page* page) {
+void ConvergenceFigure(const json& report, Page* page) {
   Figure f("compare-convergence", 800, 420);
   std::vector<std::string> parts;
   bool traces = false, log_x = true;
-  for (const auto& [key, title] : kMethods) traces |= !List(Get(r, key), "histories").empty();
+  for (const auto& [key, title] : kMethods) traces |= !List(Get(report, key), "histories").empty();
   for (int k = 0; k < 2; ++k) {
-    const Series s = ConvergenceSeries(Get(r, kMethods[k].key), traces, &log_x);
+    const Series s = ConvergenceSeries(Get(report, kMethods[k].key), traces, &log_x);
     if (s.empty()) continue;
     parts.push_back(f.AddData(s) + " using 1:2 " +
                     (traces ? "with lines lw 1.2"

@@ -56,21 +56,21 @@ std::map<std::string, Misfit> ReadMisfits(const json& where, std::vector<std::st
   return out;
 }
 
-Misfits ReadMisfits(const json& r) {
+Misfits ReadMisfits(const json& report) {
   Misfits misfits;
-  const json& after = Get(Get(r, "verdict"), "where_after");
+  const json& after = Get(Get(report, "verdict"), "where_after");
   misfits.has_after = after.is_array() && !after.empty();
-  misfits.before = ReadMisfits(List(r, "where"), &misfits.labels);
-  misfits.after = ReadMisfits(List(Get(r, "verdict"), "where_after"),
+  misfits.before = ReadMisfits(List(report, "where"), &misfits.labels);
+  misfits.after = ReadMisfits(List(Get(report, "verdict"), "where_after"),
                               misfits.has_after ? &misfits.labels : nullptr);
   return misfits;
 }
 
-void EffectsSection(const json& r, Page* page) {
+void EffectsSection(const json& report, Page* page) {
   page->Heading("Effects, best first");
   page->Table({"effect", "fitted", "gap after", "shrink (%)", "likelihood ratio", "p",
                "extra parameters", "AIC", "BIC", "supported", "values"},
-              RowsOf(List(r, "ranking"), [](const json& f) -> Row {
+              RowsOf(List(report, "ranking"), [](const json& f) -> Row {
                 const json& ev = Get(f, "evidence");
                 return {ValueCell(Get(f, "effect")), ValueCell(Get(f, "fitted")),
                         NumberCell(Num(f, "gap_after")), PercentCell(Num(f, "shrink")),
@@ -171,11 +171,11 @@ struct Ranking {
   double lr_min = 1, shrink_low = 0, shrink_high = 100;
 };
 
-Ranking ReadRanking(const json& r) {
+Ranking ReadRanking(const json& report) {
   // The LR test's threshold at p = 1e-3 (χ² quantile) for 1 to 6 extra parameters.
   static const double kLrAt1e3[] = {10.828, 13.816, 16.266, 18.467, 20.515, 22.458};
   Ranking out;
-  for (const json& q : List(r, "ranking")) {
+  for (const json& q : List(report, "ranking")) {
     const auto s = Num(q, "shrink");
     const auto l = Num(Get(q, "evidence"), "likelihood_ratio");
     if (!s && !l) continue;
@@ -225,8 +225,8 @@ std::string LikelihoodRatioPanel(Figure* f, const Ranking& ranking) {
   return panel;
 }
 
-void RankingFigure(const json& r, Page* page) {
-  Ranking ranking = ReadRanking(r);
+void RankingFigure(const json& report, Page* page) {
+  Ranking ranking = ReadRanking(report);
   if (ranking.effects.empty()) {
     page->Note("No ranking figure: no effect was fitted.");
     return;

@@ -22,8 +22,8 @@ Cell IntervalCell(const json& interval) {
   return {"[" + (a ? Format(*a) : "open") + ", " + (b ? Format(*b) : "open") + "]", true};
 }
 
-void TableSections(const json& r, Page* page) {
-  const json& parameters = Get(r, "parameters");
+void TableSections(const json& report, Page* page) {
+  const json& parameters = Get(report, "parameters");
   std::vector<Row> rows;
   if (parameters.is_object()) {
     for (const auto& [name, q] : parameters.items()) {
@@ -38,29 +38,29 @@ void TableSections(const json& r, Page* page) {
               rows);
   page->TableSection("Free and near-free combinations",
                      {"combination", "meaning", "singular value"},
-                     RowsOf(List(r, "combinations"), [](const json& c) -> Row {
+                     RowsOf(List(report, "combinations"), [](const json& c) -> Row {
                        return {ValueCell(Get(c, "text")), ValueCell(Get(c, "meaning")),
                                NumberCell(Num(c, "singular_value"))};
                      }));
   page->TableSection(
       "Collinear pairs", {"parameters", "collinearity index"},
-      RowsOf(List(r, "collinear_pairs"), [](const json& c) -> Row {
+      RowsOf(List(report, "collinear_pairs"), [](const json& c) -> Row {
         return {ValueCell(Get(c, "parameters")), NumberCell(Num(c, "collinearity_index"))};
       }));
   page->TableSection(
       "Experiment advice",
       {"parameter", "extra observation", "information gain", "makes it identifiable"},
-      RowsOf(List(r, "advice"), [](const json& a) -> Row {
+      RowsOf(List(report, "advice"), [](const json& a) -> Row {
         return {ValueCell(Get(a, "parameter")), ValueCell(Get(a, "observation")),
                 NumberCell(Num(a, "information_gain")), ValueCell(Get(a, "makes_identifiable"))};
       }));
 }
 
-void SingularValueFigure(const json& r, Page* page) {
+void SingularValueFigure(const json& report, Page* page) {
   Series above, below;
-  const auto rank = Num(r, "rank");
+  const auto rank = Num(report, "rank");
   int k = 0, shown = 0;
-  for (const json& v : List(r, "singular_values")) {
+  for (const json& v : List(report, "singular_values")) {
     ++k;
     const auto s = Num(v);
     if (!s || *s <= 0) continue;
@@ -78,8 +78,8 @@ void SingularValueFigure(const json& r, Page* page) {
     << "set xlabel 'index (largest first)'\nset ylabel 'singular value'\nset key top right\n";
   if (rank) {
     g << "set label 1 "
-      << GnuplotString("rank " + Text(Get(r, "rank")) + " of " +
-                       std::to_string(List(r, "coordinates").size()) + " free coordinates")
+      << GnuplotString("rank " + Text(Get(report, "rank")) + " of " +
+                       std::to_string(List(report, "coordinates").size()) + " free coordinates")
       << " at graph 0.03, graph 0.06 left\n";
   }
   std::vector<std::string> parts;
@@ -99,13 +99,13 @@ void SingularValueFigure(const json& r, Page* page) {
   page->AddFigure(std::move(f));
 }
 
-void CorrelationFigure(const json& r, Page* page) {
+void CorrelationFigure(const json& report, Page* page) {
   HeatMapOptions map;
   map.name = "identifiability-correlation";
-  for (const json& c : List(r, "coordinates")) map.rows.push_back(Text(c));
+  for (const json& c : List(report, "coordinates")) map.rows.push_back(Text(c));
   map.columns = map.rows;
   const size_t n = map.rows.size();
-  const json& correlation = Get(r, "correlation");
+  const json& correlation = Get(report, "correlation");
   bool any = false;
   if (correlation.is_array() && correlation.size() == n) {
     for (const json& row : correlation) {
