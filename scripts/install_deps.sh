@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ringid builds with, and any packages named
-# as arguments (scripts/fuzz.sh adds clang), if any is missing.
+# as arguments (scripts/fuzz.sh adds clang), if any is missing. gnuplot draws
+# the report's figures; chromium renders its pages in the tests, which fail
+# without them when CI is set.
 set -euo pipefail
 packages=(g++ cmake make libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
-          libgtest-dev libbenchmark-dev nlohmann-json3-dev libssl-dev libboost-dev gnuplot-nox "$@")
+          libgtest-dev libbenchmark-dev nlohmann-json3-dev libssl-dev libboost-dev gnuplot-nox chromium "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,6 +1,8 @@
 // ringid report: every kind of JSON report as one self-contained HTML page
+// ringid report: every kind of JSON report as one self-contained HTML page
 // with its figures drawn by gnuplot; the error contract (exit status,
-// docs/conventions.md §6); screenshots.
+// docs/conventions.md §6); each page in Chromium: a screenshot, and its
+// figures whole in the parsed DOM.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -11,16 +13,19 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "tests/browser_check.h"
 #include "tests/test_support.h"
 
 namespace {
 
 using json = nlohmann::json;
+using ringid::testing::Chromium;
 using ringid::testing::Exists;
 using ringid::testing::ReadFile;
 using ringid::testing::Ringid;
@@ -29,12 +34,7 @@ using ringid::testing::Scratch;
 
 std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
 
-bool HaveGnuplot() { return Exists("/usr/bin/gnuplot"); }
-
-std::string Chromium() {
-  if (Exists("/usr/bin/chromium")) return "/usr/bin/chromium";
-  return std::system("command -v chromium > /dev/null 2>&1") == 0 ? "chromium" : "";
-}
+bool HaveGnuplot() { return ringid::testing::HaveProgram("gnuplot"); }
 
 // `command` through the shell; exit status and stderr.
 RunResult Shell(const std::string& command) {
@@ -215,7 +215,7 @@ Made BenchDiagnosis() {
 // --------------------------------------------------------------- tests
 
 TEST(HtmlReportTest, IdentifyOfThePaperDrawsTheFrequencies) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyPaper();
   // Table 1 has no shapes and leaves 9 directions free (rank 7 of 16): no
   // MAC and no standard deviation, so only the frequency figure.
@@ -237,7 +237,7 @@ TEST(HtmlReportTest, IdentifyOfThePaperDrawsTheFrequencies) {
 }
 
 TEST(HtmlReportTest, IdentifyWithShapesDrawsMacAndIntervals) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyShapes();
   int with_std = 0;
   for (const auto& [name, p] : m.report["parameters"].items()) {
@@ -263,7 +263,7 @@ TEST(HtmlReportTest, IdentifyWithShapesDrawsMacAndIntervals) {
 }
 
 TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Identifiability();
   ExpectWellFormed(m.html, 3);
   const std::string svg = Figures(m.html);
@@ -282,7 +282,7 @@ TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
 }
 
 TEST(HtmlReportTest, CompareDrawsCostsAndConvergence) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Compare();
   ExpectWellFormed(m.html, 2);
   const std::string svg = Figures(m.html);
@@ -295,7 +295,7 @@ TEST(HtmlReportTest, CompareDrawsCostsAndConvergence) {
 }
 
 TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Diagnose();
   const json& verdict = m.report["verdict"];
   ExpectWellFormed(m.html, 3);
@@ -326,7 +326,7 @@ TEST(HtmlReportTest, PredictIsTablesOnly) {
 }
 
 TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGaps) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Campaign();
   ExpectWellFormed(m.html, 1);
   EXPECT_NE(Figures(m.html).find(">case000<"), std::string::npos);
@@ -334,7 +334,7 @@ TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGaps) {
 }
 
 TEST(HtmlReportTest, BenchPaperDrawsTable3) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Bench("paper");
   ExpectWellFormed(m.html, 1);
   const std::string svg = Figures(m.html);
@@ -345,7 +345,7 @@ TEST(HtmlReportTest, BenchPaperDrawsTable3) {
 }
 
 TEST(HtmlReportTest, BenchConditioningDrawsRankPerVariant) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Bench("conditioning");
   ExpectWellFormed(m.html, 1);
   const std::string svg = Figures(m.html);
@@ -357,7 +357,7 @@ TEST(HtmlReportTest, BenchConditioningDrawsRankPerVariant) {
 }
 
 TEST(HtmlReportTest, BenchSyntheticDrawsCoverage) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Bench("synthetic");
   ExpectWellFormed(m.html, 1);
   const std::string svg = Figures(m.html);
@@ -368,7 +368,7 @@ TEST(HtmlReportTest, BenchSyntheticDrawsCoverage) {
 }
 
 TEST(HtmlReportTest, BenchDiagnosisDrawsTheConfusionCounts) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = BenchDiagnosis();
   ExpectWellFormed(m.html, 1);
   const std::string svg = Figures(m.html);
@@ -383,7 +383,7 @@ TEST(HtmlReportTest, BenchDiagnosisDrawsTheConfusionCounts) {
 }
 
 TEST(HtmlReportTest, FiguresDirHoldsEachFigureAsAFile) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyPaper();
   const std::string dir = Scratch("figures");
   ::mkdir(dir.c_str(), 0700);
@@ -479,7 +479,7 @@ TEST(HtmlReportTest, MissingOrFailingGnuplotIsExitOneAndNoOutput) {
 }
 
 TEST(HtmlReportTest, SparseAndOddReportsRenderWhatIsThere) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const std::string reports[] = {
       R"({"report": "identify"})",
       R"({"report": "identify", "modes": "x", "parameters": [1], "covariance": null})",
@@ -514,7 +514,7 @@ TEST(HtmlReportTest, SparseAndOddReportsRenderWhatIsThere) {
 }
 
 TEST(HtmlReportTest, TextFromTheReportIsEscaped) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const json report = {{"report", "identify"},
                        {"dataset", "<script>alert(1)</script>"},
                        {"message", "a & b"},
@@ -535,16 +535,14 @@ TEST(HtmlReportTest, TextFromTheReportIsEscaped) {
   EXPECT_NE(Figures(m.html).find("&lt;b>&amp;"), std::string::npos);  // the tic label in the SVG
 }
 
-// ------------------------------------------------------------ screenshots
+// ---------------------------------------------------------------- Chromium
 
 // Renders `m` in headless Chromium and checks a real picture came out.
 // RINGID_SCREENS=DIR keeps the PNG there as KIND.png.
 void Screenshot(const std::string& kind, const Made& m) {
-  const std::string chromium = Chromium();
-  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed";
   const std::string png = Scratch(kind + ".png");
   std::remove(png.c_str());
-  const RunResult r = Shell("timeout 120 " + chromium +
+  const RunResult r = Shell("timeout 120 " + Chromium() +
                             " --headless --no-sandbox --disable-gpu --hide-scrollbars"
                             " --user-data-dir=" +
                             Scratch("chromium-" + kind) + " --screenshot=" + png +
@@ -569,6 +567,20 @@ void Screenshot(const std::string& kind, const Made& m) {
   }
 }
 
+// What Chromium shows wrong with the `figures` figures of the page at
+// `html_path` (see tests/browser_check.h); fails the test when Chromium fails.
+std::vector<std::string> BrowserProblems(const std::string& html_path, int figures) {
+  const auto check = ringid::testing::CheckFiguresInChromium(html_path, figures);
+  EXPECT_TRUE(check.ran) << check.error;
+  return check.ran ? check.problems : std::vector<std::string>{};
+}
+
+std::string Lines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& line : lines) out += line + "\n";
+  return out;
+}
+
 struct Kind {
   const char* name;
   std::function<Made()> make;
@@ -576,16 +588,21 @@ struct Kind {
 
 void PrintTo(const Kind& k, std::ostream* os) { *os << k.name; }
 
-class ScreenshotTest : public ::testing::TestWithParam<Kind> {};
+class ChromiumTest : public ::testing::TestWithParam<Kind> {};
 
-TEST_P(ScreenshotTest, PageRendersInChromium) {
-  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
-  if (Chromium().empty()) GTEST_SKIP() << "chromium is not installed";
-  Screenshot(GetParam().name, GetParam().make());
+TEST_P(ChromiumTest, PageRendersWithEveryFigureWhole) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  RINGID_REQUIRE_TOOL(!Chromium().empty(), "chromium");
+  const Made m = GetParam().make();
+  Screenshot(GetParam().name, m);
+  const int figures = Count(m.html, "<figure");
+  EXPECT_EQ(figures, Count(m.html, "<svg"));
+  const auto problems = BrowserProblems(m.html_path, figures);
+  EXPECT_TRUE(problems.empty()) << Lines(problems);
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    EveryKind, ScreenshotTest,
+    EveryKind, ChromiumTest,
     ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identifiability", Identifiability},
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
@@ -594,5 +611,74 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
                       Kind{"bench_diagnosis", BenchDiagnosis}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
+
+// A page of one figure (two modes' frequencies).
+Made OneFigurePage() {
+  const std::string path = Scratch("one_figure.json");
+  std::ofstream(path) << R"({"report": "identify", "modes": [
+      {"label": "vertical", "measured_hz": 74.5, "measured_sigma_hz": 0.14, "model_hz": 74.4},
+      {"label": "lateral", "measured_hz": 50.1, "measured_sigma_hz": 0.2, "model_hz": 50.3}]})";
+  return Render(path);
+}
+
+TEST(ChromiumCheckTest, FindsNothingWrongWithAWholePage) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  RINGID_REQUIRE_TOOL(!Chromium().empty(), "chromium");
+  const Made m = OneFigurePage();
+  const auto problems = BrowserProblems(m.html_path, 1);
+  EXPECT_TRUE(problems.empty()) << Lines(problems);
+}
+
+// One way to break a figure: the text of its SVG, "<svg" to "</svg>", in
+// and out.
+struct Corruption {
+  const char* name;
+  std::function<std::string(const std::string&)> apply;
+};
+
+void PrintTo(const Corruption& c, std::ostream* os) { *os << c.name; }
+
+class BrokenFigureTest : public ::testing::TestWithParam<Corruption> {};
+
+TEST_P(BrokenFigureTest, ChromiumCheckFindsIt) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  RINGID_REQUIRE_TOOL(!Chromium().empty(), "chromium");
+  const Made m = OneFigurePage();
+  const size_t start = m.html.find("<svg"), end = m.html.find("</svg>") + 6;
+  ASSERT_NE(start, std::string::npos);
+  const std::string svg = m.html.substr(start, end - start);
+  ASSERT_NE(svg.find("</defs>"), std::string::npos);
+  const std::string broken = m.html.substr(0, start) + GetParam().apply(svg) + m.html.substr(end);
+  ASSERT_NE(broken, m.html);
+  // Text checks of the page alone would pass it.
+  EXPECT_NE(broken.find("<path"), std::string::npos);
+  EXPECT_EQ(Count(broken, "<figure"), 1);
+  const std::string path = Scratch(std::string("broken_") + GetParam().name + ".html");
+  std::ofstream(path) << broken;
+  const auto check = ringid::testing::CheckFiguresInChromium(path, 1);
+  ASSERT_TRUE(check.ran) << check.error;
+  const auto& problems = check.problems;
+  EXPECT_FALSE(problems.empty());
+  std::cout << GetParam().name << ":\n" << Lines(problems);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ThreeWays, BrokenFigureTest,
+    ::testing::Values(
+        // Cut in the middle of its text, as by a short write.
+        Corruption{"truncated",
+                   [](const std::string& svg) { return svg.substr(0, svg.size() / 2); }},
+        // Cut at the start of a tag in its middle: the HTML parser closes it
+        // neatly, the XML parser does not.
+        Corruption{
+            "truncated_at_a_tag",
+            [](const std::string& svg) { return svg.substr(0, svg.rfind("\n<", svg.size() / 2)); }},
+        // Well-formed, but with nothing drawn: only the symbol definitions
+        // (paths themselves) are left.
+        Corruption{"nothing_plotted",
+                   [](const std::string& svg) {
+                     return svg.substr(0, svg.find("</defs>") + 7) + "\n</g>\n</svg>";
+                   }}),
+    [](const ::testing::TestParamInfo<Corruption>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -46,6 +46,21 @@ std::string Scratch(const std::string& name);
 bool Exists(const std::string& path);
 std::string ReadFile(const std::string& path);
 
+// Whether `program` is an executable on PATH.
+bool HaveProgram(const std::string& program);
+// Whether the tests run in CI (CI set and not "false" or "0"), where a
+// missing tool is a failure, not a skip.
+bool InCi();
+
 }  // namespace ringid::testing
+
+// In a test body: skips the test when `present` is false, or fails it in CI.
+#define RINGID_REQUIRE_TOOL(present, tool)                                             \
+  do {                                                                                 \
+    if (!(present)) {                                                                  \
+      if (::ringid::testing::InCi()) FAIL() << tool << " is missing, and CI needs it"; \
+      GTEST_SKIP() << tool << " is not installed";                                     \
+    }                                                                                  \
+  } while (false)
 
 #endif  // RINGID_TESTS_TEST_SUPPORT_H_

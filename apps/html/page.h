@@ -1,0 +1,84 @@
+// The page toolkit: HTML escaping, table cells, and a page built of
+// headings, notes, tables and figures.
+#ifndef RINGID_APPS_HTML_PAGE_H_
+#define RINGID_APPS_HTML_PAGE_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/html/figure.h"
+#include "apps/html/json_access.h"
+
+namespace ringid::html {
+
+// `text` with & < > " ' as character references.
+std::string EscapeHtml(const std::string& text);
+
+// A table cell: plain text, right-aligned when it is a number.
+struct Cell {
+  std::string text;
+  bool number = false;
+};
+using Row = std::vector<Cell>;
+
+// Any JSON value as text; a number is marked as one.
+Cell ValueCell(const json& value);
+Cell TextCell(const std::string& text);
+// "–" when missing.
+Cell NumberCell(std::optional<double> value, const char* format = "%.4g");
+// 100 × `share`, as a percentage.
+Cell PercentCell(std::optional<double> share, const char* format = "%.1f");
+
+// A summary line: the value at `path` ("key" or "key/key") under `label`,
+// by default the last key with spaces for underscores.
+struct FactSpec {
+  const char* path;
+  const char* label = nullptr;
+};
+
+using FactRows = std::vector<std::pair<std::string, Cell>>;
+// The facts of `specs` that `report` has (a null value shows as "–").
+FactRows FactsOf(const json& report, const std::vector<FactSpec>& specs);
+
+// One row per item of a JSON list.
+std::vector<Row> RowsOf(const json& list, const std::function<Row(const json&)>& row);
+
+class Page {
+ public:
+  struct Block {
+    std::string html;
+    std::optional<Figure> figure;
+  };
+
+  void Heading(const std::string& text);
+  // A paragraph in the note style: why a figure is missing, what is left out.
+  void Note(const std::string& text);
+  // Two columns: what and its value.
+  void Facts(const FactRows& rows);
+  // The heading "Summary" and its facts.
+  void Summary(const FactRows& rows);
+  void Table(const std::vector<std::string>& head, const std::vector<Row>& rows);
+  // A heading and its table, or nothing without rows.
+  void TableSection(const std::string& heading, const std::vector<std::string>& head,
+                    const std::vector<Row>& rows);
+  void AddFigure(Figure figure);
+  const std::vector<Block>& blocks() const { return blocks_; }
+
+ private:
+  void Html(const std::string& html) { blocks_.push_back({html, std::nullopt}); }
+  std::vector<Block> blocks_;
+};
+
+// A figure as it stands on the page: its SVG, number and caption.
+std::string FigureHtml(const Figure& figure, int number, const std::string& inline_svg);
+
+// The whole document: `heading` as title and h1, `meta` under it.
+std::string HtmlDocument(const std::string& heading, const std::string& meta,
+                         const std::string& body);
+
+}  // namespace ringid::html
+
+#endif  // RINGID_APPS_HTML_PAGE_H_
