@@ -3,16 +3,18 @@
 #ifndef RINGID_APPS_HTML_REPORT_H_
 #define RINGID_APPS_HTML_REPORT_H_
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "report/archive.h"
+
 namespace ringid {
 
-// Reads and parses a JSON report of ringid (identify, identifiability,
-// compare, diagnose, predict, campaign or bench). False with one line naming
-// the file and the field when it is unreadable, not JSON or not a report.
-bool LoadReport(const std::string& path, nlohmann::json* report, std::string* error);
+// Reads a JSON report of ringid (any kind of report/report.h and the bench
+// suites), strictly as its typed report. False with one line naming the file
+// and the field when it is unreadable, not JSON, not a report of this
+// schema version, or a field is missing, mistyped or unknown.
+bool LoadReport(const std::string& path, Json* report, std::string* error);
 
 // One figure as a standalone SVG file, named e.g. "identify-frequencies".
 struct HtmlFigure {
@@ -23,7 +25,7 @@ struct HtmlFigure {
 // The page of `report` under `title`. gnuplot (found on PATH) draws the
 // figures in a private temporary directory. False with a one-line error when
 // the report is not a ringid report, or gnuplot is missing or fails.
-bool RenderHtmlReport(const nlohmann::json& report, const std::string& title, std::string* html,
+bool RenderHtmlReport(const Json& report, const std::string& title, std::string* html,
                       std::string* error, std::vector<HtmlFigure>* figures = nullptr);
 
 }  // namespace ringid

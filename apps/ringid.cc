@@ -635,7 +635,7 @@ int ReportCommand(int argc, char** argv) {
   if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir)) {
     return Usage("--figures_dir: " + FLAGS_figures_dir + ": not a directory");
   }
-  nlohmann::json report;
+  Json report;
   if (!LoadReport(FLAGS_input, &report, &error)) return Usage(error);
   std::string html;
   std::vector<HtmlFigure> figures;

@@ -15,81 +15,53 @@
 namespace ringid {
 namespace {
 
-using json = nlohmann::json;
-using html::Get;
-using html::Has;
 using html::Page;
-using html::Str;
 
 constexpr int kMaxReportDepth = 64;
 
-// A kind of report: "report" or "report-suite", its page builder, and for
-// bench suites the field that marks a report written before it named itself.
-struct ReportKind {
-  const char* name;
-  void (*build)(const json&, Page*);
-  const char* marker;
+// Reads `json` as report type R and builds its page, provenance last.
+template <class R, void (*Build)(const R&, Page*)>
+bool Typed(const Json& json, Page* page, std::string* error) {
+  R report;
+  if (!ReadReport(json, &report, error)) return false;
+  Build(report, page);
+  html::ProvenanceSection(report.provenance, page);
+  return true;
+}
+
+// Every kind of report, with its page builder.
+struct PageKind {
+  ReportKind kind;
+  bool (*build)(const Json&, Page*, std::string*);
+};
+const PageKind kPageKinds[] = {
+    {ReportKind::kIdentify, Typed<IdentifyReport, html::IdentifyPage>},
+    {ReportKind::kPredict, Typed<PredictReport, html::PredictPage>},
+    {ReportKind::kIdentifiability, Typed<IdentifiabilityFile, html::IdentifiabilityPage>},
+    {ReportKind::kCompare, Typed<CompareReport, html::ComparePage>},
+    {ReportKind::kDiagnose, Typed<DiagnoseReport, html::DiagnosePage>},
+    {ReportKind::kCampaign, Typed<CampaignReport, html::CampaignPage>},
+    {ReportKind::kBenchPaper, Typed<BenchPaperReport, html::BenchPaperPage>},
+    {ReportKind::kBenchSynthetic, Typed<BenchSyntheticReport, html::BenchSyntheticPage>},
+    {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},
+    {ReportKind::kBenchDiagnosis, Typed<BenchDiagnosisReport, html::BenchDiagnosisPage>},
 };
 
-const ReportKind kReportKinds[] = {{"identify", html::IdentifyPage, nullptr},
-                                   {"identifiability", html::IdentifiabilityPage, nullptr},
-                                   {"compare", html::ComparePage, nullptr},
-                                   {"diagnose", html::DiagnosePage, nullptr},
-                                   {"predict", html::PredictPage, nullptr},
-                                   {"campaign", html::CampaignPage, nullptr},
-                                   {"bench-paper", html::BenchPaperPage, "table3"},
-                                   {"bench-synthetic", html::BenchSyntheticPage, "tires"},
-                                   {"bench-conditioning", html::BenchConditioningPage, "variants"},
-                                   {"bench-diagnosis", html::BenchDiagnosisPage, "confusion"}};
-
-const ReportKind* FindKind(const std::string& name) {
-  for (const ReportKind& kind : kReportKinds) {
-    if (name == kind.name) return &kind;
+// The page of `report`; false with "FIELD: message" when it does not read.
+bool BuildPage(const Json& report, Page* page, std::string* heading, std::string* error) {
+  ReportKind kind;
+  if (!ReportHeader(report, &kind, error)) return false;
+  for (const PageKind& k : kPageKinds) {
+    if (k.kind != kind) continue;
+    std::string name = ToString(kind);
+    std::replace(name.begin(), name.end(), '_', ' ');
+    *heading = "ringid " + name + " report";
+    const auto dataset = report.find("dataset");
+    if (dataset != report.end() && dataset->is_string()) *heading += ": " + dataset->get<std::string>();
+    return k.build(report, page, error);
   }
-  return nullptr;
-}
-
-// The values of the "report" field: the kinds' names before any suite.
-std::vector<std::string> ReportNames() {
-  std::vector<std::string> names;
-  for (const ReportKind& kind : kReportKinds) {
-    const std::string name = kind.name;
-    html::AppendOnce(&names, name.substr(0, name.find('-')));
-  }
-  return names;
-}
-
-// The kind of `r`; null with "FIELD: message" when it is none.
-const ReportKind* KindOf(const json& r, std::string* error) {
-  if (!r.is_object()) {
-    *error = "not a ringid report (a JSON object with a \"report\" field)";
-    return nullptr;
-  }
-  if (!Has(r, "report")) {  // bench reports written before they named themselves
-    for (const ReportKind& kind : kReportKinds) {
-      if (kind.marker && Has(r, kind.marker)) return &kind;
-    }
-    *error = "report: missing (not a ringid report)";
-    return nullptr;
-  }
-  const std::string report = Str(r, "report");
-  const std::vector<std::string> names = ReportNames();
-  if (std::find(names.begin(), names.end(), report) == names.end()) {
-    *error = "report: unknown kind '" + html::Text(Get(r, "report")) + "' (expected " +
-             html::Join(names, ", ") + ")";
-    return nullptr;
-  }
-  if (const ReportKind* kind = FindKind(report)) return kind;
-  if (const ReportKind* kind = FindKind(report + "-" + Str(r, "suite"))) return kind;
-  *error = "suite: unknown " + report + " suite '" + html::Text(Get(r, "suite")) + "'";
-  return nullptr;
-}
-
-// "ringid identify report", "ringid bench paper report".
-std::string Heading(const ReportKind& kind) {
-  std::string name = kind.name;
-  std::replace(name.begin(), name.end(), '-', ' ');
-  return "ringid " + name + " report";
+  *error = std::string("report: no page for ") + ToString(kind);
+  return false;
 }
 
 // The page's blocks as HTML, each figure drawn by gnuplot and inlined.
@@ -132,7 +104,7 @@ bool Body(const Page& page, std::string* body, std::string* error,
 
 }  // namespace
 
-bool LoadReport(const std::string& path, json* report, std::string* error) {
+bool LoadReport(const std::string& path, Json* report, std::string* error) {
   std::string text;
   LoadError load;
   if (!ReadInputFile(path, &text, &load)) {
@@ -140,44 +112,39 @@ bool LoadReport(const std::string& path, json* report, std::string* error) {
     return false;
   }
   struct TooDeep {};
-  const json::parser_callback_t guard = [](int depth, json::parse_event_t, json&) {
+  const Json::parser_callback_t guard = [](int depth, Json::parse_event_t, Json&) {
     if (depth > kMaxReportDepth) throw TooDeep{};
     return true;
   };
   try {
-    *report = json::parse(text, guard);
+    *report = Json::parse(text, guard);
   } catch (const TooDeep&) {
     *error = path + ": nested deeper than " + std::to_string(kMaxReportDepth);
     return false;
-  } catch (const json::parse_error& e) {
+  } catch (const Json::parse_error& e) {
     *error = path + ": not valid JSON (at byte " + std::to_string(e.byte) + ")";
     return false;
-  } catch (const json::exception&) {
+  } catch (const Json::exception&) {
     *error = path + ": invalid JSON";
     return false;
   }
-  if (!KindOf(*report, error)) {
+  Page page;
+  std::string heading;
+  if (!BuildPage(*report, &page, &heading, error)) {
     *error = path + ": " + *error;
     return false;
   }
   return true;
 }
 
-bool RenderHtmlReport(const json& report, const std::string& title, std::string* html,
+bool RenderHtmlReport(const Json& report, const std::string& title, std::string* html,
                       std::string* error, std::vector<HtmlFigure>* figures) {
-  const ReportKind* kind = KindOf(report, error);
-  if (!kind) return false;
   Page page;
-  try {
-    kind->build(report, &page);
-  } catch (const std::exception& e) {  // a value of a type the reads did not expect
-    *error = std::string("cannot read the report: ") + e.what();
-    return false;
-  }
+  std::string heading;
+  if (!BuildPage(report, &page, &heading, error)) return false;
   std::string body;
   if (!Body(page, &body, error, figures)) return false;
-  const std::string dataset = Str(report, "dataset");
-  *html = html::HtmlDocument(Heading(*kind) + (dataset.empty() ? "" : ": " + dataset), title, body);
+  *html = html::HtmlDocument(heading, title, body);
   return true;
 }
 

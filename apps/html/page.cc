@@ -1,5 +1,7 @@
 #include "apps/html/page.h"
 
+#include <cmath>
+
 #include <algorithm>
 #include <sstream>
 
@@ -39,11 +41,21 @@ Cell ValueCell(const json& value) { return {Text(value), value.is_number()}; }
 Cell TextCell(const std::string& text) { return {text, false}; }
 
 Cell NumberCell(std::optional<double> value, const char* format) {
-  return {value ? Format(*value, format) : "–", true};
+  return {value && std::isfinite(*value) ? Format(*value, format) : "–", true};
+}
+
+Cell NumberCell(double value, const char* format) {
+  return NumberCell(std::optional<double>(value), format);
 }
 
 Cell PercentCell(std::optional<double> share, const char* format) {
   return NumberCell(share ? std::optional<double>(100 * *share) : std::nullopt, format);
+}
+
+Cell YesNoCell(bool value) { return TextCell(value ? "yes" : "no"); }
+
+Cell ListCell(const std::vector<std::string>& items) {
+  return TextCell(items.empty() ? "–" : Join(items, ", "));
 }
 
 FactRows FactsOf(const json& report, const std::vector<FactSpec>& specs) {

@@ -6,11 +6,13 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "apps/html/figure.h"
 #include "apps/html/json_access.h"
+#include "model/enum_names.h"
 
 namespace ringid::html {
 
@@ -29,8 +31,19 @@ Cell ValueCell(const json& value);
 Cell TextCell(const std::string& text);
 // "–" when missing.
 Cell NumberCell(std::optional<double> value, const char* format = "%.4g");
-// 100 × `share`, as a percentage.
+// 100 × `share`, as a percentage: every fraction a page shows (a shrink, a
+// success rate, a coverage) is shown this way.
 Cell PercentCell(std::optional<double> share, const char* format = "%.1f");
+Cell YesNoCell(bool value);
+// A number that may be NaN (not available): "–" then.
+Cell NumberCell(double value, const char* format = "%.4g");
+// An enum by its report name.
+template <class E, class = std::enable_if_t<std::is_enum_v<E>>>
+Cell NameCell(E value) {
+  return TextCell(ToString(value));
+}
+// A list of names joined by ", ".
+Cell ListCell(const std::vector<std::string>& items);
 
 // A summary line: the value at `path` ("key" or "key/key") under `label`,
 // by default the last key with spaces for underscores.

@@ -1,31 +1,32 @@
-// One page builder per kind of report: each reads its JSON report with the
-// never-throwing readers and adds sections and figures to the page.
+// One page builder per kind of report, each reading its typed report
+// (report/report.h, validation/suites.h): field names live only there.
 #ifndef RINGID_APPS_HTML_PAGES_H_
 #define RINGID_APPS_HTML_PAGES_H_
 
-#include "apps/html/json_access.h"
 #include "apps/html/page.h"
+#include "report/report.h"
+#include "validation/suites.h"
 
 namespace ringid::html {
 
-void IdentifyPage(const json& report, Page* page);
-void IdentifiabilityPage(const json& report, Page* page);
-void ComparePage(const json& report, Page* page);
-void DiagnosePage(const json& report, Page* page);
-void PredictPage(const json& report, Page* page);
-void CampaignPage(const json& report, Page* page);
-void BenchPaperPage(const json& report, Page* page);
-void BenchSyntheticPage(const json& report, Page* page);
-void BenchConditioningPage(const json& report, Page* page);
-void BenchDiagnosisPage(const json& report, Page* page);
+void IdentifyPage(const IdentifyReport& report, Page* page);
+void IdentifiabilityPage(const IdentifiabilityFile& report, Page* page);
+void ComparePage(const CompareReport& report, Page* page);
+void DiagnosePage(const DiagnoseReport& report, Page* page);
+void PredictPage(const PredictReport& report, Page* page);
+void CampaignPage(const CampaignReport& report, Page* page);
+void BenchPaperPage(const BenchPaperReport& report, Page* page);
+void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
+void BenchConditioningPage(const BenchConditioningReport& report, Page* page);
+void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page);
 
-// The two fitting methods, their report key and title (compare and bench).
-struct Method {
-  const char* key;
-  const char* title;
-};
-inline constexpr Method kMethods[] = {{"lm", "Levenberg–Marquardt"},
-                                      {"simplex", "Downhill Simplex"}};
+// Where the report came from: version, command line, inputs and digests.
+void ProvenanceSection(const Provenance& provenance, Page* page);
+
+// A fitting method's title.
+inline const char* MethodTitle(Method method) {
+  return method == Method::kLevenbergMarquardt ? "Levenberg–Marquardt" : "Downhill Simplex";
+}
 
 }  // namespace ringid::html
 
