@@ -35,24 +35,30 @@ DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3)");
 DEFINE_string(parameters, "", "parameter set (ringid-parameters/1 or an identify report)");
 DEFINE_string(output, "", "write the JSON report here");
 DEFINE_string(save_parameters, "", "identify: also write the fitted parameter set here");
-DEFINE_string(method, "lm", "identify: lm (Levenberg-Marquardt) or simplex (Downhill Simplex)");
-DEFINE_int32(starts, 4, "identify: number of starts (the initial point and starts-1 random ones)");
-DEFINE_int32(seed, 1, "identify: seed of the random starts");
-DEFINE_string(weighting, "sigma", "identify: frequency weighting, sigma or relative (eqs. 19-20)");
-DEFINE_double(relative_sigma, 0.01, "identify: relative frequency sigma where none is given");
-DEFINE_bool(shapes, true, "identify: use measured mode shapes");
-DEFINE_bool(damping, true, "identify: use measured damping ratios");
-DEFINE_string(shape_convention, "contract",
+DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "identify: lm (Levenberg-Marquardt) or simplex (Downhill Simplex)");
+DEFINE_int32(starts, ringid::IdentifyOptions().starts, "identify: number of starts (the initial point and starts-1 random ones)");
+DEFINE_int32(seed, static_cast<int>(ringid::IdentifyOptions().seed),
+             "identify: seed of the random starts; simulate, bench: of the noise");
+DEFINE_string(weighting, ringid::ToString(ringid::ResidualOptions().frequency_weighting),
+              "identify: frequency weighting, sigma or relative (eqs. 19-20)");
+DEFINE_double(relative_sigma, ringid::ResidualOptions().relative_sigma,
+              "identify: relative frequency sigma where none is given");
+DEFINE_bool(shapes, ringid::ResidualOptions().use_shapes, "identify: use measured mode shapes");
+DEFINE_bool(damping, ringid::ResidualOptions().use_damping, "identify: use measured damping ratios");
+DEFINE_string(shape_convention, ringid::ToString(ringid::ResidualOptions().shape_convention),
               "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
 DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
 DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect parameters among them)");
-DEFINE_double(frequency_noise, 0.0025, "simulate: relative frequency noise (sd)");
-DEFINE_double(damping_noise, 0.10, "simulate: relative damping-ratio noise (sd)");
-DEFINE_double(shape_noise, 0.02, "simulate: shape component noise (sd, shapes scaled to 1)");
+DEFINE_double(frequency_noise, ringid::SimulateOptions().frequency_noise,
+              "simulate: relative frequency noise (sd)");
+DEFINE_double(damping_noise, ringid::SimulateOptions().damping_noise,
+              "simulate: relative damping-ratio noise (sd)");
+DEFINE_double(shape_noise, ringid::SimulateOptions().shape_noise,
+              "simulate: shape component noise (sd, shapes scaled to 1)");
 DEFINE_double(shift, 0, "simulate: size the one effect to shift some frequency by this fraction (e.g. 0.04)");
 DEFINE_double(prior_spread, 0.1, "simulate: log-normal spread of the initial values around the truth");
 DEFINE_string(suite, "", "bench: paper, synthetic, conditioning or diagnosis");
-DEFINE_int32(replicates, 200, "bench: Monte Carlo replicates per tire (synthetic)");
+DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "bench: Monte Carlo replicates per tire (synthetic)");
 DEFINE_string(markdown, "", "bench: also write the Markdown table here");
 DEFINE_string(output_dir, "", "identify, diagnose: a campaign; one report per dataset and campaign.json here");
 DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)");

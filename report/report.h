@@ -206,7 +206,8 @@ std::string ReportText(const R& report) {
 // error naming the field when it is not a ringid report of this schema.
 bool ReportHeader(const Json& json, ReportKind* kind, std::string* error);
 
-// Reads a report of kind R::kKind; every field strictly (docs/reports.md).
+// Reads a report of kind R::kKind, every field strictly: a missing, mistyped
+// or unknown field is an error naming its path.
 template <class R>
 bool ReadReport(const Json& json, R* report, std::string* error) {
   ReportKind kind;

@@ -1,5 +1,4 @@
 // ringid report: every kind of JSON report as one self-contained HTML page
-// ringid report: every kind of JSON report as one self-contained HTML page
 // with its figures drawn by gnuplot; the error contract (exit status,
 // docs/conventions.md §6); each page in Chromium: a screenshot, and its
 // figures whole in the parsed DOM.
@@ -14,17 +13,18 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "tests/browser_check.h"
+#include "report/report.h"
+#include "validation/suites.h"
 #include "tests/test_support.h"
 
 namespace {
 
-using json = nlohmann::json;
+using json = ringid::Json;
 using ringid::testing::Chromium;
 using ringid::testing::Exists;
 using ringid::testing::ReadFile;
@@ -179,35 +179,37 @@ Made Bench(const std::string& suite) {
   return Make("bench_" + suite, "bench --suite=" + suite + " --replicates=2", true);
 }
 
-// The diagnosis suite takes minutes; its report, as the suite writes it, for
-// two withheld effects.
+// The diagnosis suite takes minutes; a report of its kind for two withheld
+// effects, written as the suite writes it.
 Made BenchDiagnosis() {
-  const json report = {
-      {"report", "bench"},
-      {"suite", "diagnosis"},
-      {"accuracy", 0.75},
-      {"false_alarms", 0},
-      {"named", 1},
-      {"no_effect_cases", 2},
-      {"absorbed_and_explained", 1},
-      {"mean_shrink_when_named", 1.0},
-      {"seconds_per_diagnosis", 1.5},
-      {"confusion",
-       {{"none", {{"none", 2}, {"lug_coupling", 0}, {"hub_compliance", 0}}},
-        {"hub_compliance", {{"none", 1}, {"lug_coupling", 0}, {"hub_compliance", 3}}},
-        {"lug_coupling", {{"none", 0}, {"lug_coupling", 4}, {"hub_compliance", 0}}}}},
-      {"cases",
-       {{{"case", "none-0"},
-         {"truth", "none"},
-         {"verdict", "none"},
-         {"correct", true},
-         {"shift", 0.0},
-         {"value", 0.0},
-         {"gap_p_value", 0.9},
-         {"indistinguishable", json::array()},
-         {"absorbed_explained", false},
-         {"seconds", 1.2}}}}};
+  ringid::DiagnosisSuite suite;
+  suite.accuracy = 0.75;
+  suite.named = 1;
+  suite.no_effect_cases = 2;
+  suite.absorbed_and_explained = 1;
+  suite.mean_shrink_when_named = 1.0;
+  suite.seconds_per_diagnosis = 1.5;
+  suite.effects = {"none", "hub_compliance", "lug_coupling"};
+  suite.confusion = {{"none", {{"none", 2}}},
+                     {"hub_compliance", {{"none", 1}, {"hub_compliance", 3}}},
+                     {"lug_coupling", {{"lug_coupling", 4}}}};
+  ringid::DiagnosisCase c;
+  c.name = "none-0";
+  c.truth = c.verdict = "none";
+  c.correct = true;
+  c.gap_p_value = 0.9;
+  c.seconds = 1.2;
+  suite.cases.push_back(c);
   const std::string path = Scratch("bench_diagnosis.json");
+  std::ofstream(path) << ringid::ReportText(ringid::BenchDiagnosisReport{{}, suite});
+  return Render(path);
+}
+
+// `made`'s report changed by `change`, written beside it and rendered.
+Made Changed(const Made& made, const std::string& name, const std::function<void(json*)>& change) {
+  json report = made.report;
+  change(&report);
+  const std::string path = Scratch(name + ".json");
   std::ofstream(path) << report.dump(2);
   return Render(path);
 }
@@ -219,7 +221,7 @@ TEST(HtmlReportTest, IdentifyOfThePaperDrawsTheFrequencies) {
   const Made m = IdentifyPaper();
   // Table 1 has no shapes and leaves 9 directions free (rank 7 of 16): no
   // MAC and no standard deviation, so only the frequency figure.
-  for (const json& mode : m.report["modes"]) ASSERT_FALSE(mode.contains("mac_all"));
+  for (const json& mode : m.report["modes"]) ASSERT_TRUE(mode["mac_all"].empty());
   ExpectWellFormed(m.html, 1);
   EXPECT_NE(m.html.find("No MAC figure"), std::string::npos);
   EXPECT_NE(m.html.find("No interval figure"), std::string::npos);
@@ -269,7 +271,7 @@ TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
   const std::string svg = Figures(m.html);
   for (const auto& [name, p] : m.report["parameters"].items()) {
     EXPECT_NE(m.html.find("<td>" + name + "</td>"), std::string::npos) << name;
-    if (p["profile_curve"].size() >= 2) {  // a panel titled with its name
+    if (p["profile"]["curve_value_delta_chi2"].size() >= 2) {  // a panel titled with its name
       EXPECT_NE(svg.find(">" + name + "<"), std::string::npos) << name;
     }
   }
@@ -289,7 +291,7 @@ TEST(HtmlReportTest, CompareDrawsCostsAndConvergence) {
   EXPECT_NE(svg.find("Levenberg–Marquardt"), std::string::npos);
   EXPECT_NE(svg.find("Downhill Simplex"), std::string::npos);
   // With histories, one line per start and method.
-  ASSERT_EQ(m.report["lm"]["histories"].size(), 3u);
+  ASSERT_EQ(m.report["methods"]["lm"]["histories_evaluations_cost"].size(), 3u);
   EXPECT_NE(m.html.find("one line per start"), std::string::npos);
   EXPECT_NE(svg.find("model evaluations"), std::string::npos);
 }
@@ -305,12 +307,12 @@ TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
     EXPECT_NE(svg.find(">" + Shown(w["label"]) + "<"), std::string::npos) << w["label"];
   }
   for (const json& f : m.report["ranking"]) {
-    if (!f.contains("shrink")) continue;  // not fitted: not drawn
+    if (!f["fitted"].get<bool>()) continue;  // not fitted: not drawn
     EXPECT_NE(svg.find(">" + f["effect"].get<std::string>() + "<"), std::string::npos)
         << f["effect"];
   }
   EXPECT_NE(m.html.find(verdict["explanation"].get<std::string>()), std::string::npos);
-  if (verdict.contains("where_after")) {  // before and after, one panel each
+  if (verdict["effect"] != "none") {  // before and after, one panel each
     EXPECT_NE(svg.find("after: with " + verdict["effect"].get<std::string>()), std::string::npos);
   }
 }
@@ -403,8 +405,12 @@ TEST(HtmlReportTest, FiguresDirHoldsEachFigureAsAFile) {
 
 TEST(HtmlReportTest, BadInputIsOneLineExitTwoAndNoOutput) {
   const std::string dir = Scratch("");
-  const std::string good = dir + "good.json";
-  std::ofstream(good) << R"({"report": "predict", "modes": []})";
+  const Made predict = Predict();
+  const std::string good = predict.report_path;
+  json unknown_field = predict.report, mistyped = predict.report;
+  unknown_field["modes"][0]["extra"] = 1;
+  mistyped["modes"] = "x";
+  const std::string unknown_field_text = unknown_field.dump(), mistyped_text = mistyped.dump();
   const struct {
     const char* name;
     const char* text;
@@ -413,9 +419,11 @@ TEST(HtmlReportTest, BadInputIsOneLineExitTwoAndNoOutput) {
       {"malformed.json", "{\"report\": \"identify\",", ""},
       {"empty.json", "", ""},
       {"not_a_report.json", R"({"format": "ringid-modal-dataset/1", "modes": []})", "report"},
-      {"unknown_kind.json", R"({"report": "frobnicate"})", "report"},
+      {"unknown_kind.json", R"({"report": "frobnicate", "schema_version": 2})", "report"},
+      {"old_schema.json", R"({"report": "predict", "modes": []})", "schema_version"},
       {"array.json", "[1, 2, 3]", ""},
-      {"unknown_suite.json", R"({"report": "bench", "suite": "speed"})", "suite"},
+      {"unknown_field.json", unknown_field_text.c_str(), "modes[0].extra: unknown field"},
+      {"mistyped.json", mistyped_text.c_str(), "modes: expected an array"},
       {"deep.json", "", ""}};
   const std::string out = dir + "never.html";
   std::vector<std::pair<std::string, std::string>> cases;  // arguments, what stderr names
@@ -448,9 +456,7 @@ TEST(HtmlReportTest, BadInputIsOneLineExitTwoAndNoOutput) {
 
 TEST(HtmlReportTest, MissingOrFailingGnuplotIsExitOneAndNoOutput) {
   const std::string dir = Scratch("");
-  const std::string report = dir + "needs_figures.json";
-  std::ofstream(report) << R"({"report": "identify", "modes": [{"label": "vertical",
-      "measured_hz": 74.5, "measured_sigma_hz": 0.14, "model_hz": 74.4}]})";
+  const std::string report = IdentifyPaper().report_path;
   const std::string out = dir + "no_gnuplot.html";
   std::remove(out.c_str());
   const std::string run =
@@ -471,68 +477,65 @@ TEST(HtmlReportTest, MissingOrFailingGnuplotIsExitOneAndNoOutput) {
   EXPECT_NE(r.err.find("gnuplot failed: line 1: broken"), std::string::npos) << r.err;
   EXPECT_FALSE(Exists(out));
   // A report without figures needs no gnuplot.
-  std::ofstream(dir + "predict.json") << R"({"report": "predict", "modes": []})";
-  r = Shell("PATH=/nonexistent " + std::string(RINGID_BINARY) + " report --input=" + dir +
-            "predict.json --output=" + out);
+  r = Shell("PATH=/nonexistent " + std::string(RINGID_BINARY) + " report --input=" +
+            Predict().report_path + " --output=" + out);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(Exists(out));
 }
 
-TEST(HtmlReportTest, SparseAndOddReportsRenderWhatIsThere) {
+// Values a report may carry at its edges: numbers that are not available
+// (null), empty lists, a failed status.
+TEST(HtmlReportTest, MissingNumbersAndEmptyListsRender) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
-  const std::string reports[] = {
-      R"({"report": "identify"})",
-      R"({"report": "identify", "modes": "x", "parameters": [1], "covariance": null})",
-      R"({"report": "identify", "modes": [null, {"label": 3, "measured_hz": null, "model_hz": "a"}],
-          "parameters": {"k": {"value": 0, "std": 1, "free": true}, "m": null}})",
-      R"({"report": "identifiability", "correlation": [[1, null], [null]], "coordinates": ["a", "b"],
-          "singular_values": [0, -1, null], "rank": null,
-          "parameters": {"a": {"profile_curve": [[1, 0], [2, "x"], [3], [-1, 5]], "profile_95": [null, 7]}}})",
-      R"({"report": "compare", "lm": {"final_costs": [null, -1, 0, 1e-300], "histories": [[[1, null]], "x"]},
-          "simplex": {"evaluations": [1, 2], "final_costs": [3]}})",
-      R"({"report": "diagnose", "where": [{"label": 5, "frequency_sigma": "a"}, {}],
-          "verdict": {"effect": null, "where_after": [null]}, "ranking": [{"effect": "x"}]})",
-      R"({"report": "campaign", "command": "diagnose", "columns": [1],
-          "datasets": [{"dataset": "a", "gap_before": null}, 7]})",
-      R"({"report": "predict", "modes": [{"label": ["x"]}]})",
-      R"({"report": "bench", "suite": "paper", "table3": [{}]})",
-      R"({"report": "bench", "suite": "synthetic", "tires": [{"intervals": 0}]})",
-      R"({"report": "bench", "suite": "conditioning", "variants": [{"classes": 5}]})",
-      R"({"report": "bench", "suite": "diagnosis", "confusion": {"none": 3}})",
-      R"({"table3": []})"};  // a bench report written before it named itself
-  int n = 0;
-  for (const std::string& text : reports) {
-    const std::string path = Scratch("sparse_" + std::to_string(n++) + ".json");
-    std::ofstream(path) << text;
-    const std::string out = path + ".html";
-    const RunResult r = Ringid("report --input=" + path + " --output=" + out);
-    EXPECT_EQ(r.status, 0) << text << ": " << r.err;
-    const std::string html = ReadFile(out);
-    EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u) << text;
-    EXPECT_EQ(Count(html, "<svg"), Count(html, "</svg>")) << text;
+  const Made identify = IdentifyPaper();
+  const Made compare = Compare();
+  const std::vector<Made> pages = {
+      Changed(identify, "edge_identify_nulls",
+              [](json* r) {
+                (*r)["modes"][0]["model_hz"] = nullptr;
+                (*r)["modes"][1]["measured_sigma_hz"] = nullptr;
+                (*r)["start_costs"] = {nullptr};
+                (*r)["covariance"]["matrix"] = json::array();
+                for (auto& [name, p] : (*r)["parameters"].items()) p["std"] = nullptr;
+              }),
+      Changed(identify, "edge_identify_failed",
+              [](json* r) {
+                (*r)["status"] = "failed";
+                (*r)["modes"] = json::array();
+              }),
+      Changed(compare, "edge_compare_nulls", [](json* r) {
+        for (auto& [name, m] : (*r)["methods"].items()) {
+          m["final_costs"][0] = nullptr;
+          m["histories_evaluations_cost"][0] = {{1, nullptr}};
+        }
+      })};
+  for (const Made& m : pages) {
+    EXPECT_EQ(m.html.rfind("<!DOCTYPE html>", 0), 0u) << m.report_path;
+    EXPECT_EQ(Count(m.html, "<svg"), Count(m.html, "</svg>")) << m.report_path;
   }
 }
 
 TEST(HtmlReportTest, TextFromTheReportIsEscaped) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
-  const json report = {{"report", "identify"},
-                       {"dataset", "<script>alert(1)</script>"},
-                       {"message", "a & b"},
-                       {"modes",
-                        {{{"label", "it's `touch /tmp/ringid-pwned` <b>&"},
-                          {"measured_hz", 50.0},
-                          {"measured_sigma_hz", 0.1},
-                          {"model_hz", 50.05}}}}};
-  const std::string path = Scratch("escaped.json");
-  std::ofstream(path) << report.dump();
   std::remove("/tmp/ringid-pwned");
-  const Made m = Render(path);
-  ExpectWellFormed(m.html, 1);
+  const Made identify = Changed(IdentifyPaper(), "escaped_identify", [](json* r) {
+    (*r)["dataset"] = "<script>alert(1)</script>";
+    (*r)["message"] = "a & b";
+  });
+  EXPECT_NE(identify.html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(identify.html.find("a &amp; b"), std::string::npos);
+  EXPECT_EQ(identify.html.find("<script"), std::string::npos);
+  // Names that reach a figure's tics: the confusion matrix of the suite.
+  const std::string nasty = "it's `touch /tmp/ringid-pwned` <b>&";
+  ringid::DiagnosisSuite suite;
+  suite.effects = {"none", nasty};
+  suite.confusion = {{"none", {{"none", 1}}}, {nasty, {{nasty, 1}}}};
+  const std::string path = Scratch("escaped_bench.json");
+  std::ofstream(path) << ringid::ReportText(ringid::BenchDiagnosisReport{{}, suite});
+  const Made bench = Render(path);
   EXPECT_FALSE(Exists("/tmp/ringid-pwned"));
-  EXPECT_NE(m.html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
-  EXPECT_NE(m.html.find("a &amp; b"), std::string::npos);
-  EXPECT_EQ(m.html.find("<b>&"), std::string::npos);
-  EXPECT_NE(Figures(m.html).find("&lt;b>&amp;"), std::string::npos);  // the tic label in the SVG
+  EXPECT_EQ(bench.html.find("<b>&"), std::string::npos);
+  EXPECT_NE(Figures(bench.html).find("&lt;b>&amp;"), std::string::npos);  // a tic label in the SVG
 }
 
 // ---------------------------------------------------------------- Chromium
@@ -612,14 +615,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_diagnosis", BenchDiagnosis}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
-// A page of one figure (two modes' frequencies).
-Made OneFigurePage() {
-  const std::string path = Scratch("one_figure.json");
-  std::ofstream(path) << R"({"report": "identify", "modes": [
-      {"label": "vertical", "measured_hz": 74.5, "measured_sigma_hz": 0.14, "model_hz": 74.4},
-      {"label": "lateral", "measured_hz": 50.1, "measured_sigma_hz": 0.2, "model_hz": 50.3}]})";
-  return Render(path);
-}
+// A page of one figure: Table 1 identified (frequencies only: no shape for
+// a MAC figure, no parameter with a std for intervals).
+Made OneFigurePage() { return IdentifyPaper(); }
 
 TEST(ChromiumCheckTest, FindsNothingWrongWithAWholePage) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");

@@ -10,8 +10,8 @@
 
 #include "apps/html/figure.h"
 #include "apps/html/gnuplot.h"
-#include "apps/html/json_access.h"
 #include "apps/html/page.h"
+#include "estimation/uncertainty.h"
 #include "tests/test_support.h"
 
 namespace ringid::html {
@@ -53,7 +53,7 @@ TEST(PageTest, TableHasEveryRowAndMarksNumericCells) {
   Page page;
   page.Table({"mode", "f (Hz)"}, {{TextCell("vertical"), NumberCell(74.512, "%.2f")},
                                   {TextCell("<lateral>"), NumberCell(std::nullopt)},
-                                  {ValueCell(json("x")), ValueCell(json(3))}});
+                                  {TextCell("x"), NumberCell(3.0)}});
   const std::string html = Html(page);
   EXPECT_EQ(Count(html, "<tr>"), 4);  // the head and three rows
   EXPECT_NE(html.find("<tr><th>mode</th><th>f (Hz)</th></tr>"), std::string::npos);
@@ -61,6 +61,17 @@ TEST(PageTest, TableHasEveryRowAndMarksNumericCells) {
   EXPECT_NE(html.find("<tr><td>&lt;lateral&gt;</td><td class=\"n\">–</td></tr>"),
             std::string::npos);
   EXPECT_NE(html.find("<tr><td>x</td><td class=\"n\">3</td></tr>"), std::string::npos);
+}
+
+TEST(PageTest, NumbersNotAvailableShowAsADashAndFractionsAsPercent) {
+  EXPECT_EQ(NumberCell(std::nan("")).text, "–");
+  EXPECT_EQ(NumberCell(std::optional<double>(INFINITY)).text, "–");
+  EXPECT_EQ(PercentCell(0.9998).text, "100.0");
+  EXPECT_EQ(PercentCell(0.75, "%.0f").text, "75");
+  EXPECT_EQ(NameCell(ringid::Identifiability::kPracticallyNo).text, "practically_no");
+  EXPECT_EQ(YesNoCell(false).text, "no");
+  EXPECT_EQ(ListCell({}).text, "–");
+  EXPECT_EQ(ListCell({"a", "b"}).text, "a, b");
 }
 
 TEST(PageTest, TableWithoutRowsIsLeftOutWithItsHeading) {
@@ -71,31 +82,6 @@ TEST(PageTest, TableWithoutRowsIsLeftOutWithItsHeading) {
   page.TableSection("Advice", {"a"}, {{TextCell("b")}});
   EXPECT_EQ(Html(page),
             "<h2>Advice</h2>\n<table>\n<tr><th>a</th></tr>\n<tr><td>b</td></tr>\n</table>\n");
-}
-
-TEST(PageTest, FactsReadNestedKeysAndLeaveOutMissingOnes) {
-  const json report = {
-      {"dataset", "table1"}, {"best_cost", 0.5}, {"gap", {{"p_value", nullptr}}}, {"message", 7}};
-  const FactRows rows = FactsOf(
-      report, {{"dataset"}, {"best_cost"}, {"gap/p_value", "p"}, {"gap/dof"}, {"missing/x"}});
-  ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0].first, "dataset");
-  EXPECT_EQ(rows[1].first, "best cost");  // underscores read as spaces
-  EXPECT_EQ(rows[1].second.text, "0.5");
-  EXPECT_TRUE(rows[1].second.number);
-  EXPECT_EQ(rows[2].first, "p");
-  EXPECT_EQ(rows[2].second.text, "–");  // null
-}
-
-TEST(JsonAccessTest, ValuesOfTheWrongTypeReadAsNothing) {
-  const json j = {{"n", "1"}, {"list", 5}, {"s", 2}, {"inf", 1e308 * 10}, {"flag", "true"}};
-  EXPECT_FALSE(Num(j, "n"));
-  EXPECT_FALSE(Num(j, "missing"));
-  EXPECT_TRUE(List(j, "list").empty());
-  EXPECT_EQ(Str(j, "s"), "");
-  EXPECT_FALSE(IsTrue(j, "flag"));
-  EXPECT_FALSE(Num(Get(json::array(), "n")));
-  EXPECT_EQ(Text(json({1, "a", nullptr, {1}})), "1, a, –, …");
 }
 
 // ----------------------------------------------------------------- figure

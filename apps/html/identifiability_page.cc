@@ -6,65 +6,98 @@
 
 #include "apps/html/pages.h"
 #include "apps/html/text.h"
+#include "estimation/statistics.h"
+#include "model/parameters.h"
 
 namespace ringid::html {
 namespace {
 
-const std::vector<FactSpec> kSummary = {
-    {"dataset"}, {"success"}, {"message"}, {"rank"}, {"num_residuals", "weighted residuals"},
-    {"condition_number"}, {"rank_explanation"},
-    {"identifiable_subset", "largest identifiable subset"}, {"seconds"}};
+// What the profile curves plot, and the unit of the figure's y axis.
+constexpr char kProfileUnit[] = "Δχ² = 2 Δcost";
 
-// "[a, b]" of a two-element list, an end that is not a number "open".
-Cell IntervalCell(const json& interval) {
-  if (!interval.is_array() || interval.size() != 2) return TextCell("–");
-  const auto a = Num(interval[0]), b = Num(interval[1]);
-  return {"[" + (a ? Format(*a) : "open") + ", " + (b ? Format(*b) : "open") + "]", true};
+void SummarySection(const DatasetBody<IdentifiabilityReport>& body, Page* page) {
+  const IdentifiabilityReport& r = body.result;
+  page->Summary({{"dataset", TextCell(body.dataset)},
+                 {"status", NameCell(r.status.outcome)},
+                 {"message", TextCell(r.status.message)},
+                 {"rank", NumberCell(r.rank, "%.0f")},
+                 {"weighted residuals", NumberCell(r.num_residuals, "%.0f")},
+                 {"condition number", NumberCell(r.condition_number)},
+                 {"rank explanation", TextCell(r.rank_explanation)},
+                 {"largest identifiable subset", ListCell(r.identifiable_subset)},
+                 {"seconds", NumberCell(r.seconds)}});
 }
 
-void TableSections(const json& report, Page* page) {
-  const json& parameters = Get(report, "parameters");
+// "[a, b]", an end that is not a number "open".
+Cell IntervalCell(std::optional<double> lower, std::optional<double> upper) {
+  const auto end = [](std::optional<double> x) {
+    return x && std::isfinite(*x) ? Format(*x) : std::string("open");
+  };
+  return {"[" + end(lower) + ", " + end(upper) + "]", true};
+}
+
+Cell WaldCell(const std::optional<std::pair<double, double>>& interval) {
+  if (!interval) return {"–", true};
+  return IntervalCell(interval->first, interval->second);
+}
+
+Cell ProfileCell(const ProfileInterval& profile) {
+  if (!profile.computed) return {"–", true};
+  return IntervalCell(profile.lower, profile.upper);
+}
+
+// A collinearity index; a pair is listed only above a finite threshold, so
+// one that is not finite (infinite, written as null) is exact collinearity.
+Cell CollinearityCell(double index) {
+  if (!std::isfinite(index)) return {"∞ (exact)", true};
+  return NumberCell(index);
+}
+
+void ParametersSection(const IdentifiabilityReport& r, Page* page) {
   std::vector<Row> rows;
-  if (parameters.is_object()) {
-    for (const auto& [name, q] : parameters.items()) {
-      rows.push_back({TextCell(name), NumberCell(Num(q, "value")),
-                      ValueCell(Get(q, "identifiable")), NumberCell(Num(q, "std")),
-                      IntervalCell(Get(q, "wald_95")), IntervalCell(Get(q, "profile_95")),
-                      ValueCell(Get(q, "reason"))});
-    }
+  for (const ParameterIdentifiability& q : r.parameters) {
+    rows.push_back({NameCell(q.param), NumberCell(q.value), TextCell(Info(q.param).unit),
+                    NameCell(q.identifiable), NumberCell(q.std), WaldCell(q.wald_95),
+                    ProfileCell(q.profile_95), TextCell(q.reason.empty() ? "–" : q.reason)});
   }
   page->Heading("Parameters");
-  page->Table({"parameter", "value", "identifiable", "std", "Wald 95 %", "profile 95 %", "reason"},
+  page->Table({"parameter", "value", "unit", "identifiable", "std", "Wald 95 %", "profile 95 %",
+               "reason"},
               rows);
-  page->TableSection("Free and near-free combinations",
-                     {"combination", "meaning", "singular value"},
-                     RowsOf(List(report, "combinations"), [](const json& c) -> Row {
-                       return {ValueCell(Get(c, "text")), ValueCell(Get(c, "meaning")),
-                               NumberCell(Num(c, "singular_value"))};
-                     }));
-  page->TableSection(
-      "Collinear pairs", {"parameters", "collinearity index"},
-      RowsOf(List(report, "collinear_pairs"), [](const json& c) -> Row {
-        return {ValueCell(Get(c, "parameters")), NumberCell(Num(c, "collinearity_index"))};
-      }));
-  page->TableSection(
-      "Experiment advice",
-      {"parameter", "extra observation", "information gain", "makes it identifiable"},
-      RowsOf(List(report, "advice"), [](const json& a) -> Row {
-        return {ValueCell(Get(a, "parameter")), ValueCell(Get(a, "observation")),
-                NumberCell(Num(a, "information_gain")), ValueCell(Get(a, "makes_identifiable"))};
-      }));
 }
 
-void SingularValueFigure(const json& report, Page* page) {
+void TableSections(const IdentifiabilityReport& r, Page* page) {
+  ParametersSection(r, page);
+  std::vector<Row> combinations;
+  for (const Combination& c : r.combinations) {
+    combinations.push_back({TextCell(c.text), TextCell(c.meaning), NumberCell(c.singular_value)});
+  }
+  page->TableSection("Free and near-free combinations",
+                     {"combination", "meaning", "singular value"}, combinations);
+  std::vector<Row> pairs;
+  for (const CollinearSubset& c : r.collinear_pairs) {
+    pairs.push_back({ListCell(c.names), CollinearityCell(c.index)});
+  }
+  page->TableSection("Collinear pairs", {"parameters", "collinearity index"}, pairs);
+  std::vector<Row> advice;
+  for (const Advice& a : r.advice) {
+    advice.push_back({TextCell(a.parameter), TextCell(a.observation),
+                      NumberCell(a.information_gain), YesNoCell(a.makes_identifiable)});
+  }
+  page->TableSection(
+      "Experiment advice",
+      {"parameter", "extra observation", "information gain (nats)", "makes it identifiable"},
+      advice);
+}
+
+void SingularValueFigure(const IdentifiabilityReport& r, Page* page) {
   Series above, below;
-  const auto rank = Num(report, "rank");
-  int k = 0, shown = 0;
-  for (const json& v : List(report, "singular_values")) {
-    ++k;
-    const auto s = Num(v);
-    if (!s || *s <= 0) continue;
-    (rank && k > *rank ? below : above).Row({k, s});
+  const long count = r.singular_values.size();
+  int shown = 0;
+  for (long k = 1; k <= count; ++k) {
+    const double s = r.singular_values[k - 1];
+    if (!std::isfinite(s) || s <= 0) continue;
+    (k > r.rank ? below : above).Row({static_cast<double>(k), s});
     ++shown;
   }
   if (shown == 0) {
@@ -74,14 +107,12 @@ void SingularValueFigure(const json& report, Page* page) {
   Figure f("identifiability-singular-values", 760, 380);
   std::ostringstream g;
   g << "set logscale y\nset format y '10^{%L}'\nset grid\n"
-    << "set xrange [0.5:" << k + 0.5 << "]\nset xtics 1\n"
-    << "set xlabel 'index (largest first)'\nset ylabel 'singular value'\nset key top right\n";
-  if (rank) {
-    g << "set label 1 "
-      << GnuplotString("rank " + Text(Get(report, "rank")) + " of " +
-                       std::to_string(List(report, "coordinates").size()) + " free coordinates")
-      << " at graph 0.03, graph 0.06 left\n";
-  }
+    << "set xrange [0.5:" << static_cast<double>(count) + 0.5 << "]\nset xtics 1\n"
+    << "set xlabel 'index (largest first)'\nset ylabel 'singular value'\nset key top right\n"
+    << "set label 1 "
+    << GnuplotString("rank " + std::to_string(r.rank) + " of " +
+                     std::to_string(r.coordinate_names.size()) + " free coordinates")
+    << " at graph 0.03, graph 0.06 left\n";
   std::vector<std::string> parts;
   if (!above.empty()) {
     parts.push_back(f.AddData(above) + " using 1:2 with linespoints pt 7 ps 1 lw 1.5 lc rgb '" +
@@ -99,20 +130,20 @@ void SingularValueFigure(const json& report, Page* page) {
   page->AddFigure(std::move(f));
 }
 
-void CorrelationFigure(const json& report, Page* page) {
+void CorrelationFigure(const IdentifiabilityReport& r, Page* page) {
   HeatMapOptions map;
   map.name = "identifiability-correlation";
-  for (const json& c : List(report, "coordinates")) map.rows.push_back(Text(c));
+  map.rows = r.coordinate_names;
   map.columns = map.rows;
-  const size_t n = map.rows.size();
-  const json& correlation = Get(report, "correlation");
+  const long n = static_cast<long>(map.rows.size());
   bool any = false;
-  if (correlation.is_array() && correlation.size() == n) {
-    for (const json& row : correlation) {
+  if (r.correlation.rows() == n && r.correlation.cols() == n) {
+    for (long row = 0; row < n; ++row) {
       map.values.emplace_back();
-      for (size_t c = 0; c < n; ++c) {
-        map.values.back().push_back(row.is_array() && c < row.size() ? Num(row[c]) : std::nullopt);
-        any |= map.values.back().back().has_value();
+      for (long column = 0; column < n; ++column) {
+        const double value = r.correlation(row, column);
+        map.values.back().push_back(std::isfinite(value) ? std::optional(value) : std::nullopt);
+        any |= std::isfinite(value);
       }
     }
   }
@@ -132,74 +163,27 @@ void CorrelationFigure(const json& report, Page* page) {
   page->AddFigure(std::move(f));
 }
 
-// A profile's points (value, increase of the misfit) that are numbers.
-std::vector<std::pair<double, double>> ProfileCurve(const json& q) {
-  std::vector<std::pair<double, double>> curve;
-  for (const json& point : List(q, "profile_curve")) {
-    if (!point.is_array() || point.size() != 2) continue;
-    const auto v = Num(point[0]), d = Num(point[1]);
-    if (v && d) curve.push_back({*v, *d});
-  }
-  return curve;
-}
-
-// The misfit at `end` on the sorted `curve`, interpolated in √ and in log
-// of the value where positive; none outside the curve.
-std::optional<double> MisfitAt(const std::vector<std::pair<double, double>>& curve, double end) {
-  for (size_t i = 0; i + 1 < curve.size(); ++i) {
-    const auto [a, da] = curve[i];
-    const auto [b, db] = curve[i + 1];
-    if (!(a <= end && end <= b) || a == b) continue;
-    const bool logs = a > 0 && b > 0;
-    const double t = logs ? std::log(end / a) / std::log(b / a) : (end - a) / (b - a);
-    const double root = std::sqrt(da) + t * (std::sqrt(db) - std::sqrt(da));
-    return root * root;
-  }
-  return std::nullopt;
-}
-
-// The profile's 95 % threshold and the unit of its curves: ringid writes
-// Δχ² = 2 Δcost (threshold 3.84); curves in cost units would cross 1.92 at
-// the reported interval ends.
-std::pair<double, std::string> ProfileThreshold(const json& parameters) {
-  int chi2 = 0, cost = 0;
-  if (parameters.is_object()) {
-    for (const auto& [name, q] : parameters.items()) {
-      auto curve = ProfileCurve(q);
-      std::sort(curve.begin(), curve.end());
-      for (const json& end : List(q, "profile_95")) {
-        const auto e = Num(end);
-        if (!e) continue;
-        const auto d = MisfitAt(curve, *e);
-        if (d && *d > 0)
-          (std::fabs(std::log(*d / 3.84)) < std::fabs(std::log(*d / 1.92)) ? chi2 : cost)++;
-      }
-    }
-  }
-  if (cost > chi2) return {1.92, "Δcost"};
-  return {3.84, "Δχ² = 2 Δcost"};
-}
-
 // One panel of the profile figure; "" for a curve of fewer than 2 points.
-std::string ProfilePanel(Figure* f, const std::string& name, const json& q, int column,
-                         const std::string& unit) {
+std::string ProfilePanel(Figure* f, const ParameterIdentifiability& q, int column) {
   Series s;
   bool positive = true;
   double low = INFINITY, high = -INFINITY;
-  const auto curve = ProfileCurve(q);
-  for (const auto& [v, d] : curve) {
-    s.Row({v, d});
-    positive &= v > 0;
-    low = std::min(low, v), high = std::max(high, v);
+  int points = 0;
+  for (const auto& [value, delta_chi2] : q.profile_95.curve) {
+    if (!std::isfinite(value) || !std::isfinite(delta_chi2)) continue;
+    s.Row({value, delta_chi2});
+    positive &= value > 0;
+    low = std::min(low, value), high = std::max(high, value);
+    ++points;
   }
-  if (curve.size() < 2) return "";
+  if (points < 2) return "";
   std::ostringstream g;
-  g << "set title " << GnuplotString(name) << " noenhanced\n"
+  g << "set title " << GnuplotString(ToString(q.param)) << " noenhanced\n"
     << (positive ? "set logscale x\n" : "unset logscale x\n")
     << (positive && high > low ? LogTics(low, high) : "set xtics autofreq\n")
-    << (column == 0 ? "set ylabel " + GnuplotString(unit) + "\n" : "unset ylabel\n");
-  if (const auto v = Num(q, "value")) {
-    g << VerticalLine(2, Format(*v, "%.12g"), "dt 3 lc rgb '#888888'");
+    << (column == 0 ? "set ylabel " + GnuplotString(kProfileUnit) + "\n" : "unset ylabel\n");
+  if (std::isfinite(q.value)) {
+    g << VerticalLine(2, Format(q.value, "%.12g"), "dt 3 lc rgb '#888888'");
   } else {
     g << "unset arrow 2\n";
   }
@@ -208,17 +192,16 @@ std::string ProfilePanel(Figure* f, const std::string& name, const json& q, int 
   return g.str();
 }
 
-// Profile likelihood, one panel per parameter, four to a row.
-void ProfileFigure(const json& parameters, Page* page) {
-  const auto [threshold, unit] = ProfileThreshold(parameters);
+// Profile likelihood, one panel per parameter, four to a row; the curves
+// are in Δχ², so the 95 % threshold is the chi-square(1) point.
+void ProfileFigure(const std::vector<ParameterIdentifiability>& parameters, Page* page) {
+  const double threshold = kChiSquare1Dof95;
   Figure f("identifiability-profiles");
   std::string panels;
   int n = 0;
-  if (parameters.is_object()) {
-    for (const auto& [name, q] : parameters.items()) {
-      const std::string panel = ProfilePanel(&f, name, q, n % 4, unit);
-      if (!panel.empty()) panels += panel, ++n;
-    }
+  for (const ParameterIdentifiability& q : parameters) {
+    const std::string panel = ProfilePanel(&f, q, n % 4);
+    if (!panel.empty()) panels += panel, ++n;
   }
   if (n == 0) {
     page->Note("No profile figure: the report has no profile curve.");
@@ -237,9 +220,10 @@ void ProfileFigure(const json& parameters, Page* page) {
     << HorizontalLine(1, StreamFormat(threshold), "dt 2 lw 1.5 lc rgb '" + std::string(kRed) + "'")
     << panels << "unset multiplot\n";
   f.script = g.str();
-  f.caption = "Profile likelihood of each parameter: the increase of the misfit, in " + unit +
-              " (the other parameters re-optimised), against the parameter's value (log axis "
-              "where positive). Red dashed line: the 95 % threshold " +
+  f.caption = std::string("Profile likelihood of each parameter: the increase of the misfit, in ") +
+              kProfileUnit +
+              " (the other parameters re-optimised), against the parameter's value in its unit "
+              "(log axis where positive). Red dashed line: the 95 % threshold " +
               Format(threshold, "%.2f") + "; dotted line: the fitted value. Curves beyond " +
               Format(3 * threshold, "%.3g") + " are cut at the top.";
   page->AddFigure(std::move(f));
@@ -247,13 +231,14 @@ void ProfileFigure(const json& parameters, Page* page) {
 
 }  // namespace
 
-void IdentifiabilityPage(const json& report, Page* page) {
-  page->Summary(FactsOf(report, kSummary));
-  TableSections(report, page);
+void IdentifiabilityPage(const IdentifiabilityFile& report, Page* page) {
+  const IdentifiabilityReport& r = report.body.result;
+  SummarySection(report.body, page);
+  TableSections(r, page);
   page->Heading("Figures");
-  SingularValueFigure(report, page);
-  CorrelationFigure(report, page);
-  ProfileFigure(Get(report, "parameters"), page);
+  SingularValueFigure(r, page);
+  CorrelationFigure(r, page);
+  ProfileFigure(r.parameters, page);
 }
 
 }  // namespace ringid::html

@@ -7,19 +7,11 @@
 
 #include "apps/html/pages.h"
 #include "apps/html/text.h"
+#include "estimation/statistics.h"
+#include "model/parameters.h"
 
 namespace ringid::html {
 namespace {
-
-const std::vector<FactSpec> kSummary = {
-    {"dataset"}, {"method"}, {"success"}, {"converged"}, {"message", "solver message"},
-    {"cost", "cost (½ Σ weighted residual²)"}, {"evaluations"}, {"starts"},
-    {"start_costs", "final cost per start"}, {"seconds"}, {"frequency_weighting"},
-    {"relative_error/in_plane_eq19", "relative error, in-plane (eq. 19)"},
-    {"relative_error/out_of_plane_eq20", "relative error, out-of-plane (eq. 20)"},
-    {"covariance/computed", "covariance computed"}, {"covariance/error", "covariance error"},
-    {"covariance/rank", "rank of the weighted Jacobian"},
-    {"covariance/condition_number", "condition number"}};
 
 // Intervals wider than this factor are cut at the edge of the figure.
 constexpr double kClipFactor = 100;
@@ -28,31 +20,57 @@ constexpr double kClipFactor = 100;
 struct Intervals {
   std::vector<std::string> names;
   std::vector<std::pair<double, double>> bounds;  // low, high relative to the value
-  std::vector<std::string> classes;               // identifiable: yes, ...
-  std::vector<std::string> clipped;               // cut at kClipFactor
-  std::vector<std::string> without_std;           // free, not drawn
+  std::vector<Identifiability> classes;
+  std::vector<std::string> clipped;      // cut at kClipFactor
+  std::vector<std::string> without_std;  // free, not drawn
 };
 
+// The costs of the starts, each as "%.4g".
+Cell StartCostsCell(const std::vector<double>& costs) {
+  std::vector<std::string> items;
+  for (double cost : costs) items.push_back(Format(cost));
+  return ListCell(items);
+}
+
+FactRows SummaryFacts(const std::string& dataset, const IdentifySummary& s) {
+  const Uncertainty& u = s.uncertainty;
+  return {{"dataset", TextCell(dataset)},
+          {"method", TextCell(MethodTitle(s.method))},
+          {"status", NameCell(s.status.outcome)},
+          {"converged", YesNoCell(s.converged)},
+          {"solver message", TextCell(s.status.message)},
+          {"cost (½ Σ weighted residual²)", NumberCell(s.cost)},
+          {"evaluations", NumberCell(static_cast<double>(s.evaluations), "%.0f")},
+          {"starts", NumberCell(s.starts, "%.0f")},
+          {"final cost per start", StartCostsCell(s.start_costs)},
+          {"seconds", NumberCell(s.seconds)},
+          {"frequency weighting", NameCell(s.frequency_weighting)},
+          {"relative error, in-plane (eq. 19)", NumberCell(s.relative_error_in_plane)},
+          {"relative error, out-of-plane (eq. 20)", NumberCell(s.relative_error_out_of_plane)},
+          {"covariance computed", YesNoCell(u.covariance_ok)},
+          {"covariance error", TextCell(u.covariance_error.empty() ? "–" : u.covariance_error)},
+          {"rank of the weighted Jacobian", NumberCell(u.rank, "%.0f")},
+          {"condition number", NumberCell(u.condition_number)}};
+}
+
 // The modes table; the frequencies for the figure.
-FrequencyFigureOptions ModesSection(const json& modes, Page* page) {
+FrequencyFigureOptions ModesSection(const std::vector<ModeFit>& modes, Page* page) {
   FrequencyFigureOptions figure;
   figure.name = "identify-frequencies";
   figure.reference_title = "measured ± 1σ";
   figure.band_title = "± 1σ of the measurement";
   figure.reference_name = "measured";
   std::vector<Row> rows;
-  for (const json& m : modes) {
-    const auto measured = Num(m, "measured_hz"), sigma = Num(m, "measured_sigma_hz"),
-               model = Num(m, "model_hz");
-    std::optional<double> diff, z;
-    if (measured && model) diff = *model - *measured;
-    if (diff && sigma && *sigma > 0) z = *diff / *sigma;
-    rows.push_back({ValueCell(Get(m, "label")), ValueCell(Get(m, "model_label")),
-                    NumberCell(measured, "%.3f"), NumberCell(sigma, "%.3g"),
-                    NumberCell(model, "%.3f"), NumberCell(diff, "%.3g"), NumberCell(z, "%.3g"),
-                    NumberCell(Num(m, "measured_damping_ratio")),
-                    NumberCell(Num(m, "model_damping_ratio")), NumberCell(Num(m, "mac"), "%.3f")});
-    figure.AddMode(Str(m, "label"), measured, sigma, model);
+  for (const ModeFit& m : modes) {
+    const double difference = m.model_hz - m.measured_hz;
+    std::optional<double> z;
+    if (m.measured_sigma_hz > 0) z = difference / m.measured_sigma_hz;
+    rows.push_back({NameCell(m.label), NameCell(m.model_label), NumberCell(m.measured_hz, "%.3f"),
+                    NumberCell(m.measured_sigma_hz, "%.3g"), NumberCell(m.model_hz, "%.3f"),
+                    NumberCell(difference, "%.3g"), NumberCell(z, "%.3g"),
+                    NumberCell(m.measured_damping), NumberCell(m.model_damping),
+                    NumberCell(m.mac, "%.3f")});
+    figure.AddMode(ToString(m.label), m.measured_hz, m.measured_sigma_hz, m.model_hz);
   }
   page->Heading("Modes");
   page->Table(
@@ -68,39 +86,39 @@ Cell FactorCell(std::optional<double> factor) {
 }
 
 // One parameter's row; its interval when it is free and has a std.
-Row ParameterRow(const std::string& name, const json& q, Intervals* intervals) {
-  const auto value = Num(q, "value"), sd = Num(q, "std");
-  const bool free = IsTrue(q, "free");
-  std::string role = free ? "free" : "fixed";
-  if (!Str(q, "tied_to").empty()) role = "tied to " + Str(q, "tied_to");
+Row ParameterRow(const ParameterEstimate& q, Intervals* intervals) {
+  const std::string name = ToString(q.param);
+  std::string role = q.free ? "free" : "fixed";
+  if (q.tied_to) role = std::string("tied to ") + ToString(*q.tied_to);
+  const bool has_std = q.std && std::isfinite(*q.std);
   std::optional<double> factor;
-  if (free && value && sd && *value != 0) {
-    double z = 1.96 * std::fabs(*sd / *value);
+  if (q.free && has_std && std::isfinite(q.value) && q.value != 0) {
+    double z = kNormal95 * std::fabs(*q.std / q.value);
     factor = std::exp(std::min(z, 700.0));
-    if (z > std::log(kClipFactor)) z = std::log(kClipFactor), intervals->clipped.push_back(name);
+    if (z > std::log(kClipFactor)) {
+      z = std::log(kClipFactor);
+      intervals->clipped.push_back(name);
+    }
     intervals->names.push_back(name);
     intervals->bounds.push_back({std::exp(-z), std::exp(z)});
-    intervals->classes.push_back(Str(q, "identifiable"));
-  } else if (free) {
+    intervals->classes.push_back(q.identifiable);
+  } else if (q.free) {
     intervals->without_std.push_back(name);
   }
   return {TextCell(name),
-          NumberCell(value),
-          ValueCell(Get(q, "unit")),
+          NumberCell(q.value),
+          TextCell(Info(q.param).unit),
           TextCell(role),
-          NumberCell(sd),
+          NumberCell(q.std),
           FactorCell(factor),
-          ValueCell(Get(q, "identifiable")),
-          ValueCell(Get(q, "reason"))};
+          NameCell(q.identifiable),
+          TextCell(q.reason)};
 }
 
-Intervals ParametersSection(const json& parameters, Page* page) {
+Intervals ParametersSection(const std::vector<ParameterEstimate>& estimates, Page* page) {
   Intervals intervals;
   std::vector<Row> rows;
-  if (parameters.is_object()) {
-    for (const auto& [name, q] : parameters.items())
-      rows.push_back(ParameterRow(name, q, &intervals));
-  }
+  for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, &intervals));
   page->Heading("Parameters");
   page->Table({"parameter", "value", "unit", "role", "std", "95 % interval (factor)",
                "identifiable", "reason"},
@@ -109,34 +127,40 @@ Intervals ParametersSection(const json& parameters, Page* page) {
 }
 
 // MAC of the measured shapes against every model shape.
-void MacFigure(const json& modes, Page* page) {
+void MacFigure(const std::vector<ModeFit>& modes, Page* page) {
   HeatMapOptions map;
   map.name = "identify-mac";
   map.x_label = "model mode";
   map.y_label = "measured mode";
   map.color_label = "MAC";
-  std::vector<const json*> macs;
-  for (const json& m : modes) {
-    const json& mac = Get(m, "mac_all");
-    if (!mac.is_object() || mac.empty()) continue;
-    map.rows.push_back(Str(m, "label"));
-    macs.push_back(&mac);
+  std::vector<const ModeFit*> measured;  // the modes with a measured shape
+  for (const ModeFit& m : modes) {
+    if (!m.mac_all.empty()) measured.push_back(&m);
   }
-  if (macs.empty()) {
-    page->Note("No MAC figure: the dataset gives no measured mode shape (no mode has mac_all).");
+  if (measured.empty()) {
+    page->Note("No MAC figure: the dataset gives no measured mode shape (no mode has a MAC "
+               "against the model modes).");
     return;
   }
-  for (const json& m : modes) {
-    if (const std::string label = Str(m, "model_label"); !label.empty())
-      AppendOnce(&map.columns, label);
+  // Columns: the paired model modes first, then any other the MACs name.
+  std::vector<ModeLabel> columns;
+  const auto append_once = [&columns](ModeLabel label) {
+    if (std::find(columns.begin(), columns.end(), label) == columns.end()) columns.push_back(label);
+  };
+  for (const ModeFit& m : modes) append_once(m.model_label);
+  for (const ModeFit* m : measured) {
+    for (const auto& [label, mac] : m->mac_all) append_once(label);
   }
-  for (const json* mac : macs) {
-    for (const auto& [label, value] : mac->items()) AppendOnce(&map.columns, label);
-  }
-  for (const json* mac : macs) {
+  for (const ModeFit* m : measured) {
+    map.rows.push_back(ToString(m->label));
     map.values.emplace_back();
-    for (const std::string& c : map.columns) map.values.back().push_back(Num(*mac, c.c_str()));
+    for (ModeLabel column : columns) {
+      const auto it = m->mac_all.find(column);
+      map.values.back().push_back(it == m->mac_all.end() ? std::nullopt
+                                                         : std::optional<double>(it->second));
+    }
   }
+  for (ModeLabel column : columns) map.columns.push_back(ToString(column));
   map.rows = Pretty(map.rows);
   map.columns = Pretty(map.columns);
   Figure f = HeatMap(map);
@@ -148,31 +172,31 @@ void MacFigure(const json& modes, Page* page) {
 
 std::string IntervalScript(Figure* f, const Intervals& intervals) {
   double low = 0.5, high = 2;
-  std::map<std::string, Series> by_class;
+  std::map<Identifiability, Series> by_class;
   for (size_t i = 0; i < intervals.names.size(); ++i) {
     const auto [from, to] = intervals.bounds[i];
     low = std::min(low, from);
     high = std::max(high, to);
-    const std::string& c = intervals.classes[i];
-    by_class[c == "yes" || c == "practically_no" ? c : "other"].Row(
-        {static_cast<double>(i), from, to});
+    by_class[intervals.classes[i]].Row({static_cast<double>(i), from, to});
   }
   std::ostringstream g;
   g << "set logscale y\nset format y '%g'\nset yrange [" << low / 1.4 << ":" << high * 1.4 << "]\n"
-    << "set xrange [-0.7:" << intervals.names.size() - 0.3 << "]\n"
+    << "set xrange [-0.7:" << static_cast<double>(intervals.names.size()) - 0.3 << "]\n"
     << CategoryXTics(intervals.names, f->width - 250.0, -35)
     << "set grid ytics\nset ylabel 'interval / value (log scale)'\n"
     << "set key outside right top title 'identifiable' noenhanced\n"
     << HorizontalLine(1, "2", kDashedGrey) << HorizontalLine(2, "0.5", kDashedGrey)
     << HorizontalLine(3, "1", "lc rgb '#bbbbbb'");
   std::vector<std::string> parts;
-  for (auto [c, color] : {std::pair<std::string, const char*>{"yes", kBlue},
-                          {"practically_no", kOrange},
-                          {"other", kGrey}}) {
-    if (!by_class.count(c)) continue;
-    parts.push_back(f->AddData(by_class[c]) +
+  for (auto [identifiable, color] :
+       {std::pair<Identifiability, const char*>{Identifiability::kYes, kBlue},
+        {Identifiability::kPracticallyNo, kOrange},
+        {Identifiability::kNo, kGrey}}) {
+    const auto it = by_class.find(identifiable);
+    if (it == by_class.end()) continue;
+    parts.push_back(f->AddData(it->second) +
                     " using 1:(1):2:3 with yerrorbars pt 7 ps 0.7 lw 2 lc rgb '" + color +
-                    "' title " + GnuplotString(c));
+                    "' title " + GnuplotString(ToString(identifiable)));
   }
   return g.str() + "plot " + Join(parts, ", ") + "\n";
 }
@@ -187,11 +211,12 @@ void IntervalFigure(const Intervals& intervals, Page* page) {
   Figure f("identify-parameters",
            std::clamp(300 + 45 * static_cast<int>(intervals.names.size()), 600, 1000), 420);
   f.script = IntervalScript(&f, intervals);
-  f.caption =
-      "95 % interval of each free parameter relative to its value, "
-      "[exp(−1.96 std/value), exp(+1.96 std/value)], on a log axis (dimensionless). "
-      "Dashed lines: a factor 2 either way, beyond which a parameter is practically "
-      "not identifiable.";
+  const std::string z = Format(kNormal95, "%.2f");
+  f.caption = "95 % interval of each free parameter relative to its value, [exp(−" + z +
+              " std/value), exp(+" + z +
+              " std/value)], on a log axis (dimensionless). "
+              "Dashed lines: a factor 2 either way, beyond which a parameter is practically "
+              "not identifiable.";
   if (!intervals.clipped.empty()) {
     f.caption += " Cut at a factor " + Format(kClipFactor, "%.0f") +
                  ", beyond the axis: " + Join(intervals.clipped, ", ") + ".";
@@ -205,11 +230,11 @@ void IntervalFigure(const Intervals& intervals, Page* page) {
 
 }  // namespace
 
-void IdentifyPage(const json& report, Page* page) {
-  page->Summary(FactsOf(report, kSummary));
-  const json& modes = List(report, "modes");
-  const FrequencyFigureOptions frequencies = ModesSection(modes, page);
-  const Intervals intervals = ParametersSection(Get(report, "parameters"), page);
+void IdentifyPage(const IdentifyReport& report, Page* page) {
+  const IdentifySummary& summary = report.body.result;
+  page->Summary(SummaryFacts(report.body.dataset, summary));
+  const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
+  const Intervals intervals = ParametersSection(summary.estimates, page);
   page->Heading("Figures");
   if (auto f = FrequencyFigure(frequencies)) {
     f->caption =
@@ -217,7 +242,7 @@ void IdentifyPage(const json& report, Page* page) {
         "Right: model − measured, in Hz, against the ± 1σ of the measurement drawn around 0.";
     page->AddFigure(std::move(*f));
   }
-  MacFigure(modes, page);
+  MacFigure(summary.modes, page);
   IntervalFigure(intervals, page);
 }
 

@@ -36,8 +36,6 @@ std::string EscapeHtml(const std::string& text) {
   return out;
 }
 
-Cell ValueCell(const json& value) { return {Text(value), value.is_number()}; }
-
 Cell TextCell(const std::string& text) { return {text, false}; }
 
 Cell NumberCell(std::optional<double> value, const char* format) {
@@ -56,31 +54,6 @@ Cell YesNoCell(bool value) { return TextCell(value ? "yes" : "no"); }
 
 Cell ListCell(const std::vector<std::string>& items) {
   return TextCell(items.empty() ? "–" : Join(items, ", "));
-}
-
-FactRows FactsOf(const json& report, const std::vector<FactSpec>& specs) {
-  FactRows rows;
-  for (const FactSpec& spec : specs) {
-    const json* object = &report;
-    std::stringstream path(spec.path);
-    std::string key, next;
-    std::getline(path, key, '/');
-    while (std::getline(path, next, '/')) {
-      object = &Get(*object, key.c_str());
-      key = next;
-    }
-    if (!Has(*object, key.c_str())) continue;
-    std::string label = spec.label ? spec.label : key;
-    if (!spec.label) std::replace(label.begin(), label.end(), '_', ' ');
-    rows.push_back({label, ValueCell(Get(*object, key.c_str()))});
-  }
-  return rows;
-}
-
-std::vector<Row> RowsOf(const json& list, const std::function<Row(const json&)>& row) {
-  std::vector<Row> rows;
-  for (const json& item : list) rows.push_back(row(item));
-  return rows;
 }
 
 namespace {

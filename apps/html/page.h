@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "apps/html/figure.h"
-#include "apps/html/json_access.h"
 #include "model/enum_names.h"
 
 namespace ringid::html {
@@ -26,8 +25,6 @@ struct Cell {
 };
 using Row = std::vector<Cell>;
 
-// Any JSON value as text; a number is marked as one.
-Cell ValueCell(const json& value);
 Cell TextCell(const std::string& text);
 // "–" when missing.
 Cell NumberCell(std::optional<double> value, const char* format = "%.4g");
@@ -45,19 +42,7 @@ Cell NameCell(E value) {
 // A list of names joined by ", ".
 Cell ListCell(const std::vector<std::string>& items);
 
-// A summary line: the value at `path` ("key" or "key/key") under `label`,
-// by default the last key with spaces for underscores.
-struct FactSpec {
-  const char* path;
-  const char* label = nullptr;
-};
-
 using FactRows = std::vector<std::pair<std::string, Cell>>;
-// The facts of `specs` that `report` has (a null value shows as "–").
-FactRows FactsOf(const json& report, const std::vector<FactSpec>& specs);
-
-// One row per item of a JSON list.
-std::vector<Row> RowsOf(const json& list, const std::function<Row(const json&)>& row);
 
 class Page {
  public:
