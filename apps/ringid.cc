@@ -301,10 +301,9 @@ using CampaignWork = std::function<CampaignItem(const Dataset&, const std::strin
 
 // --output_dir: every dataset of --dataset (this shard's share), --jobs at
 // once. Every input is loaded and checked before anything runs, so a bad one
-// stops the campaign with exit 2 and nothing written. `check` refuses a
-// dataset the analysis could not start on.
-int RunCampaign(int argc, char** argv, ReportKind command,
-                const std::function<bool(const Dataset&, std::string*)>& check,
+// stops the campaign with exit 2 and nothing written, as does a dataset
+// `model` cannot start on.
+int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& model,
                 const CampaignWork& work) {
   std::string error;
   Shard shard;
@@ -323,7 +322,10 @@ int RunCampaign(int argc, char** argv, ReportKind command,
   for (size_t i = 0; i < files.size(); ++i) {
     LoadError load;
     if (!LoadDataset(files[i], &datasets[i], &load)) return Usage(load.OneLine());
-    if (!check(datasets[i], &error)) return Usage(files[i] + ": " + error);
+    ParameterSetup setup;  // a dataset the model cannot start on
+    if (!ParameterSetup::Build(model, datasets[i], &setup, &error)) {
+      return Usage(files[i] + ": " + error);
+    }
   }
   std::error_code ec;
   std::filesystem::create_directories(FLAGS_output_dir, ec);
@@ -380,11 +382,7 @@ int IdentifyCommand(int argc, char** argv) {
     if (!FLAGS_save_parameters.empty()) return Usage("--save_parameters: not in a campaign");
     const RigidRingModel model(effects);
     return RunCampaign(
-        argc, argv, ReportKind::kIdentify,
-        [&](const Dataset& d, std::string* why) {
-          ParameterSetup setup;
-          return ParameterSetup::Build(model, d, &setup, why);
-        },
+        argc, argv, ReportKind::kIdentify, model,
         [&](const Dataset& d, const std::string& file) {
           IdentifySummary s;
           Identify(model, d, o, &s);
@@ -556,11 +554,7 @@ int DiagnoseCommand(int argc, char** argv) {
     if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
     const RigidRingModel baseline(effects);
     return RunCampaign(
-        argc, argv, ReportKind::kDiagnose,
-        [&](const Dataset& d, std::string* why) {
-          ParameterSetup setup;
-          return ParameterSetup::Build(baseline, d, &setup, why);
-        },
+        argc, argv, ReportKind::kDiagnose, baseline,
         [&](const Dataset& d, const std::string& file) {
           DiagnosisReport r;
           Diagnose(baseline, d, o, &r);
