@@ -332,7 +332,7 @@ std::vector<std::string> Absorbed(const Dataset& dataset, const IdentifySummary&
 EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, const Dataset& warm,
                        const Dataset& dataset, const DiagnosisReport& r, const DiagnoseOptions& o) {
   EffectFit f;
-  f.effect = effect.name();
+  f.effect = &effect;
   const RigidRingModel model = baseline.With(&effect);
   const IdentifySummary s = FitEffect(model, effect, warm, dataset, o);
   if (!s.status.ok()) {
@@ -399,13 +399,13 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
     if (f.supported && f.aic <= best->aic + o.group_aic) r->indistinguishable.push_back(f.effect);
   }
   if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
-  *why << best->effect << " removes " << static_cast<int>(std::round(100 * best->shrink))
+  *why << best->effect->name() << " removes " << static_cast<int>(std::round(100 * best->shrink))
        << " % of the gap (likelihood ratio " << best->lrt_statistic << " on "
        << best->extra_parameters << " parameter(s), p = " << best->lrt_p << ")";
   if (!r->indistinguishable.empty()) {
     *why << "; these data cannot tell it from";
-    for (const std::string& e : r->indistinguishable) {
-      if (e != best->effect) *why << " " << e;
+    for (const Effect* e : r->indistinguishable) {
+      if (e != best->effect) *why << " " << e->name();
     }
   }
   if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
@@ -427,11 +427,10 @@ std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
   const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
   std::ostringstream small;
   for (EffectFit& f : r->ranking) {
-    const Effect* effect = FindEffect(f.effect);
     for (auto& [name, v] : f.minimal_detectable) {
-      v = CheckedDetectable(baseline, *effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
+      v = CheckedDetectable(baseline, *f.effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
       char b[96];
-      std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect.c_str(),
+      std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect->name(),
                     name.c_str(), v);
       small << b;
     }
@@ -480,7 +479,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   });
   std::ostringstream why;
   Verdict(baseline, warm, before, o, r, &why);
-  if (r->verdict == "none") {
+  if (!r->verdict) {
     const std::string sizes = DetectableSizes(baseline, warm, o, r);
     if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
   }
@@ -493,10 +492,10 @@ std::string DiagnosisReport::FullReport() const {
   std::ostringstream o;
   char line[256];
   if (!status.ok()) return "ringid diagnose: FAILED: " + status.message + "\n";
-  o << "ringid diagnose: verdict " << verdict;
+  o << "ringid diagnose: verdict " << EffectName(verdict);
   if (!indistinguishable.empty()) {
     o << " (indistinguishable:";
-    for (const auto& e : indistinguishable) o << " " << e;
+    for (const Effect* e : indistinguishable) o << " " << e->name();
     o << ")";
   }
   o << "\n  " << explanation << "\n\n";
@@ -520,10 +519,10 @@ std::string DiagnosisReport::FullReport() const {
   o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2\n";
   for (const EffectFit& f : ranking) {
     if (!f.ok) {
-      o << "  " << f.effect << ": not fitted: " << f.note << "\n";
+      o << "  " << f.effect->name() << ": not fitted: " << f.note << "\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", f.effect.c_str(), f.chi2,
+    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", f.effect->name(), f.chi2,
                   f.lrt_p, f.aic, 100 * f.shrink,
                   f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-",
                   f.supported ? "  supported" : "");

@@ -60,7 +60,7 @@ struct ModeMisfit {
 };
 
 struct EffectFit {
-  std::string effect;
+  const Effect* effect = nullptr;
   bool ok = false;
   std::string note;                      // why not, when !ok
   int extra_parameters = 0;
@@ -117,8 +117,8 @@ struct DiagnosisReport {
   std::optional<double> held_out_before;
   // Which effect, ranked by AIC.
   std::vector<EffectFit> ranking;
-  std::string verdict = "none";
-  std::vector<std::string> indistinguishable;
+  const Effect* verdict = nullptr;  // none
+  std::vector<const Effect*> indistinguishable;
   std::string explanation;
   std::vector<double> mode_shrink;  // per measured mode, for the verdict
   double seconds = 0;

@@ -107,4 +107,23 @@ const Effect* FindEffect(const std::string& name) {
   return nullptr;
 }
 
+std::optional<const Effect*> PointerNames<Effect>::FromString(std::string_view name) {
+  if (name == kNoEffect) return nullptr;
+  const Effect* effect = FindEffect(std::string(name));
+  if (!effect) return std::nullopt;
+  return effect;
+}
+
+std::string PointerNames<Effect>::Choices() {
+  std::string out = kNoEffect;
+  for (const Effect* e : EffectCatalogue()) out += std::string(", ") + e->name();
+  return out;
+}
+
+std::vector<std::string> EffectNames(const std::vector<const Effect*>& effects) {
+  std::vector<std::string> names;
+  for (const Effect* e : effects) names.push_back(EffectName(e));
+  return names;
+}
+
 }  // namespace ringid

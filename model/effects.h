@@ -3,9 +3,12 @@
 #ifndef RINGID_MODEL_EFFECTS_H_
 #define RINGID_MODEL_EFFECTS_H_
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "model/enum_names.h"
 #include "model/parameters.h"
 #include "model/system.h"
 
@@ -26,6 +29,18 @@ class Effect {
 // the program's life.
 const std::vector<const Effect*>& EffectCatalogue();
 const Effect* FindEffect(const std::string& name);
+
+// In reports an effect is named by name(), and no effect (nullptr) "none".
+inline constexpr char kNoEffect[] = "none";
+inline const char* EffectName(const Effect* effect) { return effect ? effect->name() : kNoEffect; }
+std::vector<std::string> EffectNames(const std::vector<const Effect*>& effects);
+
+template <>
+struct PointerNames<Effect> {
+  static const char* ToString(const Effect* effect) { return EffectName(effect); }
+  static std::optional<const Effect*> FromString(std::string_view name);
+  static std::string Choices();
+};
 
 }  // namespace ringid
 

@@ -39,6 +39,14 @@ std::string EnumChoices() {
   return out;
 }
 
+// Objects a report names by pointer, the null pointer included (an effect,
+// or "none"): a specialisation of PointerNames<T> provides
+//   static const char* ToString(const T*);
+//   static std::optional<const T*> FromString(std::string_view);
+//   static std::string Choices();  // for an error message
+template <class T>
+struct PointerNames;
+
 }  // namespace ringid
 
 #endif  // RINGID_MODEL_ENUM_NAMES_H_

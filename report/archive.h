@@ -12,7 +12,7 @@
 //   a->Derived("name", value);         // computed from other fields: written, skipped on reading
 //
 // Types: bool, integers, double (null where not finite), std::string, enums
-// with EnumNames, std::complex<double> ({re, im}), std::optional (null),
+// with EnumNames, pointers to objects with PointerNames (an effect or "none"), std::complex<double> ({re, im}), std::optional (null),
 // std::vector (array), std::pair (two-element array), std::map keyed by a
 // string or an enum (object), Eigen vectors (array) and matrices (rows), and
 // structs with Serialize (object).
@@ -51,6 +51,9 @@ template <class A, class B> struct IsPair<std::pair<A, B>> : std::true_type {};
 template <class T> struct IsMap : std::false_type {};
 template <class K, class V> struct IsMap<std::map<K, V>> : std::true_type {};
 template <class T> struct IsEigen : std::is_base_of<Eigen::EigenBase<T>, T> {};
+
+template <class T>
+using PointerNamesOf = PointerNames<std::remove_const_t<std::remove_pointer_t<T>>>;
 
 template <class K>
 std::string KeyText(const K& key) {
@@ -111,6 +114,8 @@ class JsonWriter {
       return v;
     } else if constexpr (std::is_enum_v<T>) {
       return ToString(v);
+    } else if constexpr (std::is_pointer_v<T>) {
+      return internal::PointerNamesOf<T>::ToString(v);
     } else if constexpr (std::is_integral_v<T>) {
       return v;
     } else if constexpr (std::is_floating_point_v<T>) {
@@ -238,6 +243,15 @@ class JsonReader {
       if (!parsed) {
         *error = path + ": unknown name '" + j.get<std::string>() + "' (expected " +
                  EnumChoices<T>() + ")";
+        return false;
+      }
+      *v = *parsed;
+    } else if constexpr (std::is_pointer_v<T>) {
+      if (!Expect(j, j.is_string(), path, "a name", error)) return false;
+      const auto parsed = internal::PointerNamesOf<T>::FromString(j.get<std::string>());
+      if (!parsed) {
+        *error = path + ": unknown name '" + j.get<std::string>() + "' (expected " +
+                 internal::PointerNamesOf<T>::Choices() + ")";
         return false;
       }
       *v = *parsed;

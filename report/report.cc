@@ -87,8 +87,9 @@ std::string CampaignTable(const CampaignBody& c) {
                number(r.relative_error_out_of_plane_eq20, "%.3e");
     } else {
       std::string group;
-      for (const std::string& g : r.indistinguishable) group += (group.empty() ? "" : "+") + g;
-      table += (r.status.ok() ? r.verdict.value_or("-") : status) + " | " + group + " | " +
+      for (const Effect* g : r.indistinguishable) group += (group.empty() ? "" : "+") + std::string(g->name());
+      table += (r.status.ok() && r.verdict ? std::string(EffectName(*r.verdict)) : status) + " | " +
+               group + " | " +
                number(r.gap_before, "%.4g") + " | " + number(r.gap_after, "%.4g") + " | " +
                number(r.shrink ? std::optional(100 * *r.shrink) : std::nullopt, "%.1f %%");
     }

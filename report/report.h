@@ -129,8 +129,8 @@ struct CampaignRow {
   std::optional<double> cost, relative_error_in_plane_eq19, relative_error_out_of_plane_eq20;
   bool converged = false;
   // diagnose
-  std::optional<std::string> verdict;
-  std::vector<std::string> indistinguishable;
+  std::optional<const Effect*> verdict;  // nullptr: none
+  std::vector<const Effect*> indistinguishable;
   std::optional<double> gap_before, gap_after, shrink;
 
   template <class Archive>

@@ -44,14 +44,14 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
 TEST(DiagnoseTest, NoEffectNoAlarm) {
   for (unsigned seed : {1u, 2u}) {
     const DiagnosisReport r = DiagnoseWithheld(nullptr, Param::m_b, 0, seed);
-    EXPECT_EQ(r.verdict, "none") << r.explanation;
-    for (const EffectFit& f : r.ranking) EXPECT_FALSE(f.supported) << f.effect;
+    EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
+    for (const EffectFit& f : r.ranking) EXPECT_FALSE(f.supported) << EffectName(f.effect);
   }
 }
 
 TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
   const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3);
-  EXPECT_EQ(r.verdict, "lug_coupling") << r.explanation;
+  EXPECT_STREQ(EffectName(r.verdict), "lug_coupling") << r.explanation;
   EXPECT_GT(r.ranking.front().shrink, 0.8);
   EXPECT_TRUE(r.significant);
 }
@@ -61,17 +61,17 @@ TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
 TEST(DiagnoseTest, ABaselineWithTheWithheldEffectLeavesNoGap) {
   const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, false,
                                              RigidRingModel({FindEffect("lug_coupling")}));
-  EXPECT_EQ(r.verdict, "none") << r.explanation;
+  EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
   EXPECT_FALSE(r.significant) << r.chi2_before << " on " << r.dof;
   ASSERT_EQ(r.ranking.size(), EffectCatalogue().size() - 1);
-  for (const EffectFit& f : r.ranking) EXPECT_NE(f.effect, "lug_coupling");
+  for (const EffectFit& f : r.ranking) EXPECT_NE(f.effect, FindEffect("lug_coupling"));
 }
 
 // Held-out modes, each predicted from a fit without it: the withheld effect
 // predicts them far better than the re-calibrated baseline.
 TEST(DiagnoseTest, TheEffectPredictsHeldOutModes) {
   const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, true);
-  ASSERT_EQ(r.verdict, "lug_coupling") << r.explanation;
+  ASSERT_STREQ(EffectName(r.verdict), "lug_coupling") << r.explanation;
   ASSERT_TRUE(r.held_out_before.has_value());
   const EffectFit& lug = r.ranking.front();
   ASSERT_TRUE(lug.held_out_chi2.has_value());
@@ -81,7 +81,7 @@ TEST(DiagnoseTest, TheEffectPredictsHeldOutModes) {
 
 TEST(DiagnoseTest, NamesASoftHub) {
   const DiagnosisReport r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-7, 3);
-  EXPECT_EQ(r.verdict, "hub_compliance") << r.explanation;
+  EXPECT_STREQ(EffectName(r.verdict), "hub_compliance") << r.explanation;
   // Where: the hub components of the measured shapes carry the gap.
   bool hub = false;
   for (const ModeMisfit& w : r.where) {
@@ -93,10 +93,10 @@ TEST(DiagnoseTest, NamesASoftHub) {
 TEST(DiagnoseTest, AnAbsorbableEffectIsNoneWithItsDetectableSize) {
   const double k_cpsi = 100;
   const DiagnosisReport r = DiagnoseWithheld("contact_yaw_stiffness", Param::k_cpsi, k_cpsi, 3);
-  EXPECT_EQ(r.verdict, "none");
+  EXPECT_STREQ(EffectName(r.verdict), "none");
   bool stated = false;
   for (const EffectFit& f : r.ranking) {
-    if (f.effect == "contact_yaw_stiffness") {
+    if (f.effect == FindEffect("contact_yaw_stiffness")) {
       ASSERT_TRUE(f.minimal_detectable.count("k_cpsi"));
       stated = f.minimal_detectable.at("k_cpsi") > k_cpsi;
     }
@@ -111,15 +111,15 @@ TEST(DiagnoseTest, AnAbsorbableEffectIsNoneWithItsDetectableSize) {
 // Jacobian alone promised 6e-8 here; the hub is absorbed at second order.)
 TEST(DiagnoseTest, TheStatedDetectableSizeOfTheHubHolds) {
   const DiagnosisReport r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-8, 5);
-  ASSERT_EQ(r.verdict, "none") << r.explanation;
+  ASSERT_STREQ(EffectName(r.verdict), "none") << r.explanation;
   double detectable = 0;
   for (const EffectFit& f : r.ranking) {
-    if (f.effect == "hub_compliance") detectable = f.minimal_detectable.at("s_h");
+    if (f.effect == FindEffect("hub_compliance")) detectable = f.minimal_detectable.at("s_h");
   }
   ASSERT_GT(detectable, 2e-8);
-  EXPECT_EQ(DiagnoseWithheld("hub_compliance", Param::s_h, 0.5 * detectable, 5).verdict, "none");
+  EXPECT_EQ(DiagnoseWithheld("hub_compliance", Param::s_h, 0.5 * detectable, 5).verdict, nullptr);
   const DiagnosisReport seen = DiagnoseWithheld("hub_compliance", Param::s_h, 2 * detectable, 5);
-  EXPECT_EQ(seen.verdict, "hub_compliance") << seen.explanation;
+  EXPECT_STREQ(EffectName(seen.verdict), "hub_compliance") << seen.explanation;
 }
 
 TEST(DiagnoseTest, ThePapersData) {
@@ -130,7 +130,7 @@ TEST(DiagnoseTest, ThePapersData) {
   DiagnosisReport r;
   Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  EXPECT_EQ(r.verdict, "none") << r.explanation;
+  EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
   // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
   // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits: a yaw
   // stiffness is needed. At standstill contact yaw stiffness and an untied
@@ -140,7 +140,7 @@ TEST(DiagnoseTest, ThePapersData) {
   Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_TRUE(r.significant);
-  const auto& g = r.indistinguishable;
+  const std::vector<std::string> g = EffectNames(r.indistinguishable);
   EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;
   EXPECT_NE(std::find(g.begin(), g.end(), "anisotropic_sidewall"), g.end()) << r.explanation;
 }

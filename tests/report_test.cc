@@ -82,6 +82,20 @@ TEST(ReportTest, DiagnoseAndCampaignRoundTripByteForByte) {
   ASSERT_EQ(r.status, 0) << r.err;
   ExpectRoundTrip<ringid::DiagnoseReport>(out + "/lug.json");
   ExpectRoundTrip<ringid::CampaignReport>(out + "/campaign.json");
+  // Effects are read by name, "none" included; anything else is refused.
+  Json diagnosis = Json::parse(ReadFile(out + "/lug.json"));
+  ringid::DiagnoseReport report;
+  std::string error;
+  ASSERT_TRUE(ringid::ReadReport(diagnosis, &report, &error)) << error;
+  EXPECT_EQ(report.body.result.verdict, ringid::FindEffect("lug_coupling"));
+  diagnosis["verdict"]["effect"] = "none";
+  ASSERT_TRUE(ringid::ReadReport(diagnosis, &report, &error)) << error;
+  EXPECT_EQ(report.body.result.verdict, nullptr);
+  diagnosis["verdict"]["effect"] = "wobble";
+  EXPECT_FALSE(ringid::ReadReport(diagnosis, &report, &error));
+  EXPECT_EQ(error.rfind("verdict.effect: unknown name 'wobble' (expected none, anisotropic_sidewall", 0),
+            0u)
+      << error;
 }
 
 TEST(ReportTest, TheProvenanceNamesEachInputWithItsSha256) {

@@ -12,13 +12,11 @@
 namespace ringid {
 namespace {
 
-constexpr char kNone[] = "none";
-
 // Whether a "none" verdict on a case with `effect` at `value` is explained by
 // the report's own minimal detectable size of that effect.
 bool AbsorbedAsStated(const DiagnosisReport& r, const Effect& effect, double value) {
   for (const EffectFit& f : r.ranking) {
-    if (f.effect != effect.name()) continue;
+    if (f.effect != &effect) continue;
     const auto mde = f.minimal_detectable.find(ParamName(effect.size()));
     return mde != f.minimal_detectable.end() && std::abs(value) < mde->second;
   }
@@ -34,7 +32,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
   // nullptr: no effect withheld.
   std::vector<const Effect*> truths = {nullptr};
   for (const Effect* e : EffectCatalogue()) truths.push_back(e);
-  for (const Effect* e : truths) suite->effects.push_back(e ? e->name() : kNone);
+  suite->effects = EffectNames(truths);
   const double scales[] = {0.8, 1.0, 1.25};
   const int draws = std::clamp(o.replicates, 1, 3);
   const int total = static_cast<int>(truths.size()) * draws * 2;
@@ -42,7 +40,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
   int correct = 0, shrink_n = 0;
   double shrink_sum = 0, seconds = 0;
   for (const Effect* effect : truths) {
-    const std::string truth_name = effect ? effect->name() : kNone;
+    const std::string truth_name = EffectName(effect);
     for (int k = 0; k < draws; ++k) {
       for (double shift : effect ? std::vector<double>{0.03, 0.05} : std::vector<double>{0, 0}) {
         Parameters truth = ScaledTire(paper, scales[k % 3]);
@@ -68,20 +66,20 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
         Diagnose(RigidRingModel(), d, dopt, &dr);
         if (!dr.status.ok()) return Status::Failed(d.name + ": " + dr.status.message);
         seconds += dr.seconds;
-        c.verdict = dr.verdict;
-        c.indistinguishable = dr.indistinguishable;
+        c.verdict = EffectName(dr.verdict);
+        c.indistinguishable = EffectNames(dr.indistinguishable);
         c.gap_p_value = dr.p_value;
         c.seconds = dr.seconds;
         const bool named =
-            dr.verdict == truth_name ||
-            std::count(dr.indistinguishable.begin(), dr.indistinguishable.end(), truth_name) > 0;
-        c.absorbed_explained = effect && dr.verdict == kNone && AbsorbedAsStated(dr, *effect, c.value);
+            dr.verdict == effect ||
+            std::count(dr.indistinguishable.begin(), dr.indistinguishable.end(), effect) > 0;
+        c.absorbed_explained = effect && !dr.verdict && AbsorbedAsStated(dr, *effect, c.value);
         c.correct = named || c.absorbed_explained;
         suite->named += effect && named;
         suite->absorbed_and_explained += c.absorbed_explained;
         if (!effect) {
           ++suite->no_effect_cases;
-          suite->false_alarms += dr.verdict != kNone;
+          suite->false_alarms += dr.verdict != nullptr;
         } else if (named) {
           for (const EffectFit& f : dr.ranking) {
             if (f.effect != dr.verdict) continue;
@@ -90,7 +88,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
           }
         }
         correct += c.correct;
-        ++suite->confusion[truth_name][dr.verdict];
+        ++suite->confusion[truth_name][EffectName(dr.verdict)];
         suite->cases.push_back(std::move(c));
         if (o.on_case) o.on_case(static_cast<int>(suite->cases.size()), total);
       }

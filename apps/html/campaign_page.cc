@@ -34,8 +34,8 @@ void DiagnoseTable(const std::vector<CampaignRow>& datasets, Page* page) {
   std::vector<Row> rows;
   for (const CampaignRow& d : datasets) {
     rows.push_back({TextCell(d.dataset), NameCell(d.status.outcome),
-                    OptionalTextCell(d.status.message), TextCell(d.verdict.value_or("–")),
-                    ListCell(d.indistinguishable), NumberCell(d.gap_before),
+                    OptionalTextCell(d.status.message), TextCell(d.verdict ? EffectName(*d.verdict) : "–"),
+                    ListCell(EffectNames(d.indistinguishable)), NumberCell(d.gap_before),
                     NumberCell(d.gap_after), PercentCell(d.shrink), NumberCell(d.seconds),
                     TextCell(d.report_file)});
   }

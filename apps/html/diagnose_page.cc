@@ -29,9 +29,9 @@ FactRows SummaryFacts(const DiagnoseReport& report) {
   return {{"dataset", TextCell(report.body.dataset)},
           {"status", NameCell(r.status.outcome)},
           {"message", TextCell(r.status.message)},
-          {"verdict", TextCell(r.verdict)},
+          {"verdict", TextCell(EffectName(r.verdict))},
           {"explanation", TextCell(r.explanation)},
-          {"indistinguishable from", ListCell(r.indistinguishable)},
+          {"indistinguishable from", ListCell(EffectNames(r.indistinguishable))},
           {"gap before: χ²", NumberCell(r.chi2_before)},
           {"gap before: degrees of freedom", NumberCell(r.dof, "%.0f")},
           {"gap before: χ² in excess of its dof", NumberCell(r.gap_before)},
@@ -102,7 +102,7 @@ Cell ValuesCell(const EffectFit& fit) {
 Row EffectRow(const EffectFit& fit) {
   // An effect that was not fitted has no evidence.
   const auto shown = [&fit](double value) { return fit.ok ? Finite(value) : std::nullopt; };
-  return {TextCell(fit.effect),
+  return {TextCell(EffectName(fit.effect)),
           YesNoCell(fit.ok),
           NumberCell(shown(fit.gap_after)),
           PercentCell(shown(fit.shrink)),
@@ -224,7 +224,7 @@ Ranking ReadRanking(const DiagnosisReport& report) {
     const auto shrink = Finite(100 * fit.shrink);
     const auto ratio = Finite(fit.lrt_statistic);
     if (!shrink && !ratio) continue;
-    out.effects.push_back(fit.effect);
+    out.effects.push_back(EffectName(fit.effect));
     out.shrink.push_back(shrink ? std::make_pair(std::min(0.0, *shrink), std::max(0.0, *shrink))
                                 : std::make_pair(double(NAN), double(NAN)));
     out.likelihood_ratio.push_back({NAN, ratio && *ratio > 0 ? *ratio : NAN});
@@ -337,9 +337,9 @@ void DiagnosePage(const DiagnoseReport& report, Page* page) {
   const Misfits misfits = ReadMisfits(result);
   WhereSection(misfits, page);
   page->Heading("Figures");
-  MisfitFigure(misfits, result.verdict, page);
+  MisfitFigure(misfits, EffectName(result.verdict), page);
   RankingFigure(result, page);
-  ShrinkFigure(misfits, result.verdict, page);
+  ShrinkFigure(misfits, EffectName(result.verdict), page);
 }
 
 }  // namespace ringid::html
