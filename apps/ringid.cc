@@ -68,6 +68,9 @@ DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg")
 DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
 
 namespace ringid {
+
+using internal::ParameterSetup;
+
 namespace {
 
 constexpr int kExitOk = 0;

@@ -10,6 +10,15 @@
 #include <sstream>
 
 namespace ringid {
+
+using internal::Box;
+using internal::CostAt;
+using internal::DrawStarts;
+using internal::LocalFit;
+using internal::ModalResiduals;
+using internal::ParameterSetup;
+using internal::RelativeErrors;
+
 namespace {
 
 double Median(std::vector<double> v) {
@@ -27,6 +36,8 @@ bool CompareOptions::IsValid(std::string* why) const {
   }
   return fit.IsValid(why);
 }
+
+namespace internal {
 
 void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
                     const Eigen::VectorXd& x, double* in_plane,
@@ -49,6 +60,8 @@ void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
   if (n[0]) *in_plane = e[0];
   if (n[1]) *out_of_plane = e[1];
 }
+
+}  // namespace internal
 
 void CompareMethods(const ModalModel& model, const Dataset& dataset,
                     const CompareOptions& o, ComparisonReport* r) {

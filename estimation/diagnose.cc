@@ -14,6 +14,11 @@
 #include "model/effects.h"
 
 namespace ringid {
+
+using internal::LocalFit;
+using internal::ModalResiduals;
+using internal::ParameterSetup;
+
 namespace {
 
 // P(chi-square(dof) >= x).

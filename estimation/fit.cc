@@ -7,6 +7,7 @@
 #include <ceres/ceres.h>
 
 namespace ringid {
+namespace internal {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -174,4 +175,5 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
   return fit;
 }
 
+}  // namespace internal
 }  // namespace ringid

@@ -23,6 +23,8 @@ struct EnumNames<Method> {
   static constexpr std::array<const char*, 2> kNames = {"lm", "simplex"};
 };
 
+namespace internal {
+
 struct Box {
   Eigen::VectorXd lower, upper;
 };
@@ -62,6 +64,8 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
                     const Eigen::VectorXd& start, const Box& box,
                     int max_iterations, const SimplexOptions& simplex,
                     int fixed = -1);
+
+}  // namespace internal
 
 }  // namespace ringid
 

@@ -15,6 +15,12 @@
 #include <Eigen/SVD>
 
 namespace ringid {
+
+using internal::Box;
+using internal::LocalFit;
+using internal::ModalResiduals;
+using internal::ParameterSetup;
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();

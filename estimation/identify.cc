@@ -9,6 +9,15 @@
 #include <sstream>
 
 namespace ringid {
+
+using internal::AnalyzeUncertainty;
+using internal::Box;
+using internal::CostAt;
+using internal::DrawStarts;
+using internal::LocalFit;
+using internal::ModalResiduals;
+using internal::ParameterSetup;
+
 namespace {
 
 

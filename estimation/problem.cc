@@ -5,6 +5,9 @@
 
 namespace ringid {
 
+using internal::ModalResiduals;
+using internal::ParameterSetup;
+
 Problem::Problem(std::unique_ptr<ModalModel> model, const Dataset& dataset)
     : model_(std::move(model)), dataset_(dataset) {}
 

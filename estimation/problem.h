@@ -28,8 +28,8 @@ class Problem {
 
   const ModalModel& model() const { return *model_; }
   const Dataset& dataset() const { return dataset_; }
-  const ParameterSetup& setup() const { return setup_; }
-  const ModalResiduals& residuals() const { return *residuals_; }
+  const internal::ParameterSetup& setup() const { return setup_; }
+  const internal::ModalResiduals& residuals() const { return *residuals_; }
   // The dataset's initial point in coordinates.
   Eigen::VectorXd start() const { return setup_.Encode(setup_.start()); }
 
@@ -38,8 +38,8 @@ class Problem {
 
   std::unique_ptr<ModalModel> model_;
   Dataset dataset_;
-  ParameterSetup setup_;
-  std::unique_ptr<ModalResiduals> residuals_;  // refers to the members above
+  internal::ParameterSetup setup_;
+  std::unique_ptr<internal::ModalResiduals> residuals_;  // refers to the members above
 };
 
 }  // namespace ringid

@@ -41,6 +41,8 @@ double Mac(const RealShapeVector& model,
   return mu * mu / (mm * uu);
 }
 
+namespace internal {
+
 ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
                                const ParameterSetup& setup,
                                const ResidualOptions& options)
@@ -196,4 +198,5 @@ double ModalResiduals::FrequencySigma(const MeasuredMode& m) const {
   return options_.relative_sigma * m.frequency_hz;
 }
 
+}  // namespace internal
 }  // namespace ringid

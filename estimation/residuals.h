@@ -63,6 +63,8 @@ RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
 double Mac(const RealShapeVector& model,
            const std::vector<std::pair<Dof, double>>& measured);
 
+namespace internal {
+
 class ModalResiduals {
  public:
   ModalResiduals(const ModalModel& model, const Dataset& dataset,
@@ -119,6 +121,7 @@ class ModalResiduals {
 // The functor is not owned.
 ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals);
 
+}  // namespace internal
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_RESIDUALS_H_

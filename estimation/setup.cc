@@ -4,6 +4,7 @@
 #include <cmath>
 
 namespace ringid {
+namespace internal {
 
 bool ParameterSetup::Build(const ModalModel& model, const Dataset& dataset,
                            ParameterSetup* s, std::string* error) {
@@ -70,4 +71,5 @@ Parameters ParameterSetup::Decode(const double* x) const {
   return p;
 }
 
+}  // namespace internal
 }  // namespace ringid

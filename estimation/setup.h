@@ -15,6 +15,8 @@
 
 namespace ringid {
 
+namespace internal {
+
 class ParameterSetup {
  public:
   // Every parameter the model reads is known (fixed), tied (follows its
@@ -47,6 +49,7 @@ class ParameterSetup {
   Parameters start_;
 };
 
+}  // namespace internal
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_SETUP_H_

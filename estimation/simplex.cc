@@ -15,6 +15,8 @@ bool SimplexOptions::IsValid(std::string* why) const {
   return false;
 }
 
+namespace internal {
+
 SimplexResult MinimizeNelderMead(
     const std::function<double(const Eigen::VectorXd&)>& f,
     const Eigen::VectorXd& x0, const Eigen::VectorXd& lower,
@@ -95,4 +97,5 @@ SimplexResult MinimizeNelderMead(
   return result;
 }
 
+}  // namespace internal
 }  // namespace ringid

@@ -23,6 +23,8 @@ struct SimplexOptions {
   bool IsValid(std::string* why) const;
 };
 
+namespace internal {
+
 struct SimplexResult {
   Eigen::VectorXd x;
   double cost = 0;
@@ -39,6 +41,8 @@ SimplexResult MinimizeNelderMead(
     const Eigen::VectorXd& x0, const Eigen::VectorXd& lower,
     const Eigen::VectorXd& upper, const SimplexOptions& options);
 
+
+}  // namespace internal
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_SIMPLEX_H_

@@ -23,6 +23,8 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
   return false;
 }
 
+namespace internal {
+
 bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
                       Eigen::MatrixXd* jacobian) {
   const int n = static_cast<int>(x.size());
@@ -134,4 +136,5 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
   return u;
 }
 
+}  // namespace internal
 }  // namespace ringid

@@ -60,6 +60,8 @@ struct Uncertainty {
   }
 };
 
+namespace internal {
+
 // The weighted Jacobian dr/dx at x by the fit's own central differences.
 bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
                       Eigen::MatrixXd* jacobian);
@@ -69,6 +71,7 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                                const Eigen::VectorXd& x,
                                const UncertaintyOptions& options);
 
+}  // namespace internal
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_UNCERTAINTY_H_

@@ -4,6 +4,7 @@
 #include <limits>
 
 namespace ringid {
+namespace internal {
 
 std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score) {
   const int rows = static_cast<int>(score.rows());
@@ -60,4 +61,5 @@ std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score) {
   return result;
 }
 
+}  // namespace internal
 }  // namespace ringid

@@ -9,9 +9,13 @@
 
 namespace ringid {
 
+namespace internal {
+
 // Returns, for each row, the column assigned to it so that no column is used
 // twice and the sum of scores is largest. Needs rows <= cols <= 16.
 std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score);
+
+}  // namespace internal
 
 }  // namespace ringid
 

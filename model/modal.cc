@@ -10,6 +10,9 @@
 #include "model/assignment.h"
 
 namespace ringid {
+
+using internal::AssignMaxScore;
+
 namespace {
 
 constexpr int kMaxState = 2 * kNumDofs;

@@ -12,6 +12,9 @@
 #include "tests/test_support.h"
 
 namespace ringid {
+
+using internal::AssignMaxScore;
+
 namespace {
 
 using testing::PaperIdentified;
