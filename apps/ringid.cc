@@ -21,6 +21,7 @@
 #include "apps/html_report.h"
 #include "apps/progress.h"
 #include "apps/reports.h"
+#include "apps/schema_doc.h"
 #include "report/report.h"
 #include "validation/suites.h"
 #include "datasets/dataset.h"
@@ -114,6 +115,7 @@ const char kHelp[] =
     "  bench      accuracy and conditioning suites, run from the repository root\n"
     "             --suite=paper|synthetic|conditioning|diagnosis [--replicates=N] [--seed=N]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
+    "  schema     every report's fields and their types, as Markdown (docs/reports.md)\n"
     "  report     any JSON report of ringid as one self-contained HTML page: tables\n"
     "             and figures (SVG drawn by gnuplot, package gnuplot-nox)\n"
     "             --input=REPORT.json --output=FILE.html [--figures_dir=DIR]\n"
@@ -678,5 +680,10 @@ int main(int argc, char** argv) {
   if (command == "simulate") return ringid::SimulateCommand(argc, argv);
   if (command == "diagnose") return ringid::DiagnoseCommand(argc, argv);
   if (command == "report") return ringid::ReportCommand(argc, argv);
+  if (command == "schema") {
+    if (argc > 2) return ringid::Usage("schema takes no flags");
+    std::fputs(ringid::ReportsMarkdown().c_str(), stdout);
+    return 0;
+  }
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
 }

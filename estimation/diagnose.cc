@@ -285,6 +285,10 @@ bool DiagnoseOptions::IsValid(std::string* why) const {
     *why = "prior_sigma must be finite and not negative";
     return false;
   }
+  if (!(detectable_likelihood_ratio > 0) || !std::isfinite(detectable_likelihood_ratio)) {
+    *why = "detectable_likelihood_ratio must be finite and positive";
+    return false;
+  }
   if (!(group_aic >= 0) || !(prior_factor > 1)) {
     *why = "group_aic must not be negative and prior_factor must exceed 1";
     return false;
@@ -370,7 +374,8 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   }
   if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
   f.minimal_detectable = MinimalDetectable(baseline, effect, warm, r.baseline.uncertainty.jacobian,
-                                           r.baseline.uncertainty.rank, o, 20.0);
+                                           r.baseline.uncertainty.rank, o,
+                                           o.detectable_likelihood_ratio);
   return f;
 }
 
@@ -433,7 +438,8 @@ std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
   std::ostringstream small;
   for (EffectFit& f : r->ranking) {
     for (auto& [name, v] : f.minimal_detectable) {
-      v = CheckedDetectable(baseline, *f.effect, *ParseParam(name), v, r->baseline, warm, o, zero, 20.0);
+      v = CheckedDetectable(baseline, *f.effect, *ParseParam(name), v, r->baseline, warm, o, zero,
+                            o.detectable_likelihood_ratio);
       char b[96];
       std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect->name(),
                     name.c_str(), v);

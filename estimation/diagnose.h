@@ -20,6 +20,10 @@ struct DiagnoseOptions {
   // (six candidates: a Bonferroni-safe level) and it lowers the AIC, whether
   // or not the omnibus gap test is significant.
   double effect_significance = 1e-3;
+  // An effect too small to name is stated with the smallest size whose
+  // signature a re-calibration of the baseline cannot absorb: the size at
+  // which the likelihood ratio against the re-calibrated baseline reaches this.
+  double detectable_likelihood_ratio = 20.0;
   // Supported effects within this AIC of the best cannot be told apart.
   double group_aic = 2.0;
   // A fitted baseline parameter beyond this factor of its initial value

@@ -4,11 +4,14 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <vector>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "apps/reports.h"
+#include "apps/schema_doc.h"
+#include "report/schema.h"
 #include "report/report.h"
 #include "tests/round_trip.h"
 #include "tests/test_support.h"
@@ -163,6 +166,66 @@ TEST(ReportTest, AFailedRenamePutsBackTheFilesRenamedBeforeIt) {
   int entries = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 2) << "temporary or backup files were left behind";
+}
+
+// Every field path of `j` under `path`, arrays as "[]".
+void Paths(const Json& j, const std::string& path, std::vector<std::string>* out) {
+  if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) {
+      const std::string p = path.empty() ? key : path + "." + key;
+      out->push_back(p);
+      Paths(value, p, out);
+    }
+  } else if (j.is_array()) {
+    for (const Json& item : j) {
+      if (item.is_object()) Paths(item, path + "[]", out);
+    }
+  }
+}
+
+// Whether `path` is documented in `schema`, a keyed segment read as <name>
+// or <key>.
+bool Documented(const std::string& schema, const std::string& path) {
+  if (schema.find("- `" + path + "`:") != std::string::npos) return true;
+  for (size_t dot = path.find('.'); dot != std::string::npos; dot = path.find('.', dot + 1)) {
+    if (path[dot + 1] == '<') continue;  // read as a key already
+    const size_t end = path.find_first_of(".[", dot + 1);
+    for (const char* key : {"<name>", "<key>"}) {
+      const std::string keyed = path.substr(0, dot + 1) + key +
+                                (end == std::string::npos ? "" : path.substr(end));
+      if (keyed != path && Documented(schema, keyed)) return true;
+    }
+  }
+  return false;
+}
+
+TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
+  const std::string identify = Made("identify --starts=1 --shape_convention=paper --dataset=" +
+                                        Source("datasets/paper/inertia_recovery.json"),
+                                    "schema-identify.json");
+  const std::string compare =
+      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"), "schema-compare.json");
+  const std::string predict =
+      Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "schema-predict.json");
+  const struct {
+    std::string path;
+    std::string schema;
+  } reports[] = {{identify, ringid::ReportSchema<ringid::IdentifyReport>()},
+                 {compare, ringid::ReportSchema<ringid::CompareReport>()},
+                 {predict, ringid::ReportSchema<ringid::PredictReport>()}};
+  for (const auto& r : reports) {
+    std::vector<std::string> paths;
+    Paths(Json::parse(ReadFile(r.path)), "", &paths);
+    ASSERT_GT(paths.size(), 20u) << r.path;
+    for (const std::string& p : paths) EXPECT_TRUE(Documented(r.schema, p)) << r.path << ": " << p;
+  }
+  // A path the report does not have is not documented by accident.
+  EXPECT_FALSE(Documented(reports[0].schema, "modes[].frequency"));
+}
+
+TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
+  EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
+      << "run: build/ringid schema > docs/reports.md";
 }
 
 }  // namespace

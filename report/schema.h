@@ -1,0 +1,160 @@
+// A third archive over the same Serialize lists: the schema of a report as
+// Markdown, one line per field with its path and type. docs/reports.md is its
+// output (`ringid schema`), so the documented fields are the written ones.
+#ifndef RINGID_REPORT_SCHEMA_H_
+#define RINGID_REPORT_SCHEMA_H_
+
+#include <string>
+#include <utility>
+
+#include "report/archive.h"
+
+namespace ringid {
+
+class SchemaWriter {
+ public:
+  SchemaWriter(std::string prefix, std::string* out) : prefix_(std::move(prefix)), out_(out) {}
+
+  template <class T>
+  void Visit(const char* name, T*) {
+    Field<T>(name, "");
+  }
+  template <class T>
+  void VisitIfSet(const char* name, std::optional<T>*) {
+    Field<T>(name, " (only when set)");
+  }
+  template <class T, class K>
+  void VisitKeyed(const char* name, std::vector<T>*, K T::*) {
+    Line(Path(name), "object keyed by " + KeyName<K>());
+    Entry<T>(Path(name) + ".<" + ShortKey<K>() + ">", "");
+  }
+  template <class F>
+  void Group(const char* name, F&& fields) {
+    Line(Path(name), "object");
+    SchemaWriter group(Path(name), out_);
+    fields(&group);
+  }
+  template <class T>
+  void Derived(const char* name, const T&) {
+    Field<T>(name, " (derived from the fields above; ignored when read)");
+  }
+
+  // The lines of T's fields under `path`, or one line for a plain type.
+  template <class T>
+  void Describe(const std::string& path) {
+    if constexpr (IsStruct<T>()) {
+      T value{};
+      SchemaWriter inner(path, out_);
+      value.Serialize(&inner);
+    } else {
+      Line(path, TypeName<T>());
+    }
+  }
+
+  template <class T>
+  static std::string TypeName() {
+    if constexpr (std::is_same_v<T, bool>) {
+      return "true or false";
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      return "string";
+    } else if constexpr (std::is_enum_v<T>) {
+      return "one of " + EnumChoices<T>();
+    } else if constexpr (std::is_pointer_v<T>) {
+      return "one of " + internal::PointerNamesOf<T>::Choices();
+    } else if constexpr (std::is_integral_v<T>) {
+      return "integer";
+    } else if constexpr (std::is_floating_point_v<T>) {
+      return "number (null where not available)";
+    } else if constexpr (std::is_same_v<T, std::complex<double>>) {
+      return "{re, im}";
+    } else if constexpr (internal::IsOptional<T>::value) {
+      if constexpr (std::is_floating_point_v<typename T::value_type>) return "number or null";
+      return TypeName<typename T::value_type>() + " or null";
+    } else if constexpr (internal::IsVector<T>::value) {
+      return "list of " + TypeName<typename T::value_type>();
+    } else if constexpr (internal::IsPair<T>::value) {
+      return "[" + TypeName<typename T::first_type>() + ", " +
+             TypeName<typename T::second_type>() + "]";
+    } else if constexpr (internal::IsMap<T>::value) {
+      return "object keyed by " + KeyName<typename T::key_type>() + " of " +
+             TypeName<typename T::mapped_type>();
+    } else if constexpr (internal::IsEigen<T>::value) {
+      return T::ColsAtCompileTime == 1 ? "list of numbers" : "list of rows (lists of numbers)";
+    } else {
+      return "object";
+    }
+  }
+
+ private:
+  template <class T>
+  static constexpr bool IsStruct() {
+    return std::is_class_v<T> && !std::is_same_v<T, std::string> &&
+           !std::is_same_v<T, std::complex<double>> && !internal::IsOptional<T>::value &&
+           !internal::IsVector<T>::value && !internal::IsPair<T>::value &&
+           !internal::IsMap<T>::value && !internal::IsEigen<T>::value;
+  }
+  template <class K>
+  static std::string KeyName() {
+    if constexpr (std::is_enum_v<K>) {
+      return "name (" + EnumChoices<K>() + ")";
+    } else {
+      return "name";
+    }
+  }
+  template <class K>
+  static std::string ShortKey() {
+    return std::is_enum_v<K> ? "name" : "key";
+  }
+  template <class T>
+  void Field(const char* name, const std::string& note) {
+    Entry<T>(Path(name), note);
+  }
+  // The line of a value of type T at `path`, and those of its parts.
+  template <class T>
+  void Entry(const std::string& path, const std::string& note) {
+    if constexpr (internal::IsVector<T>::value) {
+      if constexpr (IsStruct<typename T::value_type>()) {
+        Line(path, "list of objects" + note);
+        Describe<typename T::value_type>(path + "[]");
+      } else {
+        Line(path, TypeName<T>() + note);
+      }
+    } else if constexpr (internal::IsMap<T>::value) {
+      using Key = typename T::key_type;
+      Line(path, "object keyed by " + KeyName<Key>() + note);
+      Entry<typename T::mapped_type>(path + ".<" + ShortKey<Key>() + ">", "");
+    } else if constexpr (IsStruct<T>()) {
+      Line(path, "object" + note);
+      Describe<T>(path);
+    } else if constexpr (std::is_same_v<T, std::complex<double>>) {
+      Line(path, "object: a complex number" + note);
+      Line(path + ".re", TypeName<double>());
+      Line(path + ".im", TypeName<double>());
+    } else {
+      Line(path, TypeName<T>() + note);
+    }
+  }
+  std::string Path(const std::string& name) const {
+    return prefix_.empty() ? name : prefix_ + "." + name;
+  }
+  void Line(const std::string& path, const std::string& type) {
+    *out_ += "- `" + path + "`: " + type + "\n";
+  }
+
+  std::string prefix_;
+  std::string* out_;
+};
+
+// The schema of report type R as Markdown lines.
+template <class R>
+std::string ReportSchema() {
+  std::string out;
+  SchemaWriter writer("", &out);
+  R report{};
+  report.Serialize(&writer);
+  return out;
+}
+
+}  // namespace ringid
+
+#endif  // RINGID_REPORT_SCHEMA_H_
