@@ -12,12 +12,9 @@
 namespace ringid {
 
 using internal::Box;
-using internal::CostAt;
-using internal::DrawStarts;
 using internal::LocalFit;
 using internal::ModalResiduals;
 using internal::ParameterSetup;
-using internal::RelativeErrors;
 
 namespace {
 

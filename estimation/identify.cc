@@ -10,10 +10,7 @@
 
 namespace ringid {
 
-using internal::AnalyzeUncertainty;
 using internal::Box;
-using internal::CostAt;
-using internal::DrawStarts;
 using internal::LocalFit;
 using internal::ModalResiduals;
 using internal::ParameterSetup;
