@@ -29,6 +29,7 @@
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
+#include "estimation/problem.h"
 #include "model/effects.h"
 #include "model/rigid_ring_model.h"
 
@@ -69,8 +70,6 @@ DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg")
 DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
 
 namespace ringid {
-
-using internal::ParameterSetup;
 
 namespace {
 
@@ -327,9 +326,9 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   for (size_t i = 0; i < files.size(); ++i) {
     LoadError load;
     if (!LoadDataset(files[i], &datasets[i], &load)) return Usage(load.OneLine());
-    ParameterSetup setup;  // a dataset the model cannot start on
-    if (!ParameterSetup::Build(model, datasets[i], &setup, &error)) {
-      return Usage(files[i] + ": " + error);
+    Status status;  // a dataset the model cannot start on
+    if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
+      return Usage(files[i] + ": " + status.message);
     }
   }
   std::error_code ec;
@@ -637,7 +636,8 @@ int ReportCommand(int argc, char** argv) {
     return Usage("report needs --input=REPORT.json and --output=FILE.html");
   }
   if (!CanWrite(FLAGS_output, &error)) return Usage(error);
-  if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir)) {
+  std::error_code ec;
+  if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir, ec)) {
     return Usage("--figures_dir: " + FLAGS_figures_dir + ": not a directory");
   }
   Json report;

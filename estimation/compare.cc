@@ -131,15 +131,19 @@ std::string ComparisonReport::FullReport() const {
   std::snprintf(line, sizeof line, "ringid compare: %d starts per method, best cost %.3e\n\n", starts, best_cost);
   o << line;
   o << "  method    success  median cost   worst cost   median evals  s/fit     median eq.19  median eq.20\n";
+  // The finite values of `v` sorted (NaN: a start without a fit).
+  const auto sorted = [](std::vector<double> v) {
+    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  const auto median = [](const std::vector<double>& v) { return v.empty() ? NAN : v[v.size() / 2]; };
   for (const MethodRun& m : methods) {
-    std::vector<double> c = m.final_costs;
-    std::sort(c.begin(), c.end());
-    std::vector<double> e19 = m.relative_error_in_plane, e20 = m.relative_error_out_of_plane;
-    std::sort(e19.begin(), e19.end());
-    std::sort(e20.begin(), e20.end());
+    const std::vector<double> c = sorted(m.final_costs);
     std::snprintf(line, sizeof line, "  %-8s  %5.1f %%  %11.3e  %11.3e  %12.0f  %8.4f  %12.3e  %12.3e\n",
-                  ToString(m.method), 100 * m.success_rate, c[c.size() / 2], c.back(),
-                  m.median_evaluations, m.seconds_per_fit, e19[e19.size() / 2], e20[e20.size() / 2]);
+                  ToString(m.method), 100 * m.success_rate, median(c), c.empty() ? NAN : c.back(),
+                  m.median_evaluations, m.seconds_per_fit, median(sorted(m.relative_error_in_plane)),
+                  median(sorted(m.relative_error_out_of_plane)));
     o << line;
   }
   std::snprintf(line, sizeof line,

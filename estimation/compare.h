@@ -39,9 +39,9 @@ struct MethodRun {
 
   template <class Archive>  // keyed by method in ComparisonReport
   void Serialize(Archive* a) {
+    a->Visit("final_costs", &final_costs);
     a->Derived("starts", final_costs.size());
     a->Visit("success_rate", &success_rate);
-    a->Visit("final_costs", &final_costs);
     a->Visit("evaluations", &evaluations);
     a->Visit("seconds", &seconds);
     a->Visit("seconds_per_fit", &seconds_per_fit);

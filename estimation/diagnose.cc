@@ -506,7 +506,7 @@ std::string DiagnosisReport::FullReport() const {
   o << "ringid diagnose: verdict " << EffectName(verdict);
   if (!indistinguishable.empty()) {
     o << " (indistinguishable:";
-    for (const Effect* e : indistinguishable) o << " " << e->name();
+    for (const Effect* e : indistinguishable) o << " " << EffectName(e);
     o << ")";
   }
   o << "\n  " << explanation << "\n\n";
@@ -530,10 +530,10 @@ std::string DiagnosisReport::FullReport() const {
   o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2\n";
   for (const EffectFit& f : ranking) {
     if (!f.ok) {
-      o << "  " << f.effect->name() << ": not fitted: " << f.note << "\n";
+      o << "  " << EffectName(f.effect) << ": not fitted: " << f.note << "\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", f.effect->name(), f.chi2,
+    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", EffectName(f.effect), f.chi2,
                   f.lrt_p, f.aic, 100 * f.shrink,
                   f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-",
                   f.supported ? "  supported" : "");

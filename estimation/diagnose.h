@@ -3,6 +3,7 @@
 #ifndef RINGID_ESTIMATION_DIAGNOSE_H_
 #define RINGID_ESTIMATION_DIAGNOSE_H_
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -63,16 +64,19 @@ struct ModeMisfit {
   }
 };
 
+inline constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN();
+
 struct EffectFit {
   const Effect* effect = nullptr;
   bool ok = false;
   std::string note;                      // why not, when !ok
   int extra_parameters = 0;
-  double chi2 = 0;                       // 2 x cost
-  double lrt_statistic = 0, lrt_p = 1;   // against the baseline
-  double aic = 0, bic = 0;
-  double gap_after = 0;                  // chi2 in excess of its dof
-  double shrink = 0;                     // 1 - gap_after / gap_before
+  // NaN (null in reports) for an effect that was not fitted.
+  double chi2 = kNotAvailable;                         // 2 x cost
+  double lrt_statistic = kNotAvailable, lrt_p = kNotAvailable;  // against the baseline
+  double aic = kNotAvailable, bic = kNotAvailable;
+  double gap_after = kNotAvailable;                    // chi2 in excess of its dof
+  double shrink = kNotAvailable;                       // 1 - gap_after / gap_before
   bool supported = false;
   std::map<std::string, double> values;  // fitted effect parameters
   std::vector<double> mode_chi2;         // per measured mode

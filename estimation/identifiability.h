@@ -71,10 +71,10 @@ struct ParameterIdentifiability {
     a->Visit("reason", &reason);
     a->Visit("std", &std);
     a->Visit("wald_95", &wald_95);
+    a->Visit("profile", &profile_95);
     a->Derived("profile_95", profile_95.computed
                                  ? std::optional(std::pair(profile_95.lower, profile_95.upper))
                                  : std::nullopt);
-    a->Visit("profile", &profile_95);
   }
 };
 

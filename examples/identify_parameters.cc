@@ -1,16 +1,20 @@
 // Loads a dataset, identifies the rigid-ring parameters and prints each with
-// its standard deviation. Usage: identify_parameters DATASET.json
+// its standard deviation; with a second argument, writes the typed report
+// there as ringid identify --output does. Usage: identify_parameters DATASET.json [REPORT.json]
 #include <cstdio>
+#include <fstream>
 
 #include <ringid/datasets/dataset.h>
 #include <ringid/estimation/identify.h>
+#include <ringid/report/report.h>
 
 int main(int argc, char** argv) {
   ringid::Dataset dataset;
   ringid::LoadError error;
-  if (argc != 2 || !ringid::LoadDataset(argv[1], &dataset, &error)) {
-    std::fprintf(stderr, "%s\n", argc == 2 ? error.OneLine().c_str()
-                                           : "usage: identify_parameters DATASET.json");
+  if (argc < 2 || argc > 3 || !ringid::LoadDataset(argv[1], &dataset, &error)) {
+    std::fprintf(stderr, "%s\n", argc == 2 || argc == 3
+                                     ? error.OneLine().c_str()
+                                     : "usage: identify_parameters DATASET.json [REPORT.json]");
     return 2;
   }
   ringid::IdentifySummary summary;
@@ -20,6 +24,12 @@ int main(int argc, char** argv) {
     if (!e.free) continue;
     std::printf("%-10s %12.6g", ringid::ParamName(e.param), e.value);
     if (e.std) std::printf(" +- %.2g\n", *e.std); else std::printf("  (std not defined)\n");
+  }
+  if (argc == 3) {
+    const ringid::IdentifyReport report{
+        ringid::MakeProvenance(argc, argv, {{"dataset", argv[1]}}, std::nullopt),
+        {dataset.name, summary}};
+    std::ofstream(argv[2]) << ringid::ReportText(report);
   }
   return summary.status.ok() ? 0 : 1;
 }

@@ -9,7 +9,8 @@
 //   a->VisitIfSet("name", &optional);  // written only when set; absent reads as unset
 //   a->VisitKeyed("name", &list, &T::key);  // a list as an object keyed by a member
 //   a->Group("name", [&](auto* g) { g->Visit(...); });  // a nested object
-//   a->Derived("name", value);         // computed from other fields: written, skipped on reading
+//   a->Derived("name", value);         // computed from the fields listed before it: written,
+//                                      // and on reading checked against them
 //
 // Types: bool, integers, double (null where not finite), std::string, enums
 // with EnumNames, pointers to objects with PointerNames (an effect or "none"), std::complex<double> ({re, im}), std::optional (null),
@@ -215,9 +216,16 @@ class JsonReader {
     fields(&group);
     group.Finish();
   }
+  // A derived field must be there and agree with the fields read before it.
   template <class T>
-  void Derived(const char* name, const T&) {
-    seen_.insert(name);
+  void Derived(const char* name, const T& value) {
+    const Json* field = Field(name);
+    if (!ok()) return;
+    if (!field) {
+      Fail(Path(name) + ": missing");
+    } else if (*field != JsonWriter::ToJson(value)) {
+      Fail(Path(name) + ": does not agree with the fields it is derived from");
+    }
   }
 
   // After Serialize: every key of the object must have been a field.

@@ -78,7 +78,7 @@ std::string CampaignTable(const CampaignBody& c) {
                : "| dataset | verdict | indistinguishable | gap before | gap after | shrink | seconds |\n"
                  "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const CampaignRow& r : c.datasets) {
-    std::string status = r.status.ok() ? (r.converged ? "converged" : "not converged")
+    std::string status = r.status.ok() ? (r.converged.value_or(false) ? "converged" : "not converged")
                                        : std::string("failed: ") + r.status.message;
     table += "| " + r.dataset + " | ";
     if (identify) {
@@ -87,7 +87,7 @@ std::string CampaignTable(const CampaignBody& c) {
                number(r.relative_error_out_of_plane_eq20, "%.3e");
     } else {
       std::string group;
-      for (const Effect* g : r.indistinguishable) group += (group.empty() ? "" : "+") + std::string(g->name());
+      for (const Effect* g : r.indistinguishable.value_or(std::vector<const Effect*>{})) group += (group.empty() ? "" : "+") + std::string(EffectName(g));
       table += (r.status.ok() && r.verdict ? std::string(EffectName(*r.verdict)) : status) + " | " +
                group + " | " +
                number(r.gap_before, "%.4g") + " | " + number(r.gap_after, "%.4g") + " | " +

@@ -127,10 +127,10 @@ struct CampaignRow {
   double seconds = 0;
   // identify
   std::optional<double> cost, relative_error_in_plane_eq19, relative_error_out_of_plane_eq20;
-  bool converged = false;
+  std::optional<bool> converged;
   // diagnose
   std::optional<const Effect*> verdict;  // nullptr: none
-  std::vector<const Effect*> indistinguishable;
+  std::optional<std::vector<const Effect*>> indistinguishable;
   std::optional<double> gap_before, gap_after, shrink;
 
   template <class Archive>
@@ -142,9 +142,9 @@ struct CampaignRow {
     a->VisitIfSet("cost", &cost);
     a->VisitIfSet("relative_error_in_plane_eq19", &relative_error_in_plane_eq19);
     a->VisitIfSet("relative_error_out_of_plane_eq20", &relative_error_out_of_plane_eq20);
-    a->Visit("converged", &converged);
+    a->VisitIfSet("converged", &converged);
     a->VisitIfSet("verdict", &verdict);
-    a->Visit("indistinguishable", &indistinguishable);
+    a->VisitIfSet("indistinguishable", &indistinguishable);
     a->VisitIfSet("gap_before", &gap_before);
     a->VisitIfSet("gap_after", &gap_after);
     a->VisitIfSet("shrink", &shrink);

@@ -36,7 +36,7 @@ class SchemaWriter {
   }
   template <class T>
   void Derived(const char* name, const T&) {
-    Field<T>(name, " (derived from the fields above; ignored when read)");
+    Field<T>(name, " (derived from the fields above, and checked against them when read)");
   }
 
   // The lines of T's fields under `path`, or one line for a plain type.

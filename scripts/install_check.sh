@@ -27,7 +27,9 @@ for project in examples "$work/snippet"; do
   cmake -S "$project" -B "$work/build-$name" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
   cmake --build "$work/build-$name" -j"$(nproc)" > /dev/null
 done
-"$work/build-examples/identify_parameters" datasets/paper/table1.json
+"$work/build-examples/identify_parameters" datasets/paper/table1.json "$work/report.json"
+# The report written through the installed headers reads back in the tool.
+"$prefix/bin/ringid" report --input="$work/report.json" --output="$work/report.html" > /dev/null
 "$work/build-snippet/snippet" datasets/paper/table1.json
 # The installed executable runs too.
 "$prefix/bin/ringid" help > /dev/null

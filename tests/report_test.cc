@@ -85,6 +85,15 @@ TEST(ReportTest, DiagnoseAndCampaignRoundTripByteForByte) {
   ASSERT_EQ(r.status, 0) << r.err;
   ExpectRoundTrip<ringid::DiagnoseReport>(out + "/lug.json");
   ExpectRoundTrip<ringid::CampaignReport>(out + "/campaign.json");
+  // The fields of docs/conventions.md §6, written out by hand.
+  const Json lug = Json::parse(ReadFile(out + "/lug.json"));
+  for (const char* key : {"gap_before", "where", "ranking", "verdict"}) EXPECT_TRUE(lug.contains(key)) << key;
+  for (const Json& w : lug["where"]) EXPECT_TRUE(w.contains("label") && w.contains("worst_component"));
+  for (const Json& f : lug["ranking"]) {
+    for (const char* key : {"effect", "gap_after", "shrink", "evidence"}) EXPECT_TRUE(f.contains(key)) << key;
+  }
+  EXPECT_EQ(lug["verdict"]["effect"], "lug_coupling");
+  EXPECT_TRUE(lug["verdict"]["indistinguishable"].is_array());
   // Effects are read by name, "none" included; anything else is refused.
   Json diagnosis = Json::parse(ReadFile(out + "/lug.json"));
   ringid::DiagnoseReport report;
@@ -226,6 +235,51 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
   EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";
+}
+
+// The fields docs/conventions.md §6 promises other people's scripts, written
+// out here by hand, found in reports the tool writes.
+TEST(ReportTest, ReportsCarryTheFieldsOfTheContract) {
+  const auto has = [](const Json& j, const std::vector<std::string>& keys, const std::string& what) {
+    for (const std::string& k : keys) EXPECT_TRUE(j.contains(k)) << what << ": " << k;
+  };
+  const Json identify = Json::parse(ReadFile(Made("identify --starts=1 --shape_convention=paper --dataset=" +
+                                                      Source("datasets/paper/inertia_recovery.json"),
+                                                  "contract-identify.json")));
+  has(identify, {"method", "converged", "cost", "evaluations", "seconds", "parameters", "covariance", "modes"},
+      "identify");
+  for (const auto& [name, p] : identify["parameters"].items()) {
+    has(p, {"value", "free", "std", "identifiable"}, "identify parameters." + name);
+    EXPECT_TRUE(p["identifiable"] == "yes" || p["identifiable"] == "practically_no" || p["identifiable"] == "no");
+  }
+  has(identify["covariance"], {"names", "matrix", "rank"}, "identify covariance");
+  for (const Json& m : identify["modes"]) has(m, {"label", "measured_hz", "model_hz", "mac"}, "identify modes");
+
+  const Json predict = Json::parse(
+      ReadFile(Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "contract-predict.json")));
+  ASSERT_EQ(predict["modes"].size(), 7u);
+  for (const Json& m : predict["modes"]) {
+    has(m, {"label", "plane", "model_hz", "damping_ratio", "shape"}, "predict modes");
+    EXPECT_FALSE(m["shape"].empty());
+    for (const auto& [dof, value] : m["shape"].items()) EXPECT_TRUE(ringid::ParseDof(dof)) << dof;
+  }
+
+  const Json identifiability = Json::parse(ReadFile(
+      Made("identifiability --starts=1 --dataset=" + Source("datasets/paper/table1.json"), "contract-ident.json")));
+  has(identifiability, {"rank", "condition_number", "singular_values", "parameters", "combinations"},
+      "identifiability");
+  for (const auto& [name, p] : identifiability["parameters"].items()) {
+    has(p, {"identifiable", "reason", "std", "wald_95", "profile_95"}, "identifiability parameters." + name);
+  }
+  ASSERT_FALSE(identifiability["combinations"].empty());
+  for (const Json& c : identifiability["combinations"]) has(c, {"text", "singular_value"}, "combinations");
+
+  const Json compare = Json::parse(ReadFile(
+      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"), "contract-compare.json")));
+  for (const char* method : {"lm", "simplex"}) {
+    has(compare["methods"][method], {"starts", "success_rate", "final_costs", "evaluations", "seconds_per_fit"},
+        std::string("compare ") + method);
+  }
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ void IdentifyTable(const std::vector<CampaignRow>& datasets, Page* page) {
   std::vector<Row> rows;
   for (const CampaignRow& d : datasets) {
     rows.push_back({TextCell(d.dataset), NameCell(d.status.outcome),
-                    OptionalTextCell(d.status.message), YesNoCell(d.converged),
+                    OptionalTextCell(d.status.message), YesNoCell(d.converged.value_or(false)),
                     NumberCell(d.cost), NumberCell(d.relative_error_in_plane_eq19),
                     NumberCell(d.relative_error_out_of_plane_eq20),
                     NumberCell(d.seconds), TextCell(d.report_file)});
@@ -35,7 +35,7 @@ void DiagnoseTable(const std::vector<CampaignRow>& datasets, Page* page) {
   for (const CampaignRow& d : datasets) {
     rows.push_back({TextCell(d.dataset), NameCell(d.status.outcome),
                     OptionalTextCell(d.status.message), TextCell(d.verdict ? EffectName(*d.verdict) : "–"),
-                    ListCell(EffectNames(d.indistinguishable)), NumberCell(d.gap_before),
+                    ListCell(EffectNames(d.indistinguishable.value_or(std::vector<const Effect*>{}))), NumberCell(d.gap_before),
                     NumberCell(d.gap_after), PercentCell(d.shrink), NumberCell(d.seconds),
                     TextCell(d.report_file)});
   }
