@@ -20,6 +20,7 @@
 #include "apps/campaign.h"
 #include "apps/html_report.h"
 #include "apps/progress.h"
+#include "apps/help.h"
 #include "apps/reports.h"
 #include "apps/schema_doc.h"
 #include "report/report.h"
@@ -76,57 +77,6 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;   // the analysis ran but failed numerically
 constexpr int kExitUsage = 2;     // bad input: file, field or flag
-
-const char kHelp[] =
-    "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
-    "\n"
-    "usage: ringid COMMAND [--flag=value ...]\n"
-    "\n"
-    "commands:\n"
-    "  help       this text\n"
-    "  predict    modes of a parameter set, as a table and JSON\n"
-    "             --parameters=FILE | --dataset=FILE  [--effects=LIST] [--output=FILE]\n"
-    "  identify   fit parameters to a dataset, with covariance and identifiability\n"
-    "             --dataset=FILE [--method=lm|simplex] [--starts=N] [--seed=N]\n"
-    "             [--weighting=sigma|relative] [--relative_sigma=X] [--shapes=BOOL]\n"
-    "             [--damping=BOOL] [--shape_convention=contract|paper]\n"
-    "             [--effects=LIST] [--output=FILE] [--save_parameters=FILE]\n"
-    "  identifiability  what the data determine at the fitted point: rank,\n"
-    "             classes, Wald and profile intervals, free combinations,\n"
-    "             collinear pairs, identifiable subset, experiment advice\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  compare    Downhill Simplex and Levenberg-Marquardt from the same --starts=N\n"
-    "             starts: success rate, final costs, evaluations, time per fit\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  simulate   a dataset measured from a parameter set, optionally with effects,\n"
-    "             and a separate truth file\n"
-    "             --parameters=FILE [--effects=LIST] [--set=NAME=VALUE,...]\n"
-    "             [--frequency_noise=X] [--damping_noise=X] [--shape_noise=X]\n"
-    "             [--shift=X] [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
-    "  diagnose   the gap between the calibrated baseline and the data: where it\n"
-    "             lies, which effect explains it, how far it shrinks; --effects=LIST\n"
-    "             puts effects in the baseline, and the others are tried on top\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  campaigns: identify and diagnose take --dataset=FILE,DIR,... (a directory\n"
-    "             stands for its *.json) with --output_dir=DIR [--jobs=N] [--shard=I/N];\n"
-    "             one report per dataset in DIR, a summary table and DIR/campaign.json\n"
-    "             (campaign.I-of-N.json for a shard)\n"
-    "  bench      accuracy and conditioning suites, run from the repository root\n"
-    "             --suite=paper|synthetic|conditioning|diagnosis [--replicates=N] [--seed=N]\n"
-    "             [--output=FILE.json] [--markdown=FILE.md]\n"
-    "  schema     every report's fields and their types, as Markdown (docs/reports.md)\n"
-    "  report     any JSON report of ringid as one self-contained HTML page: tables\n"
-    "             and figures (SVG drawn by gnuplot, package gnuplot-nox)\n"
-    "             --input=REPORT.json --output=FILE.html [--figures_dir=DIR]\n"
-    "\n"
-    "effects: anisotropic_sidewall, hub_compliance, contact_yaw_stiffness,\n"
-    "         axle_torsion, sensor_mass, lug_coupling\n"
-    "\n"
-    "exit status:\n"
-    "  0  success\n"
-    "  1  the run finished but the analysis failed (the report says why)\n"
-    "  2  bad input: unreadable or malformed file, unknown or bad flag,\n"
-    "     unwritable --output; one line on stderr, nothing written\n";
 
 int Usage(const std::string& line) {
   std::fprintf(stderr, "ringid: %s\n", line.c_str());
@@ -373,6 +323,19 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   return all_ok ? kExitOk : kExitFailure;
 }
 
+// The end of an analysis of one dataset: bad input is exit 2; otherwise its
+// text, its report of type R at --output, and exit 0 or 1 by its status.
+template <class R, class Result>
+int Finish(int argc, char** argv, const Dataset& d, const Result& r) {
+  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
+  std::printf("%s", r.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, ReportText(R{ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
+    if (rc != kExitOk) return rc;
+  }
+  return r.status.ok() ? kExitOk : kExitFailure;
+}
+
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
   std::set<std::string> allowed = kFitFlags;
@@ -431,14 +394,7 @@ int IdentifiabilityCommand(int argc, char** argv) {
   const RigidRingModel model(effects);
   IdentifiabilityReport r;
   AnalyzeIdentifiability(model, d, o, &r);
-  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
-  std::printf("%s", r.FullReport().c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, ReportText(IdentifiabilityFile{
-                                           ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
-    if (rc != kExitOk) return rc;
-  }
-  return r.status.ok() ? kExitOk : kExitFailure;
+  return Finish<IdentifiabilityFile>(argc, argv, d, r);
 }
 
 int CompareCommand(int argc, char** argv) {
@@ -455,14 +411,7 @@ int CompareCommand(int argc, char** argv) {
     o.on_fit = [&] { progress.Add(); };
     CompareMethods(model, d, o, &r);
   }
-  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
-  std::printf("%s", r.FullReport().c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output,
-                         ReportText(CompareReport{ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
-    if (rc != kExitOk) return rc;
-  }
-  return r.status.ok() ? kExitOk : kExitFailure;
+  return Finish<CompareReport>(argc, argv, d, r);
 }
 
 int SimulateCommand(int argc, char** argv) {
@@ -583,14 +532,7 @@ int DiagnoseCommand(int argc, char** argv) {
   const RigidRingModel baseline(effects);
   DiagnosisReport r;
   Diagnose(baseline, d, o, &r);
-  if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
-  std::printf("%s", r.FullReport().c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output,
-                         ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed), {d.name, r}}));
-    if (rc != kExitOk) return rc;
-  }
-  return r.status.ok() ? kExitOk : kExitFailure;
+  return Finish<DiagnoseReport>(argc, argv, d, r);
 }
 
 int BenchCommand(int argc, char** argv) {
@@ -669,7 +611,7 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage("see 'ringid help'");
   const std::string command = argc > 1 ? argv[1] : "help";
   if (command == "help" || command == "--help" || command == "-h") {
-    std::fputs(ringid::kHelp, stdout);
+    std::fputs(ringid::Help().c_str(), stdout);
     return 0;
   }
   if (command == "predict") return ringid::Predict(argc, argv);
