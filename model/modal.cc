@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <Eigen/Eigenvalues>
@@ -15,7 +16,8 @@ using internal::AssignMaxScore;
 
 namespace {
 
-constexpr int kMaxState = 2 * kNumDofs;
+constexpr int kMaxLags = 2;
+constexpr int kMaxState = 2 * kNumDofs + kMaxLags;
 using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxState,
                           kMaxState>;
 using CMat = Eigen::Matrix<std::complex<double>, Eigen::Dynamic,
@@ -39,6 +41,27 @@ double Bilinear(const CVec& w, const MechanicalSystem::Matrix& K,
   return std::abs(sum);
 }
 
+int Index(const std::vector<int>& dofs, Dof d) {
+  const auto it = std::find(dofs.begin(), dofs.end(), static_cast<int>(d));
+  return it == dofs.end() ? -1 : static_cast<int>(it - dofs.begin());
+}
+
+// The lags whose force acts on the block; only at speed are they states.
+std::vector<const MechanicalSystem::SlipLag*> BlockLags(const MechanicalSystem& s,
+                                                        const std::vector<int>& dofs) {
+  std::vector<const MechanicalSystem::SlipLag*> lags;
+  if (!(s.speed() > 0)) return lags;
+  for (const auto& lag : s.lags()) {
+    for (const auto& [dof, f] : lag.force) {
+      if (Index(dofs, dof) >= 0) {
+        lags.push_back(&lag);
+        break;
+      }
+    }
+  }
+  return lags;
+}
+
 // Solves one block of coupled degrees of freedom and appends its modes.
 bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
                 ModalSolution* out) {
@@ -51,13 +74,45 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
       K(a, b) = s.K()(dofs[a], dofs[b]);
     }
   }
+  const auto lags = BlockLags(s, dofs);
+  const int m = static_cast<int>(lags.size());
+  if (m > kMaxLags) {
+    out->error = "more slip lags than the state vector holds";
+    return false;
+  }
   Eigen::PartialPivLU<Mat> lu(M);
   const Mat Minv = lu.inverse();
-  // Eq. (13): A = [[0, I], [-M^-1 K, -M^-1 C]].
-  Mat A = Mat::Zero(2 * k, 2 * k);
-  A.topRightCorner(k, k).setIdentity();
-  A.bottomLeftCorner(k, k) = -Minv * K;
-  A.bottomRightCorner(k, k) = -Minv * C;
+  // Eq. (13): A = [[0, I], [-M^-1 K, -M^-1 C]]; rolling, docs/rolling.md
+  // eq. (R8) appends the slip states zeta, whose force replaces the
+  // standing stiffness (K / sigma) f d^T that K holds.
+  Mat A = Mat::Zero(2 * k + m, 2 * k + m);
+  Mat F = Mat::Zero(k, m);
+  for (int j = 0; j < m; ++j) {
+    const auto& lag = *lags[j];
+    const double v = s.speed() / lag.relaxation_length;
+    A(2 * k + j, 2 * k + j) = -v;
+    for (const auto& [dof, d] : lag.velocity) {
+      const int b = Index(dofs, dof);
+      if (b >= 0) A(2 * k + j, k + b) = -d / lag.relaxation_length;
+    }
+    for (const auto& [dof, e] : lag.heading) {
+      const int b = Index(dofs, dof);
+      if (b >= 0) A(2 * k + j, b) = v * e;
+    }
+    for (const auto& [dof, f] : lag.force) {
+      const int a = Index(dofs, dof);
+      if (a < 0) continue;
+      F(a, j) = f * lag.stiffness;
+      for (const auto& [dof_b, d] : lag.velocity) {
+        const int b = Index(dofs, dof_b);
+        if (b >= 0) K(a, b) -= lag.stiffness / lag.relaxation_length * f * d;
+      }
+    }
+  }
+  A.block(0, k, k, k).setIdentity();
+  A.block(k, 0, k, k) = -Minv * K;
+  A.block(k, k, k, k) = -Minv * C;
+  if (m > 0) A.block(k, 2 * k, k, m) = Minv * F;
   if (!A.allFinite()) {
     out->error = "state matrix is not finite";
     return false;
@@ -93,9 +148,11 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
   const CMat Minv_T = Minv.transpose().cast<std::complex<double>>();
 
   std::vector<Mode> modes;
-  for (int j = 0; j < 2 * k; ++j) {
+  for (int j = 0; j < 2 * k + m; ++j) {
     const std::complex<double> lam = lambda[j];
-    if (!(lam.imag() > 1e-10 * std::max(1.0, std::abs(lam)))) continue;
+    const double tiny = 1e-10 * std::max(1.0, std::abs(lam));
+    if (std::abs(lam.imag()) <= tiny) out->real_roots.push_back(lam.real());
+    if (!(lam.imag() > tiny)) continue;
     Mode mode;
     mode.eigenvalue = lam;
     mode.frequency_hz = lam.imag() / (2 * M_PI);
@@ -103,7 +160,8 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
     CVec v = V.col(j).head(k);
     // For w^T (lambda^2 M + lambda C + K) = 0: w = M^-T y2 (see docs/model.md
     // section 9).
-    CVec w = have_left ? CVec(Minv_T * Y.row(j).tail(k).transpose()) : CVec(v.conjugate());
+    CVec w = have_left ? CVec(Minv_T * Y.row(j).segment(k, k).transpose())
+                       : CVec(v.conjugate());
     mode.energy.fill(0);
     double labelled = 0;
     for (ModeLabel l : labels) {
@@ -201,6 +259,18 @@ ModalSolution SolveModes(const MechanicalSystem& s) {
       }
     }
   }
+  // Rolling, a lag joins every degree of freedom it touches.
+  for (const auto& lag : s.speed() > 0 ? s.lags() : std::vector<MechanicalSystem::SlipLag>{}) {
+    int first = -1;
+    for (const auto* part : {&lag.force, &lag.velocity, &lag.heading}) {
+      for (const auto& [dof, c] : *part) {
+        const int d = static_cast<int>(dof);
+        if (!s.active(dof)) continue;
+        if (first < 0) first = d;
+        parent[Root(parent, d)] = Root(parent, first);
+      }
+    }
+  }
   for (int r : active) {
     if (Root(parent, r) != r) continue;
     std::vector<int> dofs;
@@ -210,15 +280,118 @@ ModalSolution SolveModes(const MechanicalSystem& s) {
     if (!SolveBlock(s, dofs, &out)) {
       out.modes.clear();
       out.vanished.clear();
+      out.real_roots.clear();
       return out;
     }
   }
+  std::sort(out.real_roots.begin(), out.real_roots.end());
   std::sort(out.modes.begin(), out.modes.end(),
             [](const Mode& a, const Mode& b) {
               return a.frequency_hz < b.frequency_hz;
             });
   out.ok = true;
   return out;
+}
+
+namespace {
+
+// |a^H b|^2 / (|a|^2 |b|^2): the complex MAC of two displacement shapes.
+double ComplexMac(const ShapeVector& a, const ShapeVector& b) {
+  const double ab = std::norm(a.dot(b));
+  const double aa = a.squaredNorm(), bb = b.squaredNorm();
+  return aa > 0 && bb > 0 ? ab / (aa * bb) : 0;
+}
+
+// Gives `next` the labels of `prev` by shape. Strict: every pair must look
+// alike (MAC >= 0.8) and each eigenvalue must have moved less than half the
+// distance from its predecessor to that one's nearest neighbour of shared
+// support. Not strict: the best assignment by shape. A mode with no
+// predecessor (a real pair turned oscillatory) takes a label that had
+// vanished, its own by energy where it can.
+bool Follow(const ModalSolution& prev, ModalSolution* next, bool strict) {
+  const int np = static_cast<int>(prev.modes.size());
+  const int nn = static_cast<int>(next->modes.size());
+  if (np == 0 || nn == 0) return nn == np;
+  Eigen::MatrixXd mac(nn, np);
+  for (int i = 0; i < nn; ++i) {
+    for (int j = 0; j < np; ++j) mac(i, j) = ComplexMac(next->modes[i].shape, prev.modes[j].shape);
+  }
+  std::vector<int> pick(nn, -1);
+  if (nn <= np) {
+    pick = AssignMaxScore(mac);
+  } else {
+    const std::vector<int> back = AssignMaxScore(mac.transpose());
+    for (int j = 0; j < np; ++j) {
+      if (back[j] >= 0) pick[back[j]] = j;
+    }
+  }
+  for (int i = 0; i < nn; ++i) {
+    const int j = pick[i];
+    if (j < 0 || !strict) continue;
+    if (mac(i, j) < 0.8) return false;
+    double gap = std::numeric_limits<double>::infinity();
+    for (int o = 0; o < np; ++o) {
+      if (o == j) continue;
+      const bool shared = ((prev.modes[o].shape.cwiseAbs().array() > 0) &&
+                           (prev.modes[j].shape.cwiseAbs().array() > 0)).any();
+      if (shared) gap = std::min(gap, std::abs(prev.modes[o].eigenvalue - prev.modes[j].eigenvalue));
+    }
+    if (std::abs(next->modes[i].eigenvalue - prev.modes[j].eigenvalue) > 0.5 * gap) return false;
+  }
+  std::vector<ModeLabel> free = prev.vanished;
+  std::vector<bool> used(np, false);
+  for (int i = 0; i < nn; ++i) {
+    if (pick[i] < 0) continue;
+    next->modes[i].label = prev.modes[pick[i]].label;
+    used[pick[i]] = true;
+  }
+  for (int i = 0; i < nn; ++i) {
+    if (pick[i] >= 0) continue;
+    auto it = std::find(free.begin(), free.end(), next->modes[i].label);
+    if (it == free.end()) {
+      it = std::find_if(free.begin(), free.end(),
+                        [&](ModeLabel l) { return LabelPlane(l) == next->modes[i].plane(); });
+    }
+    if (it == free.end()) return false;
+    next->modes[i].label = *it;
+    free.erase(it);
+  }
+  for (int j = 0; j < np; ++j) {
+    if (!used[j]) free.push_back(prev.modes[j].label);
+  }
+  next->vanished = free;
+  return true;
+}
+
+}  // namespace
+
+ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
+                           double speed) {
+  ModalSolution prev = SolveModes(assemble(0));
+  if (!prev.ok || !(speed > 0)) return prev;
+  // Below this step the assignment by shape is taken as it is (an exact
+  // degeneracy, where continuation has no direction to follow).
+  const double finest = speed / 256;
+  double at = 0, step = speed;
+  while (at < speed) {
+    const double to = std::min(speed, at + step);
+    ModalSolution next = SolveModes(assemble(to));
+    if (!next.ok) return next;
+    const bool coarse = step <= finest;
+    if (Follow(prev, &next, !coarse)) {
+      prev = std::move(next);
+      at = to;
+      step *= 2;
+    } else if (coarse) {
+      next.ok = false;
+      next.error = "the modes at " + std::to_string(to) + " m/s cannot be matched to those at " +
+                   std::to_string(at) + " m/s";
+      return next;
+    } else {
+      step /= 2;
+    }
+  }
+  return prev;
 }
 
 }  // namespace ringid

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <complex>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,13 +45,25 @@ struct ModalSolution {
   std::string error;            // why, when !ok
   std::vector<Mode> modes;      // ascending frequency
   std::vector<ModeLabel> vanished;  // labels whose pair of roots is real
+  // Roots without oscillation (1/s), ascending: rolling, the contact slip
+  // lags and any overdamped pair; never paired with a measured mode.
+  std::vector<double> real_roots;
 
   const Mode* Find(ModeLabel label) const;
 };
 
 // Solves each block of coupled active degrees of freedom, and labels its modes
 // by the one-to-one assignment that maximises the product of energy shares.
+// At speed, the slip states of system.lags() join the state vector
+// (docs/rolling.md) and the labels are by energy as at standstill.
 ModalSolution SolveModes(const MechanicalSystem& system);
+
+// The modes at `speed` of the systems assemble(v), labelled by continuation
+// from standstill: each step in speed pairs modes by shape (MAC) and keeps
+// each eigenvalue nearer its predecessor than to the predecessor's
+// neighbours, halving the step until it does (docs/rolling.md §5).
+ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
+                           double speed);
 
 }  // namespace ringid
 

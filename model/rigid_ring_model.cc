@@ -5,6 +5,31 @@
 #include <string>
 
 namespace ringid {
+namespace {
+
+// The terms of steady rotation at Omega (docs/rolling.md, eqs. R3-R5): the
+// sidewall damping turns with the wheel (circulatory stiffness), and the
+// spinning belt is a gyroscope of polar inertia M(theta_b, theta_b), which
+// includes what effects add to it.
+void AddRolling(double c_bx, double c_bz, double c_bgamma, double c_bpsi,
+                double omega, MechanicalSystem* s) {
+  // On the sidewall deformation (belt minus hub), eqs. (1), (3).
+  auto circulate = [&](Dof row_b, Dof row_a, Dof col_b, Dof col_a, double v) {
+    s->AddStiffness(std::nullopt, row_b, col_b, v);
+    s->AddStiffness(std::nullopt, row_b, col_a, -v);
+    s->AddStiffness(std::nullopt, row_a, col_b, -v);
+    s->AddStiffness(std::nullopt, row_a, col_a, v);
+  };
+  circulate(Dof::kXb, Dof::kXa, Dof::kZb, Dof::kZa, c_bz * omega);
+  circulate(Dof::kZb, Dof::kZa, Dof::kXb, Dof::kXa, -c_bx * omega);
+  s->AddStiffness(std::nullopt, Dof::kGammaB, Dof::kPsiB, c_bpsi * omega);
+  s->AddStiffness(std::nullopt, Dof::kPsiB, Dof::kGammaB, -c_bgamma * omega);
+  const double spin = s->M()(static_cast<int>(Dof::kThetaB), static_cast<int>(Dof::kThetaB));
+  s->AddVelocityCoupling(Dof::kGammaB, Dof::kPsiB, spin * omega);
+  s->AddVelocityCoupling(Dof::kPsiB, Dof::kGammaB, -spin * omega);
+}
+
+}  // namespace
 
 RigidRingModel::RigidRingModel(std::vector<const Effect*> effects)
     : effects_(std::move(effects)) {
@@ -20,7 +45,7 @@ RigidRingModel::RigidRingModel(std::vector<const Effect*> effects)
 
 std::vector<Param> RigidRingModel::parameters() const { return used_; }
 
-MechanicalSystem RigidRingModel::Assemble(const Parameters& p) const {
+MechanicalSystem RigidRingModel::Assemble(const Parameters& p, double speed) const {
   using L = ModeLabel;
   using P = Param;
   MechanicalSystem s;
@@ -41,8 +66,8 @@ MechanicalSystem RigidRingModel::Assemble(const Parameters& p) const {
   s.AddSpring(L::kRotationAntiPhase, p[P::k_btheta],
               {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
   // Contact slip, eqs. (6), (8): K_cx / sigma_cx on x_b - r_e0 theta_b.
-  s.AddSpring(L::kLongitudinal, p[P::K_cx] / p[P::sigma_cx],
-              {{Dof::kXb, 1}, {Dof::kThetaB, -p[P::r_e0]}});
+  const MechanicalSystem::Combination slip_x = {{Dof::kXb, 1}, {Dof::kThetaB, -p[P::r_e0]}};
+  s.AddSlipLag({L::kLongitudinal, p[P::K_cx], p[P::sigma_cx], slip_x, slip_x, {}});
 
   // Out-of-plane, eq. (15) as corrected in docs/model.md: q = [y_b, gamma_b, psi_b].
   s.AddMass(Dof::kYb, p[P::m_b]);
@@ -51,23 +76,27 @@ MechanicalSystem RigidRingModel::Assemble(const Parameters& p) const {
   s.AddDamper(p[P::c_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
   s.AddDamper(p[P::c_bgamma], {{Dof::kGammaB, 1}});
   s.AddDamper(p[P::c_bpsi], {{Dof::kPsiB, 1}});
-  const double kcy = p[P::K_cy] / p[P::sigma_cy];
   const double r_l0 = p[P::r_l0];
-  const double t_0 = p[P::t_0];
   s.AddSpring(L::kLateral, p[P::k_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
-  s.AddSpring(L::kLateral, kcy, {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}});
   s.AddSpring(L::kCamber, p[P::k_bgamma] + r_l0 * p[P::F_cz0],
               {{Dof::kGammaB, 1}});
   s.AddSpring(L::kYaw, p[P::k_bpsi], {{Dof::kPsiB, 1}});
-  // The trail t_0 carries the lateral contact force onto yaw, one way only.
-  s.AddStiffness(L::kLateral, Dof::kPsiB, Dof::kYb, -t_0 * kcy);
-  s.AddStiffness(L::kLateral, Dof::kPsiB, Dof::kGammaB, r_l0 * t_0 * kcy);
+  // Lateral slip: F_cy acts on y_b, on camber through r_l0 and on yaw
+  // through the trail t_0; the slip sees y_b - r_l0 gamma_b and, rolling,
+  // the heading psi_b. At standstill this is S of docs/model.md.
+  s.AddSlipLag({L::kLateral, p[P::K_cy], p[P::sigma_cy],
+                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}, {Dof::kPsiB, -p[P::t_0]}},
+                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}},
+                {{Dof::kPsiB, 1}}});
 
   for (const Effect* e : effects_) e->Apply(p, &s);
+  if (speed > 0) AddRolling(p[P::c_bx], p[P::c_bz], p[P::c_bgamma], p[P::c_bpsi],
+                            speed / p[P::r_e0], &s);
+  s.set_speed(speed);
   return s;
 }
 
-ModalSolution RigidRingModel::Solve(const Parameters& p) const {
+ModalSolution RigidRingModel::Solve(const Parameters& p, double speed) const {
   for (Param q : used_) {
     if (!std::isfinite(p[q])) {
       ModalSolution bad;
@@ -75,7 +104,13 @@ ModalSolution RigidRingModel::Solve(const Parameters& p) const {
       return bad;
     }
   }
-  return SolveModes(Assemble(p));
+  if (!(speed >= 0) || !std::isfinite(speed)) {
+    ModalSolution bad;
+    bad.error = "speed must be finite and not negative";
+    return bad;
+  }
+  if (speed == 0) return SolveModes(Assemble(p));
+  return SolveRolling([&](double v) { return Assemble(p, v); }, speed);
 }
 
 bool RigidRingModel::Has(const Effect* effect) const {

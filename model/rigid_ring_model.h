@@ -17,7 +17,9 @@ class ModalModel {
  public:
   virtual ~ModalModel() = default;
   virtual std::unique_ptr<ModalModel> Clone() const = 0;
-  virtual ModalSolution Solve(const Parameters& p) const = 0;
+  // The modes at standstill, and rolling freely at a forward speed (m/s).
+  ModalSolution Solve(const Parameters& p) const { return Solve(p, 0.0); }
+  virtual ModalSolution Solve(const Parameters& p, double speed_m_s) const = 0;
   // The parameters Solve reads, in catalogue order.
   virtual std::vector<Param> parameters() const = 0;
 };
@@ -26,12 +28,15 @@ class RigidRingModel final : public ModalModel {
  public:
   explicit RigidRingModel(std::vector<const Effect*> effects = {});
 
-  // Eqs. (12) and (15) as corrected in docs/model.md, then each effect.
-  MechanicalSystem Assemble(const Parameters& p) const;
+  // Eqs. (12) and (15) as corrected in docs/model.md, then each effect, then
+  // the terms of rolling at speed_m_s (docs/rolling.md).
+  MechanicalSystem Assemble(const Parameters& p, double speed_m_s = 0) const;
   std::unique_ptr<ModalModel> Clone() const override {
     return std::make_unique<RigidRingModel>(*this);
   }
-  ModalSolution Solve(const Parameters& p) const override;
+  using ModalModel::Solve;
+  // At speed the labels follow the standing ones by continuation.
+  ModalSolution Solve(const Parameters& p, double speed_m_s) const override;
   std::vector<Param> parameters() const override;
   const std::vector<const Effect*>& effects() const { return effects_; }
   bool Has(const Effect* effect) const;

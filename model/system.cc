@@ -39,4 +39,20 @@ void MechanicalSystem::AddStiffness(std::optional<ModeLabel> owner, Dof row,
   if (owner) K_label_[static_cast<int>(*owner)](I(row), I(col)) += v;
 }
 
+void MechanicalSystem::AddVelocityCoupling(Dof row, Dof col, double v) {
+  C_(I(row), I(col)) += v;
+}
+
+void MechanicalSystem::AddSlipLag(SlipLag lag) {
+  const double k = lag.stiffness / lag.relaxation_length;
+  for (const auto& [a, fa] : lag.force) {
+    for (const auto& [b, db] : lag.velocity) {
+      const double v = k * fa * db;
+      K_(I(a), I(b)) += v;
+      K_label_[static_cast<int>(lag.owner)](I(a), I(b)) += v;
+    }
+  }
+  lags_.push_back(std::move(lag));
+}
+
 }  // namespace ringid

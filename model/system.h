@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -18,6 +19,20 @@ class MechanicalSystem {
  public:
   using Matrix = Eigen::Matrix<double, kNumDofs, kNumDofs>;
   using Deformation = std::initializer_list<std::pair<Dof, double>>;
+  using Combination = std::vector<std::pair<Dof, double>>;
+
+  // Eq. (5) linearised about free rolling at speed V (docs/rolling.md): the
+  // slip zeta of one contact direction obeys sigma zeta' + V zeta =
+  // -d^T q' + V e^T q, and its force K zeta acts on q through f. At
+  // standstill zeta = -d^T q / sigma: the stiffness (K / sigma) f d^T.
+  struct SlipLag {
+    ModeLabel owner;
+    double stiffness;           // K_c
+    double relaxation_length;   // sigma_c
+    Combination force;          // f
+    Combination velocity;       // d
+    Combination heading;        // e
+  };
 
   // The seven belt and rim degrees of freedom active; the hub held rigid.
   MechanicalSystem();
@@ -32,6 +47,15 @@ class MechanicalSystem {
   void AddDamper(double c, Deformation d);
   // A single, possibly unsymmetric, stiffness term (the trail coupling of S).
   void AddStiffness(std::optional<ModeLabel> owner, Dof row, Dof col, double v);
+  void AddVelocityCoupling(Dof row, Dof col, double v);  // C(row, col) += v
+  // Adds the lag, and its standstill stiffness to K() and to its owner: K()
+  // is always the standing stiffness; at speed the lag's states replace it.
+  void AddSlipLag(SlipLag lag);
+
+  // The forward speed of free rolling; 0 at standstill.
+  void set_speed(double speed_m_s) { speed_ = speed_m_s; }
+  double speed() const { return speed_; }
+  const std::vector<SlipLag>& lags() const { return lags_; }
 
   const Matrix& M() const { return M_; }
   const Matrix& C() const { return C_; }
@@ -44,6 +68,8 @@ class MechanicalSystem {
   Matrix M_, C_, K_;
   std::array<Matrix, kNumLabels> K_label_;
   std::array<bool, kNumDofs> active_;
+  std::vector<SlipLag> lags_;
+  double speed_ = 0;
 };
 
 }  // namespace ringid
