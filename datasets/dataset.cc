@@ -1,5 +1,6 @@
 #include "datasets/dataset.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -133,20 +134,21 @@ MeasuredMode Mode(const json& j, const std::string& field) {
   return m;
 }
 
-void Check(const json& j, Dataset* d) {
-  if (!j.is_object()) Fail("", "top level must be a JSON object");
-  OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
-                   "modes"});
-  if (!j.contains("format")) Fail("format", "missing");
-  if (String(j["format"], "format") != "ringid-modal-dataset/1") {
-    Fail("format", "must be \"ringid-modal-dataset/1\"");
-  }
+const char kFormat1[] = "ringid-modal-dataset/1";
+const char kFormat2[] = "ringid-modal-dataset/2";
+
+// "name" and "description", required and optional, as in both formats.
+void NameAndDescription(const json& j, Dataset* d) {
   if (!j.contains("name")) Fail("name", "missing");
   d->name = String(j["name"], "name");
   if (d->name.empty()) Fail("name", "must not be empty");
   if (j.contains("description")) {
     d->description = String(j["description"], "description");
   }
+}
+
+// The shared "known", "initial" and "ties" of both formats.
+void SharedValues(const json& j, Dataset* d) {
   if (j.contains("known")) d->known = Values(j["known"], "known");
   if (j.contains("initial")) d->initial = Values(j["initial"], "initial");
   for (const auto& [p, v] : d->initial) {
@@ -180,24 +182,221 @@ void Check(const json& j, Dataset* d) {
       }
     }
   }
-  if (!j.contains("modes")) Fail("modes", "missing");
+}
+
+// The "modes" array at `field` (of condition `condition`), appended to
+// d->modes; a label at most once within it.
+void Modes(const json& j, const std::string& field, int condition,
+           Dataset* d) {
+  if (!j.contains("modes")) Fail(field, "missing");
   const json& modes = j["modes"];
   if (!modes.is_array() || modes.empty()) {
-    Fail("modes", "must be a non-empty array");
+    Fail(field, "must be a non-empty array");
   }
   if (modes.size() > static_cast<size_t>(kMaxModes)) {
-    Fail("modes", "more than " + std::to_string(kMaxModes) +
-                      " modes (one per contract label)");
+    Fail(field, "more than " + std::to_string(kMaxModes) +
+                    " modes (one per contract label)");
   }
   std::set<ModeLabel> seen;
   for (size_t i = 0; i < modes.size(); ++i) {
-    const std::string f = "modes[" + std::to_string(i) + "]";
+    const std::string f = field + "[" + std::to_string(i) + "]";
     d->modes.push_back(Mode(modes[i], f));
+    d->modes.back().condition = condition;
     if (!seen.insert(d->modes.back().label).second) {
       Fail(f + ".label", std::string("label '") +
                              LabelName(d->modes.back().label) +
                              "' appears twice");
     }
+  }
+}
+
+// Format 1 (docs/conventions.md §3): one standing condition.
+void CheckFormat1(const json& j, Dataset* d) {
+  OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
+                   "modes"});
+  if (!j.contains("format")) Fail("format", "missing");
+  if (String(j["format"], "format") != kFormat1) {
+    Fail("format", std::string("must be \"") + kFormat1 + "\" or \"" +
+                       kFormat2 + "\"");
+  }
+  NameAndDescription(j, d);
+  SharedValues(j, d);
+  Modes(j, "modes", 0, d);
+}
+
+// "per_condition": parameter names, each at most once, none shared (top-level
+// known/initial) or tied; kept in catalogue order.
+void PerCondition(const json& j, Dataset* d) {
+  if (!j.is_array()) Fail("per_condition", "must be an array of parameter names");
+  for (size_t i = 0; i < j.size(); ++i) {
+    const std::string f = "per_condition[" + std::to_string(i) + "]";
+    const std::string name = String(j[i], f);
+    const Param p = ParamCalled(name, f);
+    if (d->IsPerCondition(p)) Fail(f, "'" + name + "' is listed twice");
+    for (const char* where : {"known", "initial"}) {
+      const auto& values = std::string(where) == "known" ? d->known : d->initial;
+      if (values.count(p)) {
+        Fail(f, "'" + name + "' is also given in top-level " + where +
+                    ": a per-condition parameter takes its values in each "
+                    "condition's known or initial");
+      }
+    }
+    for (const auto& [from, to] : d->ties) {
+      if (from == p || to == p) {
+        Fail(f, "'" + name + "' is tied (ties." + ParamName(from) +
+                    "): a tied parameter cannot be per-condition");
+      }
+    }
+    d->per_condition.push_back(p);
+  }
+  std::sort(d->per_condition.begin(), d->per_condition.end());
+}
+
+// "priors": one prior per parameter, on neither a known, a tied nor a
+// per-condition parameter.
+void Priors(const json& j, Dataset* d) {
+  if (!j.is_object()) Fail("priors", "must be an object of priors");
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string f = "priors." + it.key();
+    const Param p = ParamCalled(it.key(), f);
+    const json& o = it.value();
+    if (!o.is_object()) Fail(f, "must be an object");
+    OnlyKeys(o, f, {"distribution", "mean", "sigma", "median", "factor_95"});
+    if (!o.contains("distribution")) Fail(f + ".distribution", "missing");
+    const std::string name = String(o["distribution"], f + ".distribution");
+    const auto distribution = FromString<PriorDistribution>(name);
+    if (!distribution) {
+      Fail(f + ".distribution", "must be " + EnumChoices<PriorDistribution>());
+    }
+    const bool normal = *distribution == PriorDistribution::kNormal;
+    const char* center = normal ? "mean" : "median";
+    const char* spread = normal ? "sigma" : "factor_95";
+    for (const char* other : {"mean", "sigma", "median", "factor_95"}) {
+      const std::string key = other;
+      if (o.contains(key) && key != center && key != spread) {
+        Fail(f + "." + other, std::string("not a key of a ") + name +
+                                  " prior (it takes " + center + " and " +
+                                  spread + ")");
+      }
+    }
+    for (const char* key : {center, spread}) {
+      if (!o.contains(key)) Fail(f + "." + key, "missing");
+    }
+    Prior prior;
+    prior.distribution = *distribution;
+    if (normal) {
+      prior.center = Number(o["mean"], f + ".mean");
+      prior.spread = Positive(o["sigma"], f + ".sigma");
+    } else {
+      if (Info(p).domain != Domain::kPositive) {
+        Fail(f + ".distribution",
+             "a lognormal prior needs a positive parameter; '" + it.key() +
+                 "' may be zero or negative");
+      }
+      prior.center = Positive(o["median"], f + ".median");
+      prior.spread = Number(o["factor_95"], f + ".factor_95");
+      if (!(prior.spread > 1)) Fail(f + ".factor_95", "must be greater than 1");
+    }
+    if (d->known.count(p)) {
+      Fail(f, "'" + it.key() + "' is known: a known value needs no prior");
+    }
+    if (d->ties.count(p)) {
+      Fail(f, "'" + it.key() + "' is tied: it takes its value from '" +
+                  ParamName(d->ties.at(p)) + "'; put the prior there");
+    }
+    if (d->IsPerCondition(p)) {
+      Fail(f, "priors on per-condition parameters are not supported");
+    }
+    d->priors[p] = prior;
+  }
+}
+
+// A condition name: letters, digits, '_', '-', '.'.
+bool ValidConditionName(const std::string& name) {
+  if (name.empty()) return false;
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                    (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// One element of "conditions", appended to d->conditions and its modes to
+// d->modes.
+void ReadCondition(const json& j, const std::string& field, Dataset* d) {
+  if (!j.is_object()) Fail(field, "must be an object");
+  OnlyKeys(j, field, {"name", "speed_m_s", "known", "initial", "modes"});
+  Condition c;
+  if (!j.contains("name")) Fail(field + ".name", "missing");
+  c.name = String(j["name"], field + ".name");
+  if (c.name.empty()) Fail(field + ".name", "must not be empty");
+  if (!ValidConditionName(c.name)) {
+    Fail(field + ".name", "'" + c.name +
+                              "' may hold only letters, digits, '_', '-' "
+                              "and '.'");
+  }
+  for (const Condition& before : d->conditions) {
+    if (before.name == c.name) {
+      Fail(field + ".name", "condition '" + c.name + "' appears twice");
+    }
+  }
+  if (j.contains("speed_m_s")) {
+    c.speed_m_s = Number(j["speed_m_s"], field + ".speed_m_s");
+    if (c.speed_m_s < 0) Fail(field + ".speed_m_s", "must not be negative");
+  }
+  for (const char* where : {"known", "initial"}) {
+    if (!j.contains(where)) continue;
+    const std::string f = field + "." + where;
+    auto& values = std::string(where) == "known" ? c.known : c.initial;
+    values = Values(j[where], f);
+    for (const auto& [p, v] : values) {
+      const std::string name = ParamName(p);
+      if (!d->IsPerCondition(p)) {
+        Fail(f + "." + name, "'" + name +
+                                 "' is shared: give it at top level, or list "
+                                 "it in per_condition");
+      }
+      if (&values == &c.initial && c.known.count(p)) {
+        Fail(f + "." + name, "also given in known");
+      }
+    }
+  }
+  const int index = static_cast<int>(d->conditions.size());
+  d->conditions.push_back(c);
+  Modes(j, field + ".modes", index, d);
+}
+
+// Format 2 (docs/conventions.md §7): several conditions, priors.
+void CheckFormat2(const json& j, Dataset* d) {
+  d->format = 2;
+  if (j.contains("modes")) {
+    Fail("modes", "not used in format 2: each condition gives its own modes "
+                  "(conditions[i].modes)");
+  }
+  OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
+                   "priors", "per_condition", "conditions"});
+  NameAndDescription(j, d);
+  SharedValues(j, d);
+  if (j.contains("per_condition")) PerCondition(j["per_condition"], d);
+  if (j.contains("priors")) Priors(j["priors"], d);
+  if (!j.contains("conditions")) Fail("conditions", "missing");
+  const json& conditions = j["conditions"];
+  if (!conditions.is_array() || conditions.empty()) {
+    Fail("conditions", "must be a non-empty array");
+  }
+  d->conditions.clear();
+  for (size_t i = 0; i < conditions.size(); ++i) {
+    ReadCondition(conditions[i], "conditions[" + std::to_string(i) + "]", d);
+  }
+}
+
+void Check(const json& j, Dataset* d) {
+  if (!j.is_object()) Fail("", "top level must be a JSON object");
+  if (j.contains("format") && j["format"] == kFormat2) {
+    CheckFormat2(j, d);
+  } else {
+    CheckFormat1(j, d);
   }
 }
 
@@ -365,48 +564,110 @@ bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
          ParseDataset(text, path, dataset, error);
 }
 
+namespace {
+
+json ValuesJson(const std::map<Param, double>& m) {
+  json o = json::object();
+  for (const auto& [p, v] : m) o[ParamName(p)] = v;
+  return o;
+}
+
+json ModeJson(const MeasuredMode& m) {
+  json o;
+  o["label"] = LabelName(m.label);
+  o["plane"] = PlaneName(LabelPlane(m.label));
+  o["frequency_hz"] = m.frequency_hz;
+  if (m.frequency_sigma_hz) o["frequency_sigma_hz"] = *m.frequency_sigma_hz;
+  if (m.damping_ratio) o["damping_ratio"] = *m.damping_ratio;
+  if (m.damping_sigma) o["damping_sigma"] = *m.damping_sigma;
+  if (!m.shape.empty()) {
+    json s = json::object();
+    for (const auto& [dof, v] : m.shape) s[DofName(dof)] = v;
+    o["shape"] = s;
+  }
+  if (m.shape_sigma) o["shape_sigma"] = *m.shape_sigma;
+  return o;
+}
+
+// Whether format 1 cannot hold `d`.
+bool NeedsFormat2(const Dataset& d) {
+  if (d.format == 2 || d.conditions.size() > 1 || !d.priors.empty() ||
+      !d.per_condition.empty()) {
+    return true;
+  }
+  if (d.conditions.empty()) return false;
+  const Condition& c = d.conditions[0];
+  const Condition standing;
+  return c.name != standing.name || c.speed_m_s != standing.speed_m_s ||
+         !c.known.empty() || !c.initial.empty();
+}
+
+}  // namespace
+
 std::string DatasetToJson(const Dataset& d) {
+  const bool format2 = NeedsFormat2(d);
   json j;
-  j["format"] = "ringid-modal-dataset/1";
+  j["format"] = format2 ? kFormat2 : kFormat1;
   j["name"] = d.name;
   if (!d.description.empty()) j["description"] = d.description;
-  auto values = [](const std::map<Param, double>& m) {
-    json o = json::object();
-    for (const auto& [p, v] : m) o[ParamName(p)] = v;
-    return o;
-  };
-  if (!d.known.empty()) j["known"] = values(d.known);
-  if (!d.initial.empty()) j["initial"] = values(d.initial);
+  if (!d.known.empty()) j["known"] = ValuesJson(d.known);
+  if (!d.initial.empty()) j["initial"] = ValuesJson(d.initial);
   if (!d.ties.empty()) {
     json t = json::object();
     for (const auto& [a, b] : d.ties) t[ParamName(a)] = ParamName(b);
     j["ties"] = t;
   }
-  j["modes"] = json::array();
-  for (const MeasuredMode& m : d.modes) {
-    json o;
-    o["label"] = LabelName(m.label);
-    o["plane"] = PlaneName(LabelPlane(m.label));
-    o["frequency_hz"] = m.frequency_hz;
-    if (m.frequency_sigma_hz) o["frequency_sigma_hz"] = *m.frequency_sigma_hz;
-    if (m.damping_ratio) o["damping_ratio"] = *m.damping_ratio;
-    if (m.damping_sigma) o["damping_sigma"] = *m.damping_sigma;
-    if (!m.shape.empty()) {
-      json s = json::object();
-      for (const auto& [dof, v] : m.shape) s[DofName(dof)] = v;
-      o["shape"] = s;
+  if (!format2) {
+    j["modes"] = json::array();
+    for (const MeasuredMode& m : d.modes) j["modes"].push_back(ModeJson(m));
+  } else {
+    if (!d.priors.empty()) {
+      json priors = json::object();
+      for (const auto& [p, prior] : d.priors) {
+        const bool normal = prior.distribution == PriorDistribution::kNormal;
+        json o;
+        o["distribution"] = ToString(prior.distribution);
+        o[normal ? "mean" : "median"] = prior.center;
+        o[normal ? "sigma" : "factor_95"] = prior.spread;
+        priors[ParamName(p)] = o;
+      }
+      j["priors"] = priors;
     }
-    if (m.shape_sigma) o["shape_sigma"] = *m.shape_sigma;
-    j["modes"].push_back(o);
+    if (!d.per_condition.empty()) {
+      j["per_condition"] = json::array();
+      for (const Param p : d.per_condition) {
+        j["per_condition"].push_back(ParamName(p));
+      }
+    }
+    j["conditions"] = json::array();
+    for (size_t i = 0; i < d.conditions.size(); ++i) {
+      const Condition& c = d.conditions[i];
+      json o;
+      o["name"] = c.name;
+      o["speed_m_s"] = c.speed_m_s;
+      if (!c.known.empty()) o["known"] = ValuesJson(c.known);
+      if (!c.initial.empty()) o["initial"] = ValuesJson(c.initial);
+      o["modes"] = json::array();
+      for (const MeasuredMode& m : d.modes) {
+        if (m.condition == static_cast<int>(i)) o["modes"].push_back(ModeJson(m));
+      }
+      j["conditions"].push_back(o);
+    }
   }
   // Names may come from file names, which need not be UTF-8.
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-Parameters InitialParameters(const Dataset& d) {
+bool Dataset::IsPerCondition(Param p) const {
+  return std::find(per_condition.begin(), per_condition.end(), p) != per_condition.end();
+}
+
+Parameters InitialParameters(const Dataset& d, int condition) {
   Parameters p;
   for (const auto& [k, v] : d.known) p[k] = v;
   for (const auto& [k, v] : d.initial) p[k] = v;
+  for (const auto& [k, v] : d.conditions[condition].known) p[k] = v;
+  for (const auto& [k, v] : d.conditions[condition].initial) p[k] = v;
   for (const auto& [from, to] : d.ties) p[from] = p[to];
   return p;
 }

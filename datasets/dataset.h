@@ -21,6 +21,28 @@ struct MeasuredMode {
   std::optional<double> damping_sigma;
   std::vector<std::pair<Dof, double>> shape;  // empty: no shape measured
   std::optional<double> shape_sigma;
+  int condition = 0;  // index into Dataset::conditions
+};
+
+// One test condition of docs/conventions.md §7: a speed and the values of the
+// per-condition parameters that are known or seeded there.
+struct Condition {
+  std::string name = "standing";
+  double speed_m_s = 0;
+  std::map<Param, double> known;    // per_condition parameters only
+  std::map<Param, double> initial;  // per_condition parameters only
+};
+
+// A prior of docs/conventions.md §7, in the units of its parameter.
+enum class PriorDistribution { kNormal, kLognormal };
+template <>
+struct EnumNames<PriorDistribution> {
+  static constexpr std::array<const char*, 2> kNames = {"normal", "lognormal"};
+};
+struct Prior {
+  PriorDistribution distribution = PriorDistribution::kNormal;
+  double center = 0;  // normal: mean; lognormal: median
+  double spread = 0;  // normal: sigma; lognormal: factor_95 (> 1)
 };
 
 struct Dataset {
@@ -30,7 +52,15 @@ struct Dataset {
   std::map<Param, double> known;
   std::map<Param, double> initial;
   std::map<Param, Param> ties;  // parameter -> the one whose value it shares
+  int format = 1;               // 1 or 2 (docs/conventions.md §3, §7)
+  std::map<Param, Prior> priors;
+  std::vector<Param> per_condition;  // catalogue order; one value per condition
+  // At least one; a format-1 file has one, "standing" at speed 0.
+  std::vector<Condition> conditions = {Condition{}};
+  // Every measured mode of every condition, each naming its condition.
   std::vector<MeasuredMode> modes;
+
+  bool IsPerCondition(Param p) const;
 };
 
 // Limits the loader enforces (README "Limits").
@@ -51,8 +81,9 @@ struct LoadError {
 // Reads a whole input file (at most kMaxFileBytes). False with `error` set.
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
 
-// The dataset's starting point: known values, initial values, ties applied.
-Parameters InitialParameters(const Dataset& dataset);
+// The dataset's starting point in `condition`: shared known and initial
+// values, that condition's own, ties applied.
+Parameters InitialParameters(const Dataset& dataset, int condition = 0);
 
 // Loads and checks a dataset. On failure returns false and fills `error`;
 // `dataset` is then unspecified.

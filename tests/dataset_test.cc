@@ -1,6 +1,9 @@
 // The loader accepts the shipped datasets and refuses each kind of bad file
 // with a message naming the field.
 #include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -58,6 +61,308 @@ TEST(DatasetTest, RefusesEveryMalformedDataset) {
     EXPECT_EQ(line.find('\n'), std::string::npos) << bad.what;
     EXPECT_FALSE(e.message.empty()) << bad.what;
   }
+}
+
+// A format-2 dataset of docs/conventions.md §7 with every kind of field.
+json Valid2() {
+  return json::parse(R"({
+    "format": "ringid-modal-dataset/2", "name": "t2", "description": "two speeds",
+    "known": {"m_b": 2.37, "r_e0": 0.319}, "initial": {"K_cx": 1.0e4},
+    "ties": {"k_bz": "k_bx"},
+    "priors": {"K_cx": {"distribution": "lognormal", "median": 1.0e4, "factor_95": 3.0},
+               "r_l0": {"distribution": "normal", "mean": 0.30, "sigma": 0.01}},
+    "per_condition": ["k_cz", "F_cz0"],
+    "conditions": [
+      {"name": "standing", "speed_m_s": 0.0, "known": {"F_cz0": 3000},
+       "initial": {"k_cz": 2.0e5},
+       "modes": [{"label": "vertical", "frequency_hz": 74.5, "frequency_sigma_hz": 0.5},
+                 {"label": "camber", "frequency_hz": 60.1,
+                  "shape": {"gamma_b": 1.0, "y_b": -0.2}, "shape_sigma": 0.05}]},
+      {"name": "drum_6.0-B", "speed_m_s": 6.0, "known": {"F_cz0": 3100},
+       "modes": [{"label": "vertical", "frequency_hz": 73.9,
+                  "damping_ratio": 0.07, "damping_sigma": 0.01}]}]})");
+}
+
+// The error of loading `j`, as one line ("" when it loads).
+std::string ErrorOf(const json& j) {
+  Dataset d;
+  LoadError e;
+  if (ParseDataset(j.dump(), "bad.json", &d, &e)) return "";
+  return e.OneLine();
+}
+
+void ExpectSameModes(const std::vector<MeasuredMode>& a, const std::vector<MeasuredMode>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].label, b[i].label) << i;
+    EXPECT_EQ(a[i].condition, b[i].condition) << i;
+    EXPECT_EQ(a[i].frequency_hz, b[i].frequency_hz) << i;
+    EXPECT_EQ(a[i].frequency_sigma_hz, b[i].frequency_sigma_hz) << i;
+    EXPECT_EQ(a[i].damping_ratio, b[i].damping_ratio) << i;
+    EXPECT_EQ(a[i].damping_sigma, b[i].damping_sigma) << i;
+    EXPECT_EQ(a[i].shape, b[i].shape) << i;
+    EXPECT_EQ(a[i].shape_sigma, b[i].shape_sigma) << i;
+  }
+}
+
+void ExpectSameDataset(const Dataset& a, const Dataset& b) {
+  EXPECT_EQ(a.format, b.format);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(a.known, b.known);
+  EXPECT_EQ(a.initial, b.initial);
+  EXPECT_EQ(a.ties, b.ties);
+  EXPECT_EQ(a.per_condition, b.per_condition);
+  ASSERT_EQ(a.priors.size(), b.priors.size());
+  for (const auto& [p, prior] : a.priors) {
+    ASSERT_TRUE(b.priors.count(p)) << ParamName(p);
+    EXPECT_EQ(prior.distribution, b.priors.at(p).distribution) << ParamName(p);
+    EXPECT_EQ(prior.center, b.priors.at(p).center) << ParamName(p);
+    EXPECT_EQ(prior.spread, b.priors.at(p).spread) << ParamName(p);
+  }
+  ASSERT_EQ(a.conditions.size(), b.conditions.size());
+  for (size_t i = 0; i < a.conditions.size(); ++i) {
+    EXPECT_EQ(a.conditions[i].name, b.conditions[i].name);
+    EXPECT_EQ(a.conditions[i].speed_m_s, b.conditions[i].speed_m_s);
+    EXPECT_EQ(a.conditions[i].known, b.conditions[i].known);
+    EXPECT_EQ(a.conditions[i].initial, b.conditions[i].initial);
+  }
+  ExpectSameModes(a.modes, b.modes);
+}
+
+TEST(DatasetTest, FormatOneIsOneStandingCondition) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(ParseDataset(Valid().dump(), "x.json", &d, &e)) << e.OneLine();
+  EXPECT_EQ(d.format, 1);
+  ASSERT_EQ(d.conditions.size(), 1u);
+  EXPECT_EQ(d.conditions[0].name, "standing");
+  EXPECT_EQ(d.conditions[0].speed_m_s, 0.0);
+  EXPECT_TRUE(d.conditions[0].known.empty());
+  EXPECT_TRUE(d.priors.empty());
+  EXPECT_TRUE(d.per_condition.empty());
+  for (const MeasuredMode& m : d.modes) EXPECT_EQ(m.condition, 0);
+  // Written back as format 1.
+  EXPECT_NE(DatasetToJson(d).find("\"ringid-modal-dataset/1\""), std::string::npos);
+  EXPECT_EQ(DatasetToJson(d).find("conditions"), std::string::npos);
+}
+
+TEST(DatasetTest, FormatTwoLoadsConditionsInFileOrder) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(ParseDataset(Valid2().dump(), "x.json", &d, &e)) << e.OneLine();
+  EXPECT_EQ(d.format, 2);
+  ASSERT_EQ(d.conditions.size(), 2u);
+  EXPECT_EQ(d.conditions[0].name, "standing");
+  EXPECT_EQ(d.conditions[1].name, "drum_6.0-B");
+  EXPECT_EQ(d.conditions[1].speed_m_s, 6.0);
+  EXPECT_EQ(d.conditions[1].known.at(Param::F_cz0), 3100);
+  EXPECT_EQ(d.conditions[0].initial.at(Param::k_cz), 2.0e5);
+  // Catalogue order, not file order.
+  EXPECT_EQ(d.per_condition, (std::vector<Param>{Param::F_cz0, Param::k_cz}));
+  EXPECT_TRUE(d.IsPerCondition(Param::k_cz));
+  EXPECT_FALSE(d.IsPerCondition(Param::k_bx));
+  ASSERT_EQ(d.modes.size(), 3u);
+  EXPECT_EQ(d.modes[0].condition, 0);
+  EXPECT_EQ(d.modes[1].condition, 0);
+  EXPECT_EQ(d.modes[2].condition, 1);
+  EXPECT_EQ(d.modes[2].label, ModeLabel::kVertical);  // once per condition
+  EXPECT_EQ(d.priors.at(Param::K_cx).distribution, PriorDistribution::kLognormal);
+  EXPECT_EQ(d.priors.at(Param::K_cx).center, 1.0e4);
+  EXPECT_EQ(d.priors.at(Param::K_cx).spread, 3.0);
+  EXPECT_EQ(d.priors.at(Param::r_l0).distribution, PriorDistribution::kNormal);
+  EXPECT_EQ(d.priors.at(Param::r_l0).spread, 0.01);
+  EXPECT_EQ(InitialParameters(d, 1)[Param::F_cz0], 3100);
+  EXPECT_EQ(InitialParameters(d, 0)[Param::F_cz0], 3000);
+}
+
+TEST(DatasetTest, FormatTwoRoundTrips) {
+  Dataset d, again;
+  LoadError e;
+  ASSERT_TRUE(ParseDataset(Valid2().dump(), "x.json", &d, &e)) << e.OneLine();
+  const std::string text = DatasetToJson(d);
+  ASSERT_TRUE(ParseDataset(text, "y.json", &again, &e)) << e.OneLine() << "\n" << text;
+  ExpectSameDataset(d, again);
+  EXPECT_EQ(DatasetToJson(again), text);
+}
+
+TEST(DatasetTest, FormatTwoSpeedDefaultsToZeroAndNeedsNoExtras) {
+  json j = Valid2();
+  for (const char* key : {"priors", "per_condition", "known", "initial"}) j.erase(key);
+  j["conditions"][0].erase("speed_m_s");
+  for (json& c : j["conditions"]) c.erase("known"), c.erase("initial");
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(ParseDataset(j.dump(), "x.json", &d, &e)) << e.OneLine();
+  EXPECT_EQ(d.conditions[0].speed_m_s, 0.0);
+  EXPECT_EQ(d.format, 2);
+}
+
+TEST(DatasetTest, DatasetBuiltInCodeWithSeveralConditionsIsWrittenAsFormatTwo) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(ParseDataset(Valid().dump(), "x.json", &d, &e)) << e.OneLine();
+  d.conditions.push_back({"drum", 5.0, {}, {}});
+  d.modes.push_back(d.modes[0]);
+  d.modes.back().condition = 1;
+  Dataset again;
+  ASSERT_TRUE(ParseDataset(DatasetToJson(d), "y.json", &again, &e)) << e.OneLine();
+  d.format = 2;
+  ExpectSameDataset(d, again);
+}
+
+// Each refused format-2 input: the change to Valid2(), the field the error
+// names and a fragment of its message.
+struct Refused {
+  const char* what;
+  std::function<void(json&)> change;
+  const char* field;
+  const char* message;
+};
+
+TEST(DatasetTest, FormatTwoRefusesEachKindOfBadInputNamingTheField) {
+  const Refused cases[] = {
+      {"top-level modes", [](json& j) { j["modes"] = j["conditions"][0]["modes"]; },
+       "modes", "not used in format 2"},
+      {"conditions missing", [](json& j) { j.erase("conditions"); }, "conditions", "missing"},
+      {"conditions empty", [](json& j) { j["conditions"] = json::array(); },
+       "conditions", "non-empty array"},
+      {"condition not an object", [](json& j) { j["conditions"][1] = 3; },
+       "conditions[1]", "must be an object"},
+      {"unknown key in a condition", [](json& j) { j["conditions"][1]["speeed_m_s"] = 1; },
+       "conditions[1].speeed_m_s", "unknown key"},
+      {"unknown top-level key", [](json& j) { j["prior"] = json::object(); }, "prior",
+       "unknown key"},
+      {"condition name missing", [](json& j) { j["conditions"][1].erase("name"); },
+       "conditions[1].name", "missing"},
+      {"condition name empty", [](json& j) { j["conditions"][1]["name"] = ""; },
+       "conditions[1].name", "must not be empty"},
+      {"condition name with a space", [](json& j) { j["conditions"][1]["name"] = "drum 6"; },
+       "conditions[1].name", "letters, digits"},
+      {"condition name with @", [](json& j) { j["conditions"][1]["name"] = "a@b"; },
+       "conditions[1].name", "letters, digits"},
+      {"duplicate condition names",
+       [](json& j) { j["conditions"][1]["name"] = "standing"; }, "conditions[1].name",
+       "appears twice"},
+      {"negative speed", [](json& j) { j["conditions"][1]["speed_m_s"] = -1.0; },
+       "conditions[1].speed_m_s", "must not be negative"},
+      {"speed not a number", [](json& j) { j["conditions"][1]["speed_m_s"] = "6"; },
+       "conditions[1].speed_m_s", "must be a number"},
+      {"condition modes missing", [](json& j) { j["conditions"][1].erase("modes"); },
+       "conditions[1].modes", "missing"},
+      {"condition modes empty", [](json& j) { j["conditions"][1]["modes"] = json::array(); },
+       "conditions[1].modes", "non-empty array"},
+      {"bad mode in a condition",
+       [](json& j) { j["conditions"][1]["modes"][0]["frequency_hz"] = -3.0; },
+       "conditions[1].modes[0].frequency_hz", "must be positive"},
+      {"label twice within a condition",
+       [](json& j) { j["conditions"][0]["modes"].push_back(j["conditions"][0]["modes"][0]); },
+       "conditions[0].modes[2].label", "appears twice"},
+      {"condition known for a shared parameter",
+       [](json& j) { j["conditions"][1]["known"]["k_bx"] = 3e5; },
+       "conditions[1].known.k_bx", "is shared: give it at top level, or list it in per_condition"},
+      {"condition initial for a shared parameter",
+       [](json& j) { j["conditions"][0]["initial"]["K_cx"] = 1e4; },
+       "conditions[0].initial.K_cx", "is shared"},
+      {"condition known and initial",
+       [](json& j) { j["conditions"][0]["initial"]["F_cz0"] = 3000; },
+       "conditions[0].initial.F_cz0", "also given in known"},
+      {"condition value of the wrong sign",
+       [](json& j) { j["conditions"][0]["known"]["F_cz0"] = -1; },
+       "conditions[0].known.F_cz0", "must be positive"},
+      {"per_condition not an array", [](json& j) { j["per_condition"] = "k_cz"; },
+       "per_condition", "must be an array"},
+      {"per_condition unknown parameter",
+       [](json& j) { j["per_condition"][0] = "k_qq"; }, "per_condition[0]",
+       "unknown parameter 'k_qq'"},
+      {"per_condition repeated", [](json& j) { j["per_condition"].push_back("k_cz"); },
+       "per_condition[2]", "listed twice"},
+      {"per_condition also known at top level", [](json& j) { j["known"]["k_cz"] = 2e5; },
+       "per_condition[0]", "also given in top-level known"},
+      {"per_condition also initial at top level",
+       [](json& j) { j["initial"]["F_cz0"] = 3000; }, "per_condition[1]",
+       "also given in top-level initial"},
+      {"per_condition tied (source)", [](json& j) { j["per_condition"].push_back("k_bz"); },
+       "per_condition[2]", "is tied"},
+      {"per_condition tied (target)", [](json& j) { j["per_condition"].push_back("k_bx"); },
+       "per_condition[2]", "is tied"},
+      {"prior on an unknown parameter",
+       [](json& j) { j["priors"]["k_qq"] = j["priors"]["r_l0"]; }, "priors.k_qq",
+       "unknown parameter"},
+      {"priors not an object", [](json& j) { j["priors"] = json::array(); }, "priors",
+       "must be an object"},
+      {"prior not an object", [](json& j) { j["priors"]["r_l0"] = 0.3; }, "priors.r_l0",
+       "must be an object"},
+      {"unknown key in a prior", [](json& j) { j["priors"]["r_l0"]["std"] = 0.1; },
+       "priors.r_l0.std", "unknown key"},
+      {"prior distribution missing", [](json& j) { j["priors"]["r_l0"].erase("distribution"); },
+       "priors.r_l0.distribution", "missing"},
+      {"prior distribution unknown",
+       [](json& j) { j["priors"]["r_l0"]["distribution"] = "uniform"; },
+       "priors.r_l0.distribution", "must be normal or lognormal"},
+      {"normal prior without mean", [](json& j) { j["priors"]["r_l0"].erase("mean"); },
+       "priors.r_l0.mean", "missing"},
+      {"normal prior mean not a number", [](json& j) { j["priors"]["r_l0"]["mean"] = "0.3"; },
+       "priors.r_l0.mean", "must be a number"},
+      {"normal prior without sigma", [](json& j) { j["priors"]["r_l0"].erase("sigma"); },
+       "priors.r_l0.sigma", "missing"},
+      {"normal prior sigma zero", [](json& j) { j["priors"]["r_l0"]["sigma"] = 0.0; },
+       "priors.r_l0.sigma", "must be positive"},
+      {"normal prior with a lognormal key",
+       [](json& j) { j["priors"]["r_l0"]["factor_95"] = 2.0; }, "priors.r_l0.factor_95",
+       "not a key of a normal prior"},
+      {"lognormal prior without median", [](json& j) { j["priors"]["K_cx"].erase("median"); },
+       "priors.K_cx.median", "missing"},
+      {"lognormal prior median not positive",
+       [](json& j) { j["priors"]["K_cx"]["median"] = -1.0; }, "priors.K_cx.median",
+       "must be positive"},
+      {"lognormal prior without factor",
+       [](json& j) { j["priors"]["K_cx"].erase("factor_95"); }, "priors.K_cx.factor_95",
+       "missing"},
+      {"lognormal prior factor 1", [](json& j) { j["priors"]["K_cx"]["factor_95"] = 1.0; },
+       "priors.K_cx.factor_95", "must be greater than 1"},
+      {"lognormal prior factor below 1",
+       [](json& j) { j["priors"]["K_cx"]["factor_95"] = 0.5; }, "priors.K_cx.factor_95",
+       "must be greater than 1"},
+      {"lognormal prior with a normal key", [](json& j) { j["priors"]["K_cx"]["sigma"] = 2.0; },
+       "priors.K_cx.sigma", "not a key of a lognormal prior"},
+      {"lognormal prior on a real parameter",
+       [](json& j) { j["priors"]["dk_bz"] = j["priors"]["K_cx"]; }, "priors.dk_bz.distribution",
+       "positive parameter"},
+      {"lognormal prior on a non-negative parameter",
+       [](json& j) { j["priors"]["s_h"] = j["priors"]["K_cx"]; }, "priors.s_h.distribution",
+       "positive parameter"},
+      {"prior on a known parameter",
+       [](json& j) { j["priors"]["m_b"] = {{"distribution", "normal"}, {"mean", 2.4},
+                                           {"sigma", 0.1}}; },
+       "priors.m_b", "a known value needs no prior"},
+      {"prior on a tied parameter", [](json& j) { j["priors"]["k_bz"] = j["priors"]["K_cx"]; },
+       "priors.k_bz", "is tied"},
+      {"prior on a per-condition parameter",
+       [](json& j) { j["priors"]["k_cz"] = j["priors"]["K_cx"]; }, "priors.k_cz",
+       "priors on per-condition parameters are not supported"},
+  };
+  ASSERT_EQ(ErrorOf(Valid2()), "");
+  for (const Refused& c : cases) {
+    json j = Valid2();
+    c.change(j);
+    const std::string line = ErrorOf(j);
+    EXPECT_NE(line.find(std::string("bad.json: ") + c.field + ": "), std::string::npos)
+        << c.what << ": " << line;
+    EXPECT_NE(line.find(c.message), std::string::npos) << c.what << ": " << line;
+  }
+}
+
+TEST(DatasetTest, FormatOneRefusesFormatTwoKeysAndUnknownFormats) {
+  json j = Valid();
+  j["priors"] = json::object();
+  EXPECT_NE(ErrorOf(j).find("bad.json: priors: unknown key"), std::string::npos) << ErrorOf(j);
+  j = Valid();
+  j["format"] = "ringid-modal-dataset/3";
+  EXPECT_NE(ErrorOf(j).find("format: must be \"ringid-modal-dataset/1\" or "
+                            "\"ringid-modal-dataset/2\""),
+            std::string::npos)
+      << ErrorOf(j);
 }
 
 TEST(DatasetTest, MissingFileIsAnError) {
