@@ -20,7 +20,8 @@ json ParameterSetJson(const IdentifySummary& s, const std::string& name,
   r["description"] = description;
   json params = json::object();
   for (const ParameterEstimate& e : s.estimates) {
-    params[ParamName(e.param)] = {
+    if (!e.key.condition.empty()) continue;  // a set holds one tire's shared values
+    params[ParamName(e.param())] = {
         {"value", e.value}, {"std", e.std ? json(*e.std) : json(nullptr)}};
   }
   r["parameters"] = params;

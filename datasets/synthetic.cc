@@ -9,20 +9,26 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& o, std::mt19937_64* rng, Dataset* d,
               std::string* error) {
   std::normal_distribution<double> n(0, 1);
-  const ModalSolution s = model.Solve(truth);
+  d->modes.clear();
+  for (int c = 0; c < static_cast<int>(d->conditions.size()); ++c) {
+  const Condition& condition = d->conditions[c];
+  Parameters p = truth;
+  for (const auto& [q, v] : condition.known) p[q] = v;
+  const ModalSolution s = model.Solve(p, condition.speed_m_s);
+  const std::string where = d->conditions.size() > 1 ? " in condition " + condition.name : "";
   if (!s.ok) {
-    *error = "the truth model cannot be solved: " + s.error;
+    *error = "the truth model cannot be solved" + where + ": " + s.error;
     return false;
   }
-  d->modes.clear();
   for (int l = 0; l < 7; ++l) {
     const Mode* m = s.Find(static_cast<ModeLabel>(l));
     if (!m) {
       *error = std::string("the truth has no oscillating ") +
-               LabelName(static_cast<ModeLabel>(l)) + " mode";
+               LabelName(static_cast<ModeLabel>(l)) + " mode" + where;
       return false;
     }
     MeasuredMode mm;
+    mm.condition = c;
     mm.label = m->label;
     mm.frequency_hz = m->frequency_hz * (1 + o.frequency_noise * n(*rng));
     mm.frequency_sigma_hz = o.frequency_noise * m->frequency_hz;
@@ -40,7 +46,44 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
     }
     d->modes.push_back(mm);
   }
+  }
   return true;
+}
+
+Parameters ExampleCarTire() {
+  using P = Param;
+  Parameters p;
+  // Belt inertias and in-plane/out-of-plane belt frequencies of the public
+  // TNO MF-Swift example 205/60R15 (BELT_MASS 7.698 kg, BELT_IXX 0.3519,
+  // BELT_IYY 0.4889 kg m^2, FREQ_LONG 76.63, FREQ_LAT 41.47, FREQ_YAW 53.46,
+  // FREQ_WINDUP 67.73 Hz), turned into stiffnesses k = m (2 pi f)^2; the
+  // rest typical of a car tire at 4 kN: 5 % sidewall damping, slip
+  // stiffness about 20 and 15 times the load, relaxation lengths of half a
+  // contact length or more.
+  const double w = 2 * M_PI;
+  p[P::m_b] = 7.698;
+  p[P::I_by] = 0.4889;
+  p[P::I_bx] = p[P::I_bz] = 0.3519;
+  p[P::I_ay] = 0.35;
+  p[P::F_cz0] = 4000;
+  p[P::k_bx] = p[P::k_bz] = p[P::m_b] * std::pow(w * 76.63, 2);
+  p[P::k_by] = p[P::m_b] * std::pow(w * 41.47, 2);
+  p[P::k_bgamma] = p[P::k_bpsi] = p[P::I_bz] * std::pow(w * 53.46, 2);
+  p[P::k_btheta] = p[P::I_by] * std::pow(w * 67.73, 2);
+  auto damper = [](double k, double m) { return 2 * 0.05 * std::sqrt(k * m); };
+  p[P::c_bx] = p[P::c_bz] = damper(p[P::k_bx], p[P::m_b]);
+  p[P::c_by] = damper(p[P::k_by], p[P::m_b]);
+  p[P::c_bgamma] = p[P::c_bpsi] = damper(p[P::k_bgamma], p[P::I_bx]);
+  p[P::c_btheta] = damper(p[P::k_btheta], p[P::I_by]);
+  p[P::K_cx] = 8e4;
+  p[P::sigma_cx] = 0.1;
+  p[P::K_cy] = 6e4;
+  p[P::sigma_cy] = 0.15;
+  p[P::r_e0] = 0.30;
+  p[P::r_l0] = 0.28;
+  p[P::t_0] = 0.03;
+  p[P::k_cz] = 2e5;
+  return p;
 }
 
 void SetEngineerPriors(const Parameters& truth, double prior_spread,

@@ -24,12 +24,17 @@ struct SimulateOptions {
 };
 
 // Measures the seven modes of docs/conventions.md §1 of `truth` under
-// `model`: fills `dataset->modes` (sigmas equal to the noise levels) and
+// `model` in each condition of `dataset` (at its speed, with its own known
+// values): fills `dataset->modes` (sigmas equal to the noise levels) and
 // leaves its other fields as they are. False with a reason when the truth
 // model cannot be solved or one of those modes is overdamped.
 bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& options, std::mt19937_64* rng,
               Dataset* dataset, std::string* error);
+
+// A car tire with every parameter plausible (docs/plausibility.md): the
+// belt of the public MF-Swift 205/60R15 example and typical contact values.
+Parameters ExampleCarTire();
 
 // What a test engineer knows besides the modes: the inertias and load
 // (weighed, measured), the hub mass where set, and the relaxation lengths

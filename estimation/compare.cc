@@ -41,7 +41,7 @@ void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
                     double* out_of_plane) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   *in_plane = *out_of_plane = nan;
-  ModalSolution s;
+  std::vector<ModalSolution> s;
   std::vector<int> pairs;
   std::string why;
   if (!residuals.Pair(x.data(), &s, &pairs, &why)) return;
@@ -49,7 +49,7 @@ void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
   int n[2] = {0, 0};
   for (size_t i = 0; i < dataset.modes.size(); ++i) {
     const MeasuredMode& m = dataset.modes[i];
-    const double rel = (m.frequency_hz - s.modes[pairs[i]].frequency_hz) / m.frequency_hz;
+    const double rel = (m.frequency_hz - s[m.condition].modes[pairs[i]].frequency_hz) / m.frequency_hz;
     const int k = LabelPlane(m.label) == Plane::kInPlane ? 0 : 1;
     e[k] += rel * rel;
     ++n[k];
@@ -72,7 +72,7 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
   if (!problem) return;
   const ParameterSetup& setup = problem->setup();
   const ModalResiduals& residuals = problem->residuals();
-  const Eigen::VectorXd x0 = setup.Encode(setup.start());
+  const Eigen::VectorXd x0 = setup.StartCoordinates();
   const Box box = BoundsAround(setup, x0, o.fit.bound_factor);
   const auto starts = DrawStarts(setup, x0, box, o.fit.starts, o.fit.start_spread, o.fit.seed,
                                  [&](const Eigen::VectorXd& x) { return std::isfinite(CostAt(residuals, x)); });

@@ -83,7 +83,7 @@ std::vector<double> ModeChi2(const std::vector<ModalResiduals::Slot>& slots,
 Dataset WarmStart(const Dataset& dataset, const IdentifySummary& fitted) {
   Dataset d = dataset;
   for (const ParameterEstimate& e : fitted.estimates) {
-    if (e.free) d.initial[e.param] = e.value;
+    if (e.free) d.initial[e.param()] = e.value;
   }
   return d;
 }
@@ -323,13 +323,13 @@ std::vector<std::string> Absorbed(const Dataset& dataset, const IdentifySummary&
   std::vector<std::string> absorbed;
   for (const ParameterEstimate& e : calibrated.estimates) {
     if (!e.free) continue;
-    const auto prior = dataset.initial.find(e.param);
+    const auto prior = dataset.initial.find(e.param());
     if (prior == dataset.initial.end() || !(prior->second > 0) || !(e.value > 0)) continue;
     const double factor = e.value / prior->second;
     if (std::abs(std::log(factor)) > std::log(o.prior_factor)) {
       char line[160];
       std::snprintf(line, sizeof line, "%s moved from its initial %.4g to %.4g (x %.2f)",
-                    ParamName(e.param), prior->second, e.value, factor);
+                    ParamName(e.param()), prior->second, e.value, factor);
       absorbed.push_back(line);
     }
   }

@@ -33,19 +33,24 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
                                int max_iterations, int fixed) {
   LocalFit fit;
   fit.x = start;
-  const int n = static_cast<int>(start.size());
-  ceres::CostFunction* cost = NewCentralDifferenceCost(residuals);
   ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, fit.x.data());
-  if (fixed >= 0 && n == 1) {
-    problem.SetParameterBlockConstant(fit.x.data());
-  } else if (fixed >= 0) {
-    problem.SetManifold(fit.x.data(), new ceres::SubsetManifold(n, {fixed}));
-  }
-  for (int i = 0; i < n; ++i) {
-    if (i == fixed) continue;
-    problem.SetParameterLowerBound(fit.x.data(), i, box.lower[i]);
-    problem.SetParameterUpperBound(fit.x.data(), i, box.upper[i]);
+  // One Ceres problem: each condition's block of residuals shares the
+  // block of shared coordinates (docs/conventions.md §7).
+  for (const auto& [begin, size] : AddResidualBlocks(residuals, &fit.x, &problem)) {
+    double* block = fit.x.data() + begin;
+    const int at = fixed - begin;
+    if (at >= 0 && at < size) {
+      if (size == 1) {
+        problem.SetParameterBlockConstant(block);
+      } else {
+        problem.SetManifold(block, new ceres::SubsetManifold(size, {at}));
+      }
+    }
+    for (int i = 0; i < size; ++i) {
+      if (i == at) continue;
+      problem.SetParameterLowerBound(block, i, box.lower[begin + i]);
+      problem.SetParameterUpperBound(block, i, box.upper[begin + i]);
+    }
   }
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
@@ -67,7 +72,8 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   so.callbacks.push_back(&history);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
-  fit.cost = summary.IsSolutionUsable() ? summary.final_cost : kInf;
+  // The whole cost, rows of conditions without free coordinates included.
+  fit.cost = summary.IsSolutionUsable() ? CostAt(residuals, fit.x) : kInf;
   fit.converged = summary.termination_type == ceres::CONVERGENCE;
   fit.message = summary.message;
   return fit;

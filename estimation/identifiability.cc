@@ -267,12 +267,12 @@ struct Candidate {
 
 // The dataset with every damping ratio and shape the model predicts at its
 // fitted modes, where the test did not measure (or the fit did not use) them.
-Dataset WithEveryObservation(const Dataset& dataset, const ModalSolution& solution,
+Dataset WithEveryObservation(const Dataset& dataset, const std::vector<ModalSolution>& solutions,
                              const std::vector<int>& pairs, const IdentifiabilityOptions& o) {
   Dataset more = dataset;
   for (size_t m = 0; m < more.modes.size(); ++m) {
-    const Mode& mode = solution.modes[pairs[m]];
     MeasuredMode& mm = more.modes[m];
+    const Mode& mode = solutions[mm.condition].modes[pairs[m]];
     if (!mm.damping_ratio || !o.fit.residuals.use_damping) {
       mm.damping_ratio = std::clamp(mode.damping_ratio, 1e-6, 1 - 1e-6);
       mm.damping_sigma = o.advice_damping_sigma;
@@ -328,15 +328,15 @@ std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augment
 // observations ranked by the information they add on it.
 std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::VectorXd& xhat,
                                      const Uncertainty& u, const IdentifiabilityOptions& o) {
-  ModalSolution solution;
+  std::vector<ModalSolution> solutions;
   std::vector<int> pairs;
   std::string why;
-  if (!problem.residuals().Pair(xhat.data(), &solution, &pairs, &why)) return {};
+  if (!problem.residuals().Pair(xhat.data(), &solutions, &pairs, &why)) return {};
   ResidualOptions all = o.fit.residuals;
   all.use_damping = all.use_shapes = true;
   Status status;
   const auto augmented = Problem::Create(
-      problem.model(), WithEveryObservation(problem.dataset(), solution, pairs, o), all, &status);
+      problem.model(), WithEveryObservation(problem.dataset(), solutions, pairs, o), all, &status);
   Eigen::MatrixXd Ja;
   if (!augmented || !EvaluateJacobian(augmented->residuals(), xhat, &Ja)) return {};
   const std::vector<Candidate> candidates = Candidates(problem.dataset(), *augmented, xhat, o);

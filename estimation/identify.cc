@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace ringid {
@@ -23,7 +24,77 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
       .count();
 }
 
+// The estimate of p in condition c at the fitted point x.
+ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& residuals,
+                           const Uncertainty& u, const Eigen::VectorXd& x, Param p, int c) {
+  ParameterEstimate e;
+  e.key.param = p;
+  e.value = setup.Decode(x.data(), c)[p];
+  const auto tie = setup.ties().find(p);
+  if (tie != setup.ties().end()) e.tied_to = tie->second;
+  const int i = setup.CoordinateOf(p, c);
+  e.free = i >= 0 && !e.tied_to;
+  if (i < 0) {
+    e.identifiable = Identifiability::kYes;
+    e.reason = e.tied_to ? "tied to a fixed parameter" : "fixed (known)";
+    return e;
+  }
+  if (!u.ok) {
+    e.identifiable = Identifiability::kNo;
+    e.reason = u.error;
+    return e;
+  }
+  e.identifiable = u.classes[i];
+  e.reason = u.reasons[i];
+  if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
+  const double sd = u.std[i];
+  if (std::isfinite(sd)) e.std = setup.PhysicalStd(i, x[i], sd);
+  for (const auto& prior : residuals.priors()) {
+    if (prior.coordinate != i || !u.covariance_ok || e.tied_to) continue;
+    e.prior_share = u.covariance(i, i) / prior.CoordinateVariance(setup, x[i]);
+  }
+  return e;
+}
+
+std::vector<SpeedCurve> SpeedCurves(const ModalModel& model, const Dataset& dataset,
+                                    const Parameters& p) {
+  double top = 0;
+  for (const Condition& c : dataset.conditions) top = std::max(top, c.speed_m_s);
+  if (!(top > 0)) return {};
+  const int points = 41;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::map<ModeLabel, SpeedCurve> curves;
+  for (int k = 0; k < points; ++k) {
+    const double v = 1.25 * top * k / (points - 1);
+    const ModalSolution s = model.Solve(p, v);
+    for (const Mode& m : s.modes) curves[m.label].label = m.label;
+    for (auto& [label, curve] : curves) {
+      const Mode* m = s.ok ? s.Find(label) : nullptr;
+      curve.speed_m_s.push_back(v);
+      curve.frequency_hz.push_back(m ? m->frequency_hz : nan);
+      curve.damping_ratio.push_back(m ? m->damping_ratio : nan);
+    }
+  }
+  std::vector<SpeedCurve> out;
+  for (auto& [label, curve] : curves) {
+    // A label first seen at speed k gets NaN before it.
+    const size_t missing = points - curve.speed_m_s.size();
+    for (auto* v : {&curve.frequency_hz, &curve.damping_ratio}) v->insert(v->begin(), missing, nan);
+    curve.speed_m_s.clear();
+    for (int k = 0; k < points; ++k) curve.speed_m_s.push_back(1.25 * top * k / (points - 1));
+    out.push_back(std::move(curve));
+  }
+  return out;
+}
+
 }  // namespace
+
+const char* ParameterEstimate::DecidedBy() const {
+  if (!prior_share) return "the data";
+  if (*prior_share > 0.5) return "the prior";
+  if (*prior_share < 0.1) return "the data";
+  return "data and prior";
+}
 
 bool IdentifyOptions::IsValid(std::string* why) const {
   if (starts < 1 || starts > 100000) {
@@ -61,7 +132,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   if (!problem) return;
   const ParameterSetup& setup = problem->setup();
   const ModalResiduals& residuals = problem->residuals();
-  const Eigen::VectorXd x0 = setup.Encode(setup.start());
+  const Eigen::VectorXd x0 = setup.StartCoordinates();
   const Box box = BoundsAround(setup, x0, o.bound_factor);
   const int starts = setup.size() == 0 ? 1 : o.starts;
   auto usable = [&](const Eigen::VectorXd& x) {
@@ -86,42 +157,31 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->converged = best.converged;
   s->cost = best.cost;
   s->parameters = setup.Decode(best.x.data());
+  s->x = best.x;
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
-  for (Param p : setup.free()) s->coordinate_names.push_back(ParamName(p));
-
+  for (int i = 0; i < setup.size(); ++i) s->coordinate_names.push_back(setup.name(i));
   for (Param p : model.parameters()) {
-    ParameterEstimate e;
-    e.param = p;
-    e.value = s->parameters[p];
-    const auto tie = setup.ties().find(p);
-    if (tie != setup.ties().end()) e.tied_to = tie->second;
-    const int i = setup.CoordinateOf(p);
-    e.free = i >= 0 && !e.tied_to;
-    if (i < 0) {
-      e.identifiable = Identifiability::kYes;
-      e.reason = e.tied_to ? "tied to a fixed parameter" : "fixed (known)";
-    } else if (s->uncertainty.ok) {
-      e.identifiable = s->uncertainty.classes[i];
-      e.reason = s->uncertainty.reasons[i];
-      if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
-      const double sd = s->uncertainty.std[i];
-      if (std::isfinite(sd)) e.std = setup.PhysicalStd(i, best.x[i], sd);
-    } else {
-      e.identifiable = Identifiability::kNo;
-      e.reason = s->uncertainty.error;
+    const bool per_condition = dataset.IsPerCondition(p);
+    for (int c = 0; c < (per_condition ? setup.num_conditions() : 1); ++c) {
+      ParameterEstimate e = Estimate(setup, residuals, s->uncertainty, best.x, p, c);
+      if (per_condition) e.key.condition = dataset.conditions[c].name;
+      s->estimates.push_back(e);
     }
-    s->estimates.push_back(e);
   }
+  std::vector<Param> used = model.parameters();
+  s->plausibility = CheckPlausibility(s->parameters, used);
 
-  ModalSolution solution;
+  std::vector<ModalSolution> solutions;
   std::vector<int> pairs;
   double e_in = 0, e_out = 0;
   int n_in = 0, n_out = 0;
-  if (residuals.Pair(best.x.data(), &solution, &pairs, &why)) {
+  if (residuals.Pair(best.x.data(), &solutions, &pairs, &why)) {
     for (size_t i = 0; i < dataset.modes.size(); ++i) {
       const MeasuredMode& m = dataset.modes[i];
+      const ModalSolution& solution = solutions[m.condition];
       const Mode& mode = solution.modes[pairs[i]];
       ModeFit f;
+      if (dataset.format == 2) f.condition = dataset.conditions[m.condition].name;
       f.label = m.label;
       f.model_label = mode.label;
       f.measured_hz = m.frequency_hz;
@@ -146,6 +206,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       s->modes.push_back(f);
     }
   }
+  s->speed_curves = SpeedCurves(model, dataset, s->parameters);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   s->relative_error_in_plane = n_in ? e_in : nan;
   s->relative_error_out_of_plane = n_out ? e_out : nan;
@@ -175,8 +236,10 @@ std::string IdentifySummary::FullReport() const {
   for (const ModeFit& m : modes) {
     char mac[16] = "-";
     if (m.mac) std::snprintf(mac, sizeof mac, "%.3f", *m.mac);
+    const std::string name = m.condition ? *m.condition + " " + LabelName(m.label)
+                                         : std::string(LabelName(m.label));
     std::snprintf(line, sizeof line, "  %-20s %10.3f %10.3f %6.3f %5s%s\n",
-                  LabelName(m.label), m.measured_hz, m.model_hz,
+                  name.c_str(), m.measured_hz, m.model_hz,
                   m.model_damping, mac,
                   m.model_label != m.label
                       ? (std::string("  (paired with model ") +
@@ -192,13 +255,26 @@ std::string IdentifySummary::FullReport() const {
       sd = line;
     }
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-11s  %-15s %s\n",
-                  ParamName(e.param), e.value, sd.c_str(),
+                  e.key.Text().c_str(), e.value, sd.c_str(),
                   e.free || e.tied_to ? ToString(e.identifiable)
                                       : "(fixed)",
                   e.tied_to ? (std::string("= ") + ParamName(*e.tied_to)).c_str()
                             : "");
     o << line;
   }
+  // Which parameters the data decide and which their priors decide.
+  std::string by_prior, by_both, by_data;
+  for (const ParameterEstimate& e : estimates) {
+    if (!e.prior_share) continue;
+    std::string& list = *e.prior_share > 0.5 ? by_prior : *e.prior_share < 0.1 ? by_data : by_both;
+    list += (list.empty() ? "" : ", ") + e.key.Text();
+  }
+  if (!by_prior.empty()) o << "\n  decided by their priors (posterior variance > 50 % of the prior's): " << by_prior;
+  if (!by_both.empty()) o << "\n  decided by data and priors together: " << by_both;
+  if (!by_data.empty()) o << "\n  decided by the data despite a prior (< 10 % of its variance left): " << by_data;
+  if (!by_prior.empty() || !by_both.empty() || !by_data.empty()) o << "\n";
+  for (const PlausibilityFlag& f : plausibility) o << "\n  implausible (" << f.rule << "): " << f.reason;
+  if (!plausibility.empty()) o << "\n";
   if (uncertainty.ok) {
     o << "\n  Jacobian rank " << uncertainty.rank << " of "
       << uncertainty.jacobian.cols() << " free coordinates ("

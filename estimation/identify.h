@@ -15,6 +15,7 @@
 #include "estimation/simplex.h"
 #include "estimation/status.h"
 #include "estimation/uncertainty.h"
+#include "model/plausibility.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -37,27 +38,36 @@ struct IdentifyOptions {
 };
 
 struct ParameterEstimate {
-  Param param;
+  ParameterKey key;  // the parameter, and its condition when per-condition
   double value = 0;
   bool free = false;
   std::optional<Param> tied_to;
   Identifiability identifiable = Identifiability::kYes;
   std::string reason;
   std::optional<double> std;  // physical units; none where not defined
+  // With a prior: posterior over prior variance (Laplace), near 1 where the
+  // prior decides the value, near 0 where the data do.
+  std::optional<double> prior_share;
 
-  template <class Archive>  // keyed by param in IdentifySummary
+  Param param() const { return key.param; }
+  // "the data", "the prior" or "data and prior", from prior_share.
+  const char* DecidedBy() const;
+
+  template <class Archive>  // keyed by key in IdentifySummary
   void Serialize(Archive* a) {
     a->Visit("value", &value);
-    a->Derived("unit", std::string(Info(param).unit));
+    a->Derived("unit", std::string(Info(key.param).unit));
     a->Visit("free", &free);
     a->VisitIfSet("tied_to", &tied_to);
     a->Visit("std", &std);
     a->Visit("identifiable", &identifiable);
     a->Visit("reason", &reason);
+    a->VisitIfSet("prior_share", &prior_share);
   }
 };
 
 struct ModeFit {
+  std::optional<std::string> condition;  // format 2: the condition's name
   ModeLabel label;     // the measured mode's label
   ModeLabel model_label;  // the label of the model mode it was paired with
   double measured_hz = 0;
@@ -71,6 +81,7 @@ struct ModeFit {
 
   template <class Archive>
   void Serialize(Archive* a) {
+    a->VisitIfSet("condition", &condition);
     a->Visit("label", &label);
     a->Visit("measured_hz", &measured_hz);
     a->Visit("measured_sigma_hz", &measured_sigma_hz);
@@ -80,6 +91,22 @@ struct ModeFit {
     a->VisitIfSet("measured_damping_ratio", &measured_damping);
     a->VisitIfSet("mac", &mac);
     a->Visit("mac_all", &mac_all);
+  }
+};
+
+// One mode of the fitted model against forward speed (a Campbell diagram).
+struct SpeedCurve {
+  ModeLabel label;
+  std::vector<double> speed_m_s;
+  std::vector<double> frequency_hz;   // damped, NaN where the mode is overdamped
+  std::vector<double> damping_ratio;  // NaN where the mode is overdamped
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("label", &label);
+    a->Visit("speed_m_s", &speed_m_s);
+    a->Visit("frequency_hz", &frequency_hz);
+    a->Visit("damping_ratio", &damping_ratio);
   }
 };
 
@@ -95,11 +122,18 @@ struct IdentifySummary {
   double seconds = 0;
   int starts = 0;
   std::vector<double> start_costs;
-  Parameters parameters;
+  Parameters parameters;  // of the first condition
+  Eigen::VectorXd x;      // the fitted coordinates (not in the report)
   std::vector<ParameterEstimate> estimates;  // model parameters, in order
+  // Values of `estimates` outside their physical range (docs/plausibility.md).
+  std::vector<PlausibilityFlag> plausibility;
   Uncertainty uncertainty;
   std::vector<std::string> coordinate_names;
   std::vector<ModeFit> modes;
+  // Format 2 with a condition at speed: every mode of the fitted model (the
+  // first condition's values) from standstill to 1.25 times the highest
+  // speed; empty otherwise.
+  std::vector<SpeedCurve> speed_curves;
   // Eq. (19) over in-plane modes and eq. (20) over out-of-plane modes:
   // sum ((f_exp - f_cal) / f_exp)^2; NaN where the plane has no mode.
   double relative_error_in_plane = 0;
@@ -123,13 +157,15 @@ struct IdentifySummary {
       g->Visit("in_plane_eq19", &relative_error_in_plane);
       g->Visit("out_of_plane_eq20", &relative_error_out_of_plane);
     });
-    a->VisitKeyed("parameters", &estimates, &ParameterEstimate::param);
+    a->VisitKeyed("parameters", &estimates, &ParameterEstimate::key);
+    a->Visit("plausibility", &plausibility);
     a->Group("covariance", [&](auto* g) {
       g->Visit("names", &coordinate_names);
       g->Derived("coordinates", std::string("log for positive parameters"));
       uncertainty.Serialize(g);
     });
     a->Visit("modes", &modes);
+    a->Visit("speed_curves", &speed_curves);
   }
 };
 

@@ -31,7 +31,7 @@ class Problem {
   const internal::ParameterSetup& setup() const { return setup_; }
   const internal::ModalResiduals& residuals() const { return *residuals_; }
   // The dataset's initial point in coordinates.
-  Eigen::VectorXd start() const { return setup_.Encode(setup_.start()); }
+  Eigen::VectorXd start() const { return setup_.StartCoordinates(); }
 
  private:
   Problem(std::unique_ptr<ModalModel> model, const Dataset& dataset);

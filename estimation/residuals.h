@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <ceres/cost_function.h>
+#include <ceres/problem.h>
 
 #include "datasets/dataset.h"
 #include "estimation/setup.h"
@@ -48,9 +49,9 @@ struct ResidualOptions {
   double default_damping_sigma = 0.02;  // where damping_sigma is absent
   double default_shape_sigma = 0.05;    // where shape_sigma is absent
   ShapeConvention shape_convention = ShapeConvention::kContract;
-  // A prior on free baseline (not effect) parameters: one residual each,
-  // (log value - log prior) / prior_sigma, for those named in `prior`.
-  // prior_sigma 0: no prior.
+  // A lognormal prior on free positive baseline parameters, median
+  // prior[p] and log-space sigma prior_sigma (0: none), where the dataset
+  // gives no prior of its own (docs/conventions.md §7).
   double prior_sigma = 0;
   std::map<Param, double> prior;
 
@@ -72,18 +73,40 @@ class ModalResiduals {
 
   int num_residuals() const { return num_residuals_; }
   int num_parameters() const { return setup_.size(); }
+  const ParameterSetup& setup() const { return setup_; }
 
-  // r(x). False when the model cannot be solved or a measured mode has no
-  // model counterpart (say, its pair of roots became real).
+  // r(x): every condition's residuals in order, then the priors. False when
+  // the model cannot be solved or a measured mode has no model counterpart
+  // (say, its pair of roots became real).
   bool Evaluate(const double* x, double* residuals) const;
   // For ceres::DynamicNumericDiffCostFunction.
   bool operator()(double const* const* x, double* residuals) const {
     return Evaluate(x[0], residuals);
   }
+  // The rows of condition c, [row_begin(c), row_begin(c + 1)), from the
+  // shared coordinates and that condition's own; rows of the priors follow.
+  bool EvaluateCondition(int c, const double* shared, const double* own, double* r) const;
+  int row_begin(int c) const { return row_begin_[c]; }
 
-  // The model solution at x and, for each measured mode, the index of the
-  // model mode paired with it. False (with `why`) as for Evaluate.
-  bool Pair(const double* x, ModalSolution* solution, std::vector<int>* pairs,
+  // A prior as a residual on one shared coordinate x (docs/conventions.md §7):
+  // normal (value(x) - mean) / sigma, lognormal (x - log median) / s with
+  // s = log(factor_95) / 1.96.
+  struct PriorTerm {
+    int coordinate;
+    PriorDistribution distribution;
+    double center;  // mean, or log median
+    double scale;   // sigma, or s
+    double Residual(const ParameterSetup& setup, double x) const;
+    double Derivative(const ParameterSetup& setup, double x) const;
+    // The prior's variance in the coordinate at x (delta method for normal).
+    double CoordinateVariance(const ParameterSetup& setup, double x) const;
+  };
+  const std::vector<PriorTerm>& priors() const { return priors_; }
+
+  // The model solution of each condition at x and, for each measured mode,
+  // the index of the model mode paired with it in its condition's solution.
+  // False (with `why`) as for Evaluate.
+  bool Pair(const double* x, std::vector<ModalSolution>* solutions, std::vector<int>* pairs,
             std::string* why) const;
 
   // The standard deviation a measured frequency is weighted by (Hz).
@@ -94,8 +117,7 @@ class ModalResiduals {
     int mode;                  // index into dataset.modes; -1 for kPrior
     enum Kind { kFrequency, kDamping, kShape, kPrior } kind;
     Dof dof = Dof::kXb;        // for kShape
-    int coordinate = -1;       // for kPrior
-    double center = 0;         // for kPrior: the prior in coordinates
+    int prior = -1;            // for kPrior: index into priors()
   };
   const std::vector<Slot>& slots() const { return slots_; }
 
@@ -107,7 +129,13 @@ class ModalResiduals {
   const Dataset& dataset_;
   const ParameterSetup& setup_;
   ResidualOptions options_;
+  // Pairs the measured modes of condition c with `solution`'s.
+  bool PairCondition(int c, const ModalSolution& solution, std::vector<int>* pairs,
+                     std::string* why) const;
+
   std::vector<Slot> slots_;
+  std::vector<PriorTerm> priors_;
+  std::vector<int> row_begin_;  // per condition, then the first prior row
   int num_residuals_ = 0;
   mutable std::atomic<long> evaluations_{0};
 };
@@ -120,6 +148,13 @@ class ModalResiduals {
 // 1e-4 the noise and the truncation error are both near 1e-7.
 // The functor is not owned.
 ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals);
+
+// The same residuals in `problem` as one Ceres problem over x: per condition
+// a cost function of the shared coordinates' block and its own block (both
+// pieces of x), and the priors as one more residual block with exact
+// derivatives. Returns the parameter blocks, each {offset in x, size}.
+std::vector<std::pair<int, int>> AddResidualBlocks(const ModalResiduals& residuals,
+                                                   Eigen::VectorXd* x, ceres::Problem* problem);
 
 }  // namespace internal
 }  // namespace ringid

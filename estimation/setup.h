@@ -1,5 +1,6 @@
 // Free, fixed and tied parameters, and the coordinates the optimisers move:
 // log(value) for positive parameters, value / TypicalScale otherwise.
+// Shared coordinates come first, then each condition's own (docs/conventions.md §7).
 #ifndef RINGID_ESTIMATION_SETUP_H_
 #define RINGID_ESTIMATION_SETUP_H_
 
@@ -15,18 +16,43 @@
 
 namespace ringid {
 
+// A parameter, or its value in one condition: "NAME" or "NAME@CONDITION".
+struct ParameterKey {
+  Param param = Param::m_b;
+  std::string condition;  // empty: shared by every condition
+
+  std::string Text() const;
+  static bool Parse(const std::string& text, ParameterKey* key);
+  static constexpr char kKeyDescription[] =
+      "parameter name, or NAME@CONDITION for a per-condition parameter of a format-2 dataset";
+  bool operator==(const ParameterKey& o) const {
+    return param == o.param && condition == o.condition;
+  }
+};
+
 namespace internal {
 
 class ParameterSetup {
  public:
   // Every parameter the model reads is known (fixed), tied (follows its
-  // target) or free. Free ones start at the dataset's initial value.
-  // Returns false with a message naming the parameter when one has no value.
+  // target) or free, in each condition for a per-condition parameter. Free
+  // ones start at the dataset's initial value. Returns false with a message
+  // naming the parameter when one has no value.
   static bool Build(const ModalModel& model, const Dataset& dataset,
                     ParameterSetup* setup, std::string* error);
 
   int size() const { return static_cast<int>(free_.size()); }
+  // The parameter each coordinate sets (a per-condition one once per condition).
   const std::vector<Param>& free() const { return free_; }
+  // The condition a coordinate belongs to; -1 when shared.
+  int condition_of(int i) const { return condition_[i]; }
+  ParameterKey key(int i) const;
+  std::string name(int i) const { return key(i).Text(); }
+  int num_conditions() const { return static_cast<int>(conditions_.size()); }
+  // Coordinates [0, num_shared()) are shared; condition c owns
+  // [own_begin(c), own_begin(c + 1)).
+  int num_shared() const { return own_begin_[0]; }
+  int own_begin(int c) const { return own_begin_[c]; }
   const std::map<Param, Param>& ties() const { return ties_; }
   bool is_log(int i) const {
     return Info(free_[i]).domain == Domain::kPositive;
@@ -34,19 +60,32 @@ class ParameterSetup {
   // Coordinate i at x as a parameter value, and a coordinate standard
   // deviation there in the parameter's units (delta method for log).
   double ToPhysical(int i, double x) const;
+  double ToCoordinate(int i, double value) const;
   double PhysicalStd(int i, double x, double sd) const;
-  // The index of the coordinate that sets p, or -1 when p is fixed.
-  int CoordinateOf(Param p) const;
+  // The index of the coordinate that sets p in `condition`, or -1 when p is
+  // fixed there.
+  int CoordinateOf(Param p, int condition = 0) const;
 
+  // The dataset's starting point in coordinates.
+  Eigen::VectorXd StartCoordinates() const;
+  // p in coordinates, a per-condition coordinate taking p's one value.
   Eigen::VectorXd Encode(const Parameters& p) const;
-  Parameters Decode(const double* x) const;
-  const Parameters& start() const { return start_; }
+  // The parameters of `condition` at x; `own` points to that condition's
+  // coordinates (x + own_begin(condition) when x is whole).
+  Parameters Decode(const double* shared, const double* own, int condition) const;
+  Parameters Decode(const double* x, int condition = 0) const {
+    return Decode(x, x + own_begin_[condition], condition);
+  }
+  const Parameters& start(int condition = 0) const { return start_[condition]; }
 
  private:
   std::vector<Param> used_;
   std::vector<Param> free_;
+  std::vector<int> condition_;
+  std::vector<std::string> conditions_;
+  std::vector<int> own_begin_;  // num_conditions + 1 entries
   std::map<Param, Param> ties_;
-  Parameters start_;
+  std::vector<Parameters> start_;  // per condition
 };
 
 }  // namespace internal

@@ -60,6 +60,8 @@ template <class K>
 std::string KeyText(const K& key) {
   if constexpr (std::is_enum_v<K>) {
     return ToString(key);
+  } else if constexpr (!std::is_same_v<K, std::string>) {
+    return key.Text();
   } else {
     return key;
   }
@@ -71,6 +73,8 @@ bool KeyFromText(const std::string& text, K* key) {
     const auto parsed = FromString<K>(text);
     if (parsed) *key = *parsed;
     return parsed.has_value();
+  } else if constexpr (!std::is_same_v<K, std::string>) {
+    return K::Parse(text, key);
   } else {
     *key = text;
     return true;

@@ -97,13 +97,15 @@ class SchemaWriter {
   static std::string KeyName() {
     if constexpr (std::is_enum_v<K>) {
       return "name (" + EnumChoices<K>() + ")";
+    } else if constexpr (!std::is_same_v<K, std::string>) {
+      return K::kKeyDescription;
     } else {
       return "name";
     }
   }
   template <class K>
   static std::string ShortKey() {
-    return std::is_enum_v<K> ? "name" : "key";
+    return std::is_enum_v<K> || !std::is_same_v<K, std::string> ? "name" : "key";
   }
   template <class T>
   void Field(const char* name, const std::string& note) {

@@ -23,7 +23,7 @@ Dataset Table1() {
 
 const ParameterEstimate& Find(const IdentifySummary& s, Param p) {
   for (const ParameterEstimate& e : s.estimates) {
-    if (e.param == p) return e;
+    if (e.param() == p) return e;
   }
   ADD_FAILURE() << "no estimate for " << ParamName(p);
   return s.estimates.front();

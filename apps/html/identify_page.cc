@@ -87,7 +87,7 @@ Cell FactorCell(std::optional<double> factor) {
 
 // One parameter's row; its interval when it is free and has a std.
 Row ParameterRow(const ParameterEstimate& q, Intervals* intervals) {
-  const std::string name = ToString(q.param);
+  const std::string name = q.key.Text();
   std::string role = q.free ? "free" : "fixed";
   if (q.tied_to) role = std::string("tied to ") + ToString(*q.tied_to);
   const bool has_std = q.std && std::isfinite(*q.std);
@@ -107,7 +107,7 @@ Row ParameterRow(const ParameterEstimate& q, Intervals* intervals) {
   }
   return {TextCell(name),
           NumberCell(q.value),
-          TextCell(Info(q.param).unit),
+          TextCell(Info(q.param()).unit),
           TextCell(role),
           NumberCell(q.std),
           FactorCell(factor),
