@@ -19,6 +19,13 @@ struct PlausibilityFlag {
   std::string rule;               // the rule's id, e.g. "loaded_radius_vs_rolling_radius"
   std::vector<Param> parameters;  // the parameters it concerns
   std::string reason;             // one sentence with the numbers
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rule", &rule);
+    a->Visit("parameters", &parameters);
+    a->Visit("reason", &reason);
+  }
 };
 
 // One row of the rule table.

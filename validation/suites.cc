@@ -130,7 +130,7 @@ Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
       }
       for (const ParameterEstimate& e : f.estimates) {
         if (!e.free || !e.std || e.identifiable != Identifiability::kYes) continue;
-        const double err = std::abs(std::log(e.value / truth[e.param]));
+        const double err = std::abs(std::log(e.value / truth[e.param()]));
         const double sd = *e.std / e.value;
         z.push_back(err / sd);
         ++total;
