@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <Eigen/Cholesky>
@@ -27,7 +28,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // "log K_cx" for a log coordinate, the name otherwise.
 std::string CoordinateText(const ParameterSetup& setup, int i) {
-  return (setup.is_log(i) ? "log " : "") + std::string(ParamName(setup.free()[i]));
+  return (setup.is_log(i) ? "log " : "") + setup.name(i);
 }
 
 double Physical(const ParameterSetup& setup, int i, double x) {
@@ -52,7 +53,7 @@ Combination Describe(const ParameterSetup& setup, const Eigen::VectorXd& d,
   std::ostringstream text;
   for (size_t k = 0; k < order.size(); ++k) {
     const double coef = sign * d[order[k]] / big;
-    c.terms.emplace_back(ParamName(setup.free()[order[k]]), coef);
+    c.terms.emplace_back(setup.name(order[k]), coef);
     const double mag = std::abs(coef);
     if (k > 0) text << (coef < 0 ? " - " : " + ");
     else if (coef < 0) text << "-";
@@ -129,6 +130,9 @@ bool IdentifiabilityOptions::IsValid(std::string* why) const {
   else if (!(collinearity_threshold > 1)) *why = "collinearity_threshold must exceed 1";
   else if (!(near_null > 0 && near_null < 1)) *why = "near_null must lie in (0, 1)";
   else if (!(advice_damping_sigma > 0 && advice_shape_sigma > 0 && advice_known_relative_sigma > 0)) *why = "advice sigmas must be positive";
+  else if (!(advice_load_factor > 0) || !std::isfinite(advice_load_factor)) *why = "advice_load_factor must be positive";
+  else if (std::any_of(advice_speeds_m_s.begin(), advice_speeds_m_s.end(),
+                       [](double v) { return !(v > 0) || !std::isfinite(v); })) *why = "advice speeds must be positive";
   else return fit.IsValid(why);
   return false;
 }
@@ -159,7 +163,7 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
   std::vector<ParameterIdentifiability> out;
   for (int i = 0; i < setup.size(); ++i) {
     ParameterIdentifiability p;
-    p.param = setup.free()[i];
+    p.key = setup.key(i);
     p.value = Physical(setup, i, xhat[i]);
     p.identifiable = u.classes[i];
     p.reason = u.reasons[i];
@@ -191,12 +195,12 @@ void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
       const double lambda_min = 1 - std::abs(cos);
       const double index = lambda_min > 1e-16 ? 1 / std::sqrt(lambda_min) : kInf;
       if (!(index > o.collinearity_threshold)) continue;
-      r->collinear_pairs.push_back({{ParamName(setup.free()[i]), ParamName(setup.free()[j])}, index});
+      r->collinear_pairs.push_back({{setup.name(i), setup.name(j)}, index});
       Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
       d[i] = 1 / ni;
       d[j] = -(cos > 0 ? 1 : -1) / nj;
       Combination c = Describe(setup, d, (J * d).norm() / d.norm());
-      const std::string a = ParamName(setup.free()[i]), b = ParamName(setup.free()[j]);
+      const std::string a = setup.name(i), b = setup.name(j);
       const bool unit = c.terms.size() == 2 && std::abs(std::abs(c.terms[1].second) - 1) < 0.01;
       if (setup.is_log(i) && setup.is_log(j) && unit) {
         c.meaning = c.terms[1].second > 0
@@ -252,7 +256,7 @@ std::vector<std::string> IdentifiableSubset(const Eigen::MatrixXd& J, const Para
   qr.setThreshold(rank_tolerance);
   std::vector<std::string> subset;
   for (int k = 0; k < qr.rank(); ++k) {
-    subset.push_back(ParamName(setup.free()[qr.colsPermutation().indices()[k]]));
+    subset.push_back(setup.name(qr.colsPermutation().indices()[k]));
   }
   return subset;
 }
@@ -313,7 +317,7 @@ std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augment
   }
   const int n = setup.size();
   for (int i = 0; i < n; ++i) {
-    Candidate known{std::string("a known value of ") + ParamName(setup.free()[i]) + " (to " +
+    Candidate known{std::string("a known value of ") + setup.name(i) + " (to " +
                         std::to_string(static_cast<int>(100 * o.advice_known_relative_sigma)) + " %)",
                     {}, Eigen::MatrixXd::Zero(1, n)};
     const double sigma = setup.is_log(i) ? o.advice_known_relative_sigma
@@ -322,6 +326,68 @@ std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augment
     candidates.push_back(known);
   }
   return candidates;
+}
+
+// A new condition as a candidate: the dataset's first condition measured
+// again at `speed` (and at F_cz0 times `load_factor`), its modes the model's
+// at xhat with the observables and sigmas of the measured ones. None where
+// it would add coordinates (per-condition parameters) or cannot be solved.
+std::optional<Candidate> ConditionCandidate(const Problem& problem, const Eigen::VectorXd& xhat,
+                                            double speed, double load_factor,
+                                            const IdentifiabilityOptions& o) {
+  const Dataset& d = problem.dataset();
+  if (!d.per_condition.empty()) return std::nullopt;
+  for (const Condition& c : d.conditions) {
+    if (c.speed_m_s == speed && load_factor == 1) return std::nullopt;  // measured already
+  }
+  Dataset more = d;
+  more.format = 2;
+  Condition added;
+  char name[64];
+  std::snprintf(name, sizeof name, "candidate_%g", speed);
+  added.name = name;
+  added.speed_m_s = speed;
+  Parameters p = problem.setup().Decode(xhat.data(), 0);
+  std::string text;
+  if (load_factor != 1) {
+    const auto load = d.known.find(Param::F_cz0);
+    if (load == d.known.end()) return std::nullopt;
+    more.per_condition = {Param::F_cz0};
+    more.known.erase(Param::F_cz0);
+    for (Condition& c : more.conditions) c.known[Param::F_cz0] = load->second;
+    added.known[Param::F_cz0] = p[Param::F_cz0] = load->second * load_factor;
+    std::snprintf(name, sizeof name, "a second load, F_cz0 x %g (standing)", load_factor);
+  } else {
+    std::snprintf(name, sizeof name, "a drum test at %g m/s", speed);
+  }
+  text = name;
+  const ModalSolution s = problem.model().Solve(p, speed);
+  if (!s.ok) return std::nullopt;
+  const int index = static_cast<int>(more.conditions.size());
+  more.conditions.push_back(added);
+  for (const MeasuredMode& m : d.modes) {
+    const Mode* mode = m.condition == 0 ? s.Find(m.label) : nullptr;
+    if (!mode) continue;
+    MeasuredMode mm = m;
+    mm.condition = index;
+    mm.frequency_hz = mode->frequency_hz;
+    if (m.frequency_sigma_hz) mm.frequency_sigma_hz = *m.frequency_sigma_hz / m.frequency_hz * mode->frequency_hz;
+    if (m.damping_ratio) mm.damping_ratio = std::clamp(mode->damping_ratio, 1e-6, 1 - 1e-6);
+    const RealShapeVector shape = ComparableShape(*mode, o.fit.residuals.shape_convention);
+    for (auto& [dof, v] : mm.shape) v = shape[static_cast<int>(dof)];
+    more.modes.push_back(mm);
+  }
+  Status status;
+  const auto augmented = Problem::Create(problem.model(), more, o.fit.residuals, &status);
+  Eigen::MatrixXd J;
+  if (!augmented || augmented->setup().size() != xhat.size() ||
+      !EvaluateJacobian(augmented->residuals(), xhat, &J)) {
+    return std::nullopt;
+  }
+  const int first = augmented->residuals().row_begin(index);
+  const int rows = augmented->residuals().row_begin(index + 1) - first;
+  if (rows == 0) return std::nullopt;
+  return Candidate{text, {}, J.middleRows(first, rows)};
 }
 
 // Experiment design: for each parameter not identifiable, the candidate
@@ -339,7 +405,11 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
       problem.model(), WithEveryObservation(problem.dataset(), solutions, pairs, o), all, &status);
   Eigen::MatrixXd Ja;
   if (!augmented || !EvaluateJacobian(augmented->residuals(), xhat, &Ja)) return {};
-  const std::vector<Candidate> candidates = Candidates(problem.dataset(), *augmented, xhat, o);
+  std::vector<Candidate> candidates = Candidates(problem.dataset(), *augmented, xhat, o);
+  for (double speed : o.advice_speeds_m_s) {
+    if (auto c = ConditionCandidate(problem, xhat, speed, 1, o)) candidates.push_back(*c);
+  }
+  if (auto c = ConditionCandidate(problem, xhat, 0, o.advice_load_factor, o)) candidates.push_back(*c);
   const ParameterSetup& setup = problem.setup();
   const int n = setup.size();
   const Eigen::MatrixXd F0 = Information(u.jacobian);
@@ -356,7 +426,7 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
     std::vector<Advice> mine;
     for (size_t c = 0; c < candidates.size(); ++c) {
       Advice a;
-      a.parameter = ParamName(setup.free()[i]);
+      a.parameter = setup.name(i);
       a.observation = candidates[c].text;
       a.information_gain = 0.5 * std::log(var0[i] / var_after[c][i]);
       const double sd = std::sqrt(var_after[c][i]);
@@ -398,7 +468,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   const auto problem = Problem::Create(model, dataset, o.fit.residuals, &r->status);
   if (!problem) return;  // Identify built the same problem a moment ago
   const ParameterSetup& setup = problem->setup();
-  const Eigen::VectorXd xhat = setup.Encode(r->fit.parameters);
+  const Eigen::VectorXd& xhat = r->fit.x;
   const Eigen::MatrixXd& J = u.jacobian;
   r->rank = u.rank;
   r->num_residuals = static_cast<int>(J.rows());
@@ -441,7 +511,7 @@ std::string IdentifiabilityReport::FullReport() const {
     const std::string prof = p.profile_95.computed
                                  ? "[" + opt(p.profile_95.lower) + ", " + opt(p.profile_95.upper) + "]"
                                  : "-";
-    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", ParamName(p.param),
+    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", p.key.Text().c_str(),
                   p.value, ToString(p.identifiable), sd, wald, prof.c_str());
     o << line;
   }

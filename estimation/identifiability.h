@@ -36,6 +36,11 @@ struct IdentifiabilityOptions {
   double advice_damping_sigma = 0.02;
   double advice_shape_sigma = 0.05;
   double advice_known_relative_sigma = 0.05;  // a known value to 5 %
+  // New test conditions the advice weighs (docs/conventions.md §7): the
+  // measured modes again, rolling on a drum at each speed, and standing at
+  // the load F_cz0 times advice_load_factor (where F_cz0 is known).
+  std::vector<double> advice_speeds_m_s = {3, 6, 12, 25};
+  double advice_load_factor = 1.5;
   int advice_per_parameter = 3;
 
   bool IsValid(std::string* why) const;
@@ -56,7 +61,7 @@ struct ProfileInterval {
 };
 
 struct ParameterIdentifiability {
-  Param param;
+  ParameterKey key;
   double value = 0;
   Identifiability identifiable = Identifiability::kNo;
   std::string reason;
@@ -64,7 +69,9 @@ struct ParameterIdentifiability {
   std::optional<std::pair<double, double>> wald_95;
   ProfileInterval profile_95;
 
-  template <class Archive>  // keyed by param in IdentifiabilityReport
+  Param param() const { return key.param; }
+
+  template <class Archive>  // keyed by key in IdentifiabilityReport
   void Serialize(Archive* a) {
     a->Visit("value", &value);
     a->Visit("identifiable", &identifiable);
@@ -147,7 +154,7 @@ struct IdentifiabilityReport {
     a->Visit("rank_explanation", &rank_explanation);
     a->Visit("singular_values", &singular_values);
     a->Visit("coordinates", &coordinate_names);
-    a->VisitKeyed("parameters", &parameters, &ParameterIdentifiability::param);
+    a->VisitKeyed("parameters", &parameters, &ParameterIdentifiability::key);
     a->Visit("combinations", &combinations);
     a->Visit("correlation", &correlation);
     a->Visit("collinear_pairs", &collinear_pairs);

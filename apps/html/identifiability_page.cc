@@ -56,7 +56,7 @@ Cell CollinearityCell(double index) {
 void ParametersSection(const IdentifiabilityReport& r, Page* page) {
   std::vector<Row> rows;
   for (const ParameterIdentifiability& q : r.parameters) {
-    rows.push_back({NameCell(q.param), NumberCell(q.value), TextCell(Info(q.param).unit),
+    rows.push_back({TextCell(q.key.Text()), NumberCell(q.value), TextCell(Info(q.param()).unit),
                     NameCell(q.identifiable), NumberCell(q.std), WaldCell(q.wald_95),
                     ProfileCell(q.profile_95), TextCell(q.reason.empty() ? "–" : q.reason)});
   }
@@ -178,7 +178,7 @@ std::string ProfilePanel(Figure* f, const ParameterIdentifiability& q, int colum
   }
   if (points < 2) return "";
   std::ostringstream g;
-  g << "set title " << GnuplotString(ToString(q.param)) << " noenhanced\n"
+  g << "set title " << GnuplotString(q.key.Text()) << " noenhanced\n"
     << (positive ? "set logscale x\n" : "unset logscale x\n")
     << (positive && high > low ? LogTics(low, high) : "set xtics autofreq\n")
     << (column == 0 ? "set ylabel " + GnuplotString(kProfileUnit) + "\n" : "unset ylabel\n");
