@@ -32,7 +32,8 @@ std::string ReportsMarkdown() {
          Section<BenchPaperReport>("ringid bench --suite=paper --output=FILE") +
          Section<BenchSyntheticReport>("ringid bench --suite=synthetic --output=FILE") +
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +
-         Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE");
+         Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE") +
+         Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE");
 }
 
 }  // namespace ringid

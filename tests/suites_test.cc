@@ -1,6 +1,8 @@
 // The quick selection of the benchmark suites, with assertions on accuracy
 // and coverage (never on time).
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -32,6 +34,73 @@ TEST(SuitesTest, SyntheticIntervalsCoverTheTruthAtTheirLevel) {
     EXPECT_NEAR(tire.median_error_over_std, 0.674, 0.15) << tire.tire;
   }
   testing::ExpectRoundTrip(BenchSyntheticReport{{}, r});
+}
+
+TEST(SuitesTest, RollingTireIsIdentifiedStandingAndOnTheDrum) {
+  SuiteOptions o = Options();
+  o.replicates = 12;  // 12 x 14 = 168 intervals, about 4 s
+  RollingSuite r;
+  const Status s = RunRollingSuite(o, &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(r.failed_fits, 0);
+  ASSERT_EQ(r.parameters.size(), 14u);
+  for (Param p : {Param::K_cx, Param::sigma_cx}) {
+    const RollingParameter* c = r.Find(p);
+    ASSERT_NE(c, nullptr) << ToString(p);
+    EXPECT_EQ(c->yes, o.replicates) << ToString(p);
+  }
+  for (const RollingParameter& p : r.parameters) EXPECT_EQ(p.no, 0) << ToString(p.param);
+  EXPECT_TRUE(r.ContactClassedYes());
+  EXPECT_TRUE(r.NeverNo());
+  // A loose check for a small sample: 168 intervals at 95 % cover >= 80 %
+  // unless the stds are badly wrong; the 90-99 % criterion is the full suite's
+  // (200 replicates, ringid bench --suite=rolling).
+  EXPECT_EQ(r.intervals, 12 * 14);
+  EXPECT_GE(r.coverage_95, 0.8);
+  testing::ExpectRoundTrip(BenchRollingReport{{}, r});
+}
+
+TEST(SuitesTest, RollingSuiteRefusesBadSpeeds) {
+  SuiteOptions o = Options();
+  o.replicates = 1;
+  RollingSuite r;
+  o.speeds = {};
+  EXPECT_TRUE(RunRollingSuite(o, &r).invalid_input());
+  o.speeds = {0, 6, 6};
+  EXPECT_TRUE(RunRollingSuite(o, &r).invalid_input());
+  o.speeds = {0, -1};
+  EXPECT_TRUE(RunRollingSuite(o, &r).invalid_input());
+}
+
+// The criteria, checked from the counts; a report whose checks disagree with
+// its counts does not read.
+TEST(SuitesTest, RollingCriteriaFollowTheCounts) {
+  RollingSuite r;
+  r.replicates = 200;
+  r.coverage_95 = 0.95;
+  r.parameters = {{Param::K_cx, 8e4, 190, 10, 0, 200, 0.95, 0, 1},
+                  {Param::sigma_cx, 0.1, 200, 0, 0, 200, 0.89, 0, 1}};
+  EXPECT_TRUE(r.ContactClassedYes());  // 190 of 200 is 95 %
+  EXPECT_TRUE(r.NeverNo());
+  EXPECT_TRUE(r.CoverageInRange());
+  EXPECT_EQ(r.OutsideCoverageRange(), std::vector<Param>{Param::sigma_cx});
+  EXPECT_TRUE(r.Pass());
+  testing::ExpectRoundTrip(BenchRollingReport{{}, r});
+  Json tampered = Json::parse(ReportText(BenchRollingReport{{}, r}));
+  r.parameters[0].yes = 189;
+  EXPECT_FALSE(r.ContactClassedYes());
+  EXPECT_FALSE(r.Pass());
+  r.parameters[0].yes = 190;
+  r.parameters[1].no = 1;
+  EXPECT_FALSE(r.NeverNo());
+  r.parameters[1].no = 0;
+  r.coverage_95 = 0.991;
+  EXPECT_FALSE(r.CoverageInRange());
+  tampered["parameters"]["K_cx"]["yes"] = 100;  // "pass" still says true
+  BenchRollingReport read;
+  std::string error;
+  EXPECT_FALSE(ReadReport(tampered, &read, &error));
+  EXPECT_NE(error.find("checks.contact_classed_yes"), std::string::npos) << error;
 }
 
 TEST(SuitesTest, ConditioningShowsWhatEachKindOfDataDetermines) {

@@ -95,4 +95,43 @@ std::string DiagnosisSuite::Markdown() const {
          "; " + Format("%.2f s", seconds_per_diagnosis) + " per diagnosis.\n";
 }
 
+std::string RollingSuite::Markdown() const {
+  const auto names = [](const std::vector<Param>& params, const char* separator) {
+    std::string text;
+    for (Param p : params) text += (text.empty() ? "" : separator) + std::string(ToString(p));
+    return text;
+  };
+  std::string speeds;
+  for (double v : speeds_m_s) speeds += (speeds.empty() ? "" : ", ") + Format("%g", v);
+  std::string md = "Tire: " + tire + "; at " + speeds +
+                   " m/s, every condition identified jointly; " + std::to_string(replicates) +
+                   " replicates, noise " + Format("%g", 100 * frequency_noise) +
+                   " % frequency, " + Format("%g", 100 * damping_noise) + " % damping, " +
+                   Format("%g", shape_noise) +
+                   " shapes.\n\n"
+                   "| parameter | yes | practically_no | no | intervals | 95 % coverage | mean z |"
+                   " rms z |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const RollingParameter& r : parameters) {
+    md += std::string("| ") + ToString(r.param) + " | " + std::to_string(r.yes) + " | " +
+          std::to_string(r.practically_no) + " | " + std::to_string(r.no) + " | " +
+          std::to_string(r.intervals) + " | " + Percent(r.coverage_95) + " | " +
+          Format("%+.2f", r.mean_z) + " | " + Format("%.2f", r.rms_z) + " |\n";
+  }
+  const std::string contact_names = names(contact, " and ");
+  const std::string outside = names(OutsideCoverageRange(), ", ");
+  const auto verdict = [](bool ok) { return ok ? std::string("met") : std::string("NOT met"); };
+  return md + "\nAll intervals: " + Percent(coverage_95) + " of " + std::to_string(intervals) +
+         " cover the truth (z = log(estimate / truth) / (std / estimate): rms 1 when the std is"
+         " right); " + std::to_string(failed_fits) + " fits failed; " +
+         Format("%.1f s", seconds) + " in all, " + Format("%.2f s", seconds_per_fit) +
+         " per fit.\n\nCriteria: " + contact_names + " classed yes in at least " +
+         Percent(contact_yes_min) + " of the replicates (" + verdict(ContactClassedYes()) +
+         "); no parameter ever classed no (" + verdict(NeverNo()) +
+         "); all intervals together cover the truth " + Percent(coverage_range.first) + " to " +
+         Percent(coverage_range.second) + " of the time (" + verdict(CoverageInRange()) +
+         "). Each parameter's own coverage is reported; outside that range: " +
+         (outside.empty() ? std::string("none") : outside) + ". " +
+         (Pass() ? "PASS" : "FAIL") + ".\n";
+}
+
 }  // namespace ringid

@@ -1,9 +1,11 @@
 #include "validation/suites.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 
 #include "datasets/paper.h"
@@ -179,10 +181,187 @@ Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite) {
     if (!a.status.ok()) return Status::Failed(std::string(v.name) + ": " + a.status.message);
     ConditioningVariant row{v.name, a.num_residuals, a.rank, a.condition_number, {},
                             a.identifiable_subset};
-    for (const auto& p : a.parameters) row.classes[p.param] = p.identifiable;
+    for (const auto& p : a.parameters) row.classes[p.param()] = p.identifiable;
     suite->variants.push_back(std::move(row));
   }
   return Status::Success();
+}
+
+namespace {
+
+// The rolling suite's free parameters: everything the three conditions
+// determine with the paper's four ties (docs/rolling.md); the rest known.
+const Param kRollingFree[] = {P::c_bx, P::c_btheta, P::k_bx,     P::k_btheta, P::K_cx,
+                              P::sigma_cx, P::k_cz, P::c_by,     P::c_bgamma, P::k_by,
+                              P::k_bgamma, P::K_cy, P::sigma_cy, P::t_0};
+const std::pair<Param, Param> kRollingTies[] = {
+    {P::c_bz, P::c_bx}, {P::k_bz, P::k_bx}, {P::c_bpsi, P::c_bgamma}, {P::k_bpsi, P::k_bgamma}};
+
+std::string ConditionName(double speed) {
+  if (speed == 0) return "standing";
+  char text[48];
+  std::snprintf(text, sizeof text, "drum %g m/s", speed);
+  return text;
+}
+
+// One replicate's data: every condition of `speeds` measured with the
+// synthetic suite's noise, shapes on the belt, rim and hub.
+Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds,
+                      std::mt19937_64* rng, Dataset* d) {
+  d->name = "rolling";
+  d->format = 2;
+  d->conditions.clear();
+  for (double v : speeds) {
+    Condition c;
+    c.name = ConditionName(v);
+    c.speed_m_s = v;
+    d->conditions.push_back(c);
+  }
+  SimulateOptions so;
+  so.frequency_noise = kFrequencyNoise;
+  so.damping_noise = kDampingNoise;
+  so.shape_noise = kShapeNoise;
+  std::string why;
+  if (!Simulate(RigidRingModel(), truth, so, rng, d, &why)) return Status::InvalidInput(why);
+  for (int i = 0; i < kNumParams; ++i) {
+    if (Info(ParamAt(i)).group != Group::kEffect) d->known[ParamAt(i)] = truth[ParamAt(i)];
+  }
+  for (const auto& [tied, to] : kRollingTies) {
+    d->known.erase(tied);
+    d->ties[tied] = to;
+  }
+  for (Param p : kRollingFree) {  // start dampers low and the rest high
+    d->known.erase(p);
+    d->initial[p] = truth[p] * (IsDamping(p) ? 0.8 : 1.25);
+  }
+  return Status::Success();
+}
+
+// The error of `estimate` in units of its std: in log space for a positive
+// parameter (the covariance's coordinates), linear otherwise.
+double ErrorOverStd(double estimate, double std, double truth) {
+  if (estimate > 0 && truth > 0) return std::log(estimate / truth) / (std / estimate);
+  return (estimate - truth) / std;
+}
+
+}  // namespace
+
+Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
+  if (o.replicates < 1) return Status::InvalidInput("replicates: must be at least 1");
+  if (o.speeds.empty()) return Status::InvalidInput("speeds: none given");
+  for (size_t i = 0; i < o.speeds.size(); ++i) {
+    if (!(o.speeds[i] >= 0) || !std::isfinite(o.speeds[i])) {
+      return Status::InvalidInput("speeds: must be finite and not negative");
+    }
+    for (size_t j = 0; j < i; ++j) {
+      if (o.speeds[j] == o.speeds[i]) return Status::InvalidInput("speeds: listed twice");
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const Parameters truth = ExampleCarTire();
+  std::mt19937_64 rng(o.seed);
+  struct Tally {
+    std::array<int, 3> classes{};
+    long inside = 0, intervals = 0;
+    double z_sum = 0, z2_sum = 0;
+  };
+  std::map<Param, Tally> tallies;
+  double fit_seconds = 0;
+  int fits = 0;
+  for (int k = 0; k < o.replicates; ++k) {
+    Dataset d;
+    if (Status s = RollingDataset(truth, o.speeds, &rng, &d); !s.ok()) return s;
+    IdentifyOptions io;
+    io.starts = 1;
+    IdentifySummary f;
+    Identify(RigidRingModel(), d, io, &f);
+    if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);
+    if (!f.status.ok()) {
+      ++suite->failed_fits;
+    } else {
+      ++fits;
+      fit_seconds += f.seconds;
+      for (const ParameterEstimate& e : f.estimates) {
+        if (!e.free) continue;
+        Tally& t = tallies[e.param()];
+        ++t.classes[static_cast<int>(e.identifiable)];
+        if (!e.std || !(*e.std > 0) || !std::isfinite(*e.std)) continue;
+        const double z = ErrorOverStd(e.value, *e.std, truth[e.param()]);
+        ++t.intervals;
+        t.inside += std::abs(z) <= kNormal95;
+        t.z_sum += z;
+        t.z2_sum += z * z;
+      }
+    }
+    if (o.on_case) o.on_case(k + 1, o.replicates);
+  }
+  long inside_all = 0;
+  for (Param p : kRollingFree) {
+    const Tally& t = tallies[p];
+    const double n = static_cast<double>(t.intervals);
+    RollingParameter r;
+    r.param = p;
+    r.truth = truth[p];
+    r.yes = t.classes[static_cast<int>(Identifiability::kYes)];
+    r.practically_no = t.classes[static_cast<int>(Identifiability::kPracticallyNo)];
+    r.no = t.classes[static_cast<int>(Identifiability::kNo)];
+    r.intervals = t.intervals;
+    r.coverage_95 = t.intervals ? t.inside / n : NAN;
+    r.mean_z = t.intervals ? t.z_sum / n : NAN;
+    r.rms_z = t.intervals ? std::sqrt(t.z2_sum / n) : NAN;
+    suite->parameters.push_back(r);
+    suite->intervals += t.intervals;
+    inside_all += t.inside;
+  }
+  suite->coverage_95 =
+      suite->intervals ? static_cast<double>(inside_all) / suite->intervals : NAN;
+  suite->tire = "example car tire (205/60R15 belt, 4 kN load)";
+  suite->speeds_m_s = o.speeds;
+  suite->replicates = o.replicates;
+  suite->frequency_noise = kFrequencyNoise;
+  suite->damping_noise = kDampingNoise;
+  suite->shape_noise = kShapeNoise;
+  suite->ties.insert(std::begin(kRollingTies), std::end(kRollingTies));
+  suite->seconds_per_fit = fits ? fit_seconds / fits : NAN;
+  suite->seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Success();
+}
+
+const RollingParameter* RollingSuite::Find(Param p) const {
+  for (const RollingParameter& r : parameters) {
+    if (r.param == p) return &r;
+  }
+  return nullptr;
+}
+
+bool RollingSuite::ContactClassedYes() const {
+  for (Param p : contact) {
+    const RollingParameter* r = Find(p);
+    if (!r || replicates < 1 || r->yes < contact_yes_min * replicates) return false;
+  }
+  return true;
+}
+
+bool RollingSuite::NeverNo() const {
+  for (const RollingParameter& r : parameters) {
+    if (r.no > 0) return false;
+  }
+  return true;
+}
+
+bool RollingSuite::CoverageInRange() const {
+  return coverage_95 >= coverage_range.first && coverage_95 <= coverage_range.second;
+}
+
+std::vector<Param> RollingSuite::OutsideCoverageRange() const {
+  std::vector<Param> out;
+  for (const RollingParameter& r : parameters) {
+    if (!(r.coverage_95 >= coverage_range.first && r.coverage_95 <= coverage_range.second)) {
+      out.push_back(r.param);
+    }
+  }
+  return out;
 }
 
 int ConditioningVariant::Count(Identifiability c) const {
@@ -204,6 +383,9 @@ const std::vector<SuiteEntry>& Suites() {
        }},
       {"diagnosis", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchDiagnosisReport>(RunDiagnosisSuite, o, p);
+       }},
+      {"rolling", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchRollingReport>(RunRollingSuite, o, p);
        }},
   };
   return suites;

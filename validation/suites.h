@@ -23,8 +23,10 @@ namespace ringid {
 
 struct SuiteOptions {
   std::string source_dir = ".";  // where datasets/ lives
-  int replicates = 200;          // synthetic: Monte Carlo replicates per tire
+  int replicates = 200;          // synthetic (per tire), rolling: Monte Carlo replicates
   unsigned seed = 1;
+  // rolling: the conditions measured, m/s (0: standing; the others on a drum).
+  std::vector<double> speeds = {0, 6, 12};
   // Called with (done, total) as the suite's cases finish.
   std::function<void(int, int)> on_case;
 };
@@ -195,15 +197,101 @@ struct DiagnosisSuite {
   }
 };
 
+// --- rolling: one car tire standing and on the drum, every condition
+// identified jointly; classes and 95 % intervals over Monte Carlo replicates.
+struct RollingParameter {
+  Param param = Param::m_b;
+  double truth = 0;
+  // Replicates whose fit classed it so (a failed fit classes nothing).
+  int yes = 0, practically_no = 0, no = 0;
+  long intervals = 0;      // fits that gave it a std
+  double coverage_95 = 0;  // of those intervals, the share holding the truth
+  // z = log(estimate / truth) / (std / estimate) (linear where not positive):
+  // the mean shows a bias, the rms is 1 when the std is right.
+  double mean_z = 0;
+  double rms_z = 0;
+  template <class Archive>  // keyed by param
+  void Serialize(Archive* a) {
+    a->Visit("truth", &truth);
+    a->Visit("yes", &yes);
+    a->Visit("practically_no", &practically_no);
+    a->Visit("no", &no);
+    a->Visit("intervals", &intervals);
+    a->Visit("coverage_95", &coverage_95);
+    a->Visit("mean_z", &mean_z);
+    a->Visit("rms_z", &rms_z);
+  }
+};
+
+struct RollingSuite {
+  std::string tire;
+  std::vector<double> speeds_m_s;
+  int replicates = 0;
+  double frequency_noise = 0, damping_noise = 0, shape_noise = 0;
+  std::map<Param, Param> ties;  // tied parameter -> the one it shares
+  std::vector<RollingParameter> parameters;  // the free ones
+  long intervals = 0;
+  double coverage_95 = 0;  // every free parameter's intervals together
+  int failed_fits = 0;
+  double seconds = 0;          // the whole suite, wall clock
+  double seconds_per_fit = 0;  // Identify's own time, mean
+  // The pass criteria, stated in the report and checked by the suite.
+  std::vector<Param> contact = {Param::K_cx, Param::sigma_cx};
+  double contact_yes_min = 0.95;  // share of all replicates classing each of `contact` yes
+  std::pair<double, double> coverage_range{0.90, 0.99};  // of coverage_95
+
+  const RollingParameter* Find(Param p) const;
+  // Every parameter of `contact` classed yes in contact_yes_min of the replicates.
+  bool ContactClassedYes() const;
+  bool NeverNo() const;  // no parameter classed no in any replicate
+  bool CoverageInRange() const;
+  // Parameters whose own coverage is outside coverage_range (reported, not a criterion).
+  std::vector<Param> OutsideCoverageRange() const;
+  bool Pass() const { return ContactClassedYes() && NeverNo() && CoverageInRange(); }
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("tire", &tire);
+    a->Visit("speeds_m_s", &speeds_m_s);
+    a->Visit("replicates", &replicates);
+    a->Group("noise", [&](auto* g) {
+      g->Visit("frequency_relative", &frequency_noise);
+      g->Visit("damping_relative", &damping_noise);
+      g->Visit("shape", &shape_noise);
+    });
+    a->Visit("ties", &ties);
+    a->VisitKeyed("parameters", &parameters, &RollingParameter::param);
+    a->Visit("intervals", &intervals);
+    a->Visit("coverage_95", &coverage_95);
+    a->Visit("failed_fits", &failed_fits);
+    a->Visit("seconds", &seconds);
+    a->Visit("seconds_per_fit", &seconds_per_fit);
+    a->Group("criteria", [&](auto* g) {
+      g->Visit("classed_yes", &contact);
+      g->Visit("classed_yes_share_min", &contact_yes_min);
+      g->Visit("coverage_95_range", &coverage_range);
+    });
+    a->Group("checks", [&](auto* g) {
+      g->Derived("contact_classed_yes", ContactClassedYes());
+      g->Derived("never_no", NeverNo());
+      g->Derived("coverage_in_range", CoverageInRange());
+      g->Derived("parameters_outside_coverage_range", OutsideCoverageRange());
+    });
+    a->Derived("pass", Pass());
+  }
+};
+
 using BenchPaperReport = Report<ReportKind::kBenchPaper, PaperSuite>;
 using BenchSyntheticReport = Report<ReportKind::kBenchSynthetic, SyntheticSuite>;
 using BenchConditioningReport = Report<ReportKind::kBenchConditioning, ConditioningSuite>;
 using BenchDiagnosisReport = Report<ReportKind::kBenchDiagnosis, DiagnosisSuite>;
+using BenchRollingReport = Report<ReportKind::kBenchRolling, RollingSuite>;
 
 Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite);
 Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite);
 Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite);
 Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite);
+Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite);
 
 // A suite by name, run into its report's JSON text and Markdown table.
 struct SuiteOutput {

@@ -45,6 +45,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchSynthetic, Typed<BenchSyntheticReport, html::BenchSyntheticPage>},
     {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},
     {ReportKind::kBenchDiagnosis, Typed<BenchDiagnosisReport, html::BenchDiagnosisPage>},
+    {ReportKind::kBenchRolling, Typed<BenchRollingReport, html::BenchRollingPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

@@ -9,6 +9,7 @@
 #include "apps/html/text.h"
 #include "estimation/statistics.h"
 #include "model/parameters.h"
+#include "model/plausibility.h"
 
 namespace ringid::html {
 namespace {
@@ -53,6 +54,12 @@ FactRows SummaryFacts(const std::string& dataset, const IdentifySummary& s) {
           {"condition number", NumberCell(u.condition_number)}};
 }
 
+// A measured mode as the figures name it: its label, after its condition
+// in format-2 data ("drum_6 vertical").
+std::string ModeName(const ModeFit& m) {
+  return m.condition ? *m.condition + " " + ToString(m.label) : std::string(ToString(m.label));
+}
+
 // The modes table; the frequencies for the figure.
 FrequencyFigureOptions ModesSection(const std::vector<ModeFit>& modes, Page* page) {
   FrequencyFigureOptions figure;
@@ -60,23 +67,41 @@ FrequencyFigureOptions ModesSection(const std::vector<ModeFit>& modes, Page* pag
   figure.reference_title = "measured ± 1σ";
   figure.band_title = "± 1σ of the measurement";
   figure.reference_name = "measured";
+  const bool conditions =
+      std::any_of(modes.begin(), modes.end(), [](const ModeFit& m) { return m.condition; });
   std::vector<Row> rows;
   for (const ModeFit& m : modes) {
     const double difference = m.model_hz - m.measured_hz;
     std::optional<double> z;
     if (m.measured_sigma_hz > 0) z = difference / m.measured_sigma_hz;
-    rows.push_back({NameCell(m.label), NameCell(m.model_label), NumberCell(m.measured_hz, "%.3f"),
-                    NumberCell(m.measured_sigma_hz, "%.3g"), NumberCell(m.model_hz, "%.3f"),
-                    NumberCell(difference, "%.3g"), NumberCell(z, "%.3g"),
-                    NumberCell(m.measured_damping), NumberCell(m.model_damping),
-                    NumberCell(m.mac, "%.3f")});
-    figure.AddMode(ToString(m.label), m.measured_hz, m.measured_sigma_hz, m.model_hz);
+    Row row;
+    if (conditions) {
+      row.push_back(TextCell(m.condition.value_or("–")));
+      row.push_back(NumberCell(m.speed_m_s, "%.3g"));
+    }
+    for (Cell cell :
+         {NameCell(m.label), NameCell(m.model_label), NumberCell(m.measured_hz, "%.3f"),
+          NumberCell(m.measured_sigma_hz, "%.3g"), NumberCell(m.model_hz, "%.3f"),
+          NumberCell(difference, "%.3g"), NumberCell(z, "%.3g"), NumberCell(m.measured_damping),
+          NumberCell(m.model_damping), NumberCell(m.mac, "%.3f")}) {
+      row.push_back(cell);
+    }
+    rows.push_back(row);
+    figure.AddMode(ModeName(m), m.measured_hz, m.measured_sigma_hz, m.model_hz);
   }
+  std::vector<std::string> head = {"mode",
+                                   "model mode",
+                                   "measured (Hz)",
+                                   "σ (Hz)",
+                                   "model (Hz)",
+                                   "model − measured (Hz)",
+                                   "(model − measured) / σ",
+                                   "measured damping ratio",
+                                   "model damping ratio",
+                                   "MAC"};
+  if (conditions) head.insert(head.begin(), {"condition", "speed (m/s)"});
   page->Heading("Modes");
-  page->Table(
-      {"mode", "model mode", "measured (Hz)", "σ (Hz)", "model (Hz)", "model − measured (Hz)",
-       "(model − measured) / σ", "measured damping ratio", "model damping ratio", "MAC"},
-      rows);
+  page->Table(head, rows);
   return figure;
 }
 
@@ -85,8 +110,9 @@ Cell FactorCell(std::optional<double> factor) {
   return {*factor > 1e6 ? "> 10⁶" : "× ÷ " + Format(*factor, "%.3g"), true};
 }
 
-// One parameter's row; its interval when it is free and has a std.
-Row ParameterRow(const ParameterEstimate& q, Intervals* intervals) {
+// One parameter's row; its interval when it is free and has a std. With
+// `priors`, the prior's share and what decided the value.
+Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) {
   const std::string name = q.key.Text();
   std::string role = q.free ? "free" : "fixed";
   if (q.tied_to) role = std::string("tied to ") + ToString(*q.tied_to);
@@ -105,25 +131,81 @@ Row ParameterRow(const ParameterEstimate& q, Intervals* intervals) {
   } else if (q.free) {
     intervals->without_std.push_back(name);
   }
-  return {TextCell(name),
-          NumberCell(q.value),
-          TextCell(Info(q.param()).unit),
-          TextCell(role),
-          NumberCell(q.std),
-          FactorCell(factor),
-          NameCell(q.identifiable),
-          TextCell(q.reason)};
+  Row row = {TextCell(name),
+             NumberCell(q.value),
+             TextCell(Info(q.param()).unit),
+             TextCell(role),
+             NumberCell(q.std),
+             FactorCell(factor),
+             NameCell(q.identifiable),
+             TextCell(q.reason)};
+  if (priors) {
+    row.push_back(PercentCell(q.prior_share));
+    row.push_back(TextCell(q.prior_share ? q.DecidedBy() : "–"));
+  }
+  return row;
+}
+
+// In words, which parameters with a prior the prior decides and which the
+// data do (as IdentifySummary::FullReport says it).
+std::string PriorSentence(const std::vector<ParameterEstimate>& estimates) {
+  std::vector<std::string> by_prior, by_both, by_data;
+  for (const ParameterEstimate& q : estimates) {
+    if (!q.prior_share) continue;
+    const std::string decided = q.DecidedBy();
+    (decided == "the prior" ? by_prior : decided == "the data" ? by_data : by_both)
+        .push_back(q.key.Text());
+  }
+  std::vector<std::string> parts;
+  if (!by_prior.empty()) {
+    parts.push_back("decided by their priors (posterior variance over 50 % of the prior "
+                    "variance): " +
+                    Join(by_prior, ", "));
+  }
+  if (!by_both.empty()) {
+    parts.push_back("decided by data and priors together: " + Join(by_both, ", "));
+  }
+  if (!by_data.empty()) {
+    parts.push_back("decided by the data despite a prior (under 10 % of the prior variance "
+                    "left): " +
+                    Join(by_data, ", "));
+  }
+  return "Parameters with a prior: " + Join(parts, "; ") +
+         ". The column “posterior / prior variance” is the share of the prior variance a "
+         "parameter keeps after the fit; parameters without a prior are decided by the data "
+         "alone.";
 }
 
 Intervals ParametersSection(const std::vector<ParameterEstimate>& estimates, Page* page) {
   Intervals intervals;
+  const bool priors = std::any_of(estimates.begin(), estimates.end(),
+                                  [](const ParameterEstimate& q) { return q.prior_share; });
   std::vector<Row> rows;
-  for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, &intervals));
+  for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, priors, &intervals));
+  std::vector<std::string> head = {"parameter", "value", "unit", "role", "std",
+                                   "95 % interval (factor)", "identifiable", "reason"};
+  if (priors) head.insert(head.end(), {"posterior / prior variance (%)", "decided by"});
   page->Heading("Parameters");
-  page->Table({"parameter", "value", "unit", "role", "std", "95 % interval (factor)",
-               "identifiable", "reason"},
-              rows);
+  if (priors) page->Note(PriorSentence(estimates));
+  page->Table(head, rows);
   return intervals;
+}
+
+// The plausibility flags (docs/plausibility.md), as a section of their own.
+void PlausibilitySection(const std::vector<PlausibilityFlag>& flags, Page* page) {
+  std::vector<Row> rows;
+  for (const PlausibilityFlag& f : flags) {
+    std::vector<std::string> names;
+    for (Param p : f.parameters) names.push_back(ToString(p));
+    rows.push_back({TextCell(f.rule), ListCell(names), TextCell(f.reason)});
+  }
+  page->Heading("Plausibility");
+  page->Note("The fitted values break " + std::to_string(flags.size()) +
+             (flags.size() == 1 ? " rule" : " rules") +
+             " of the ranges typical of a tire (docs/plausibility.md): a warning, not an error. "
+             "Such a value was usually not determined by the data, or the model lacks "
+             "something.");
+  page->Table({"rule", "parameters", "reason"}, rows);
 }
 
 // MAC of the measured shapes against every model shape.
@@ -152,7 +234,7 @@ void MacFigure(const std::vector<ModeFit>& modes, Page* page) {
     for (const auto& [label, mac] : m->mac_all) append_once(label);
   }
   for (const ModeFit* m : measured) {
-    map.rows.push_back(ToString(m->label));
+    map.rows.push_back(ModeName(*m));
     map.values.emplace_back();
     for (ModeLabel column : columns) {
       const auto it = m->mac_all.find(column);
@@ -228,13 +310,154 @@ void IntervalFigure(const Intervals& intervals, Page* page) {
   }
 }
 
+// A mode label's colour in the Campbell figure: the same for its model
+// curve and its measured points, in both panels.
+const char* LabelColor(ModeLabel label) {
+  static constexpr const char* kColors[kNumLabels] = {
+      kBlue,     kOrange,   kGreen,    kRed,      "#9467bd",
+      "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#555555"};
+  const int i = static_cast<int>(label);
+  return i >= 0 && i < kNumLabels ? kColors[i] : kGrey;
+}
+
+// One curve of the model against speed as rows (speed, value), broken where
+// the mode is overdamped (a non-finite value).
+Series CurveSeries(const std::vector<double>& speed, const std::vector<double>& value,
+                   double* top) {
+  Series s;
+  bool broken = true;
+  for (size_t k = 0; k < std::min(speed.size(), value.size()); ++k) {
+    if (!std::isfinite(speed[k])) continue;
+    *top = std::max(*top, speed[k]);
+    if (std::isfinite(value[k])) {
+      s.Row({speed[k], value[k]});
+      broken = false;
+    } else if (!broken) {
+      s.Break();
+      broken = true;
+    }
+  }
+  return s;
+}
+
+// The plot commands of one panel of the Campbell figure: a line per model
+// curve and the measured points in the same colour.
+struct CampbellPanel {
+  std::vector<std::string> parts;
+  // The panel's plot command; an empty panel keeps its axes.
+  std::string Plot() const {
+    return parts.empty() ? "set yrange [0:1]\nplot -1 notitle\n" : PlotCommand(parts);
+  }
+};
+
+// The conditions of the measured modes, with their speeds, in first-seen order.
+std::vector<std::pair<std::string, double>> MeasuredConditions(const std::vector<ModeFit>& modes) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const ModeFit& m : modes) {
+    if (!m.condition || !m.speed_m_s || !std::isfinite(*m.speed_m_s)) continue;
+    const bool seen = std::any_of(out.begin(), out.end(),
+                                  [&](const auto& c) { return c.first == *m.condition; });
+    if (!seen) out.push_back({*m.condition, *m.speed_m_s});
+  }
+  return out;
+}
+
+std::string CampbellScript(Figure* f, const IdentifySummary& s, bool* drawn) {
+  CampbellPanel frequency, damping;
+  double top = 0;
+  for (const SpeedCurve& c : s.speed_curves) {
+    const std::string style =
+        " using 1:2 with lines lw 2 lc rgb '" + std::string(LabelColor(c.label)) + "' ";
+    const Series fs = CurveSeries(c.speed_m_s, c.frequency_hz, &top);
+    const Series ds = CurveSeries(c.speed_m_s, c.damping_ratio, &top);
+    if (!fs.empty()) {
+      frequency.parts.push_back(f->AddData(fs) + style + "title " +
+                                GnuplotString(Pretty(ToString(c.label))));
+    }
+    if (!ds.empty()) damping.parts.push_back(f->AddData(ds) + style + "notitle");
+  }
+  std::map<ModeLabel, Series> measured_hz, measured_damping;
+  for (const ModeFit& m : s.modes) {
+    if (!m.speed_m_s || !std::isfinite(*m.speed_m_s)) continue;
+    top = std::max(top, *m.speed_m_s);
+    measured_hz[m.label].Row({*m.speed_m_s, m.measured_hz});
+    if (m.measured_damping) measured_damping[m.label].Row({*m.speed_m_s, *m.measured_damping});
+  }
+  const auto points = [f](const std::map<ModeLabel, Series>& by_label, CampbellPanel* panel) {
+    for (const auto& [label, series] : by_label) {
+      if (series.empty()) continue;
+      panel->parts.push_back(f->AddData(series) +
+                             " using 1:2 with points pt 7 ps 1.1 lc rgb '" + LabelColor(label) +
+                             "' notitle");
+    }
+  };
+  points(measured_hz, &frequency);
+  points(measured_damping, &damping);
+  *drawn = !frequency.parts.empty() || !damping.parts.empty();
+  if (!(top > 0)) top = 1;
+  const double h = f->height;
+  std::ostringstream g;
+  g << "set multiplot\n"
+    << "set lmargin at screen 0.09\nset rmargin at screen 0.80\n"
+    << "set xrange [" << -0.03 * top << ":" << top << "]\n"
+    << "set offsets 0, 0, graph 0.05, graph 0.05\n"
+    << "set grid xtics ytics\n";
+  int id = 1;
+  for (const auto& [name, speed] : MeasuredConditions(s.modes)) {
+    const std::string x = Format(speed, "%.12g");
+    g << VerticalLine(id, x, kDashedGrey) << "set label " << id << " "
+      << GnuplotString(Pretty(name)) << " at first " << x
+      << ", graph 0.97 right rotate by 90 offset 1, 0 noenhanced tc rgb '#666666'\n";
+    ++id;
+  }
+  // Top: frequency, the key beside it; bottom: damping ratio.
+  g << "set tmargin at screen " << 1 - 20 / h << "\nset bmargin at screen 0.53\n"
+    << "set format x ''\nunset xlabel\nset ylabel 'frequency (Hz)'\n"
+    << "set key at screen 0.82, screen " << 1 - 20 / h << " left top title 'mode' noenhanced\n"
+    << frequency.Plot() << "unset label\nset autoscale y\n"
+    << "set tmargin at screen 0.47\nset bmargin at screen " << 55 / h << "\n"
+    << "set format x '%g'\nset xlabel 'forward speed (m/s)'\nset ylabel 'damping ratio'\n"
+    << "unset key\n"
+    << damping.Plot() << "unset multiplot\n";
+  return g.str();
+}
+
+// Frequency and damping ratio of every mode of the fitted model against
+// forward speed, and the measured modes at their conditions' speeds.
+void CampbellFigure(const IdentifySummary& s, Page* page) {
+  if (s.speed_curves.empty()) return;
+  Figure f("identify-campbell", 900, 760);
+  bool drawn = false;
+  f.script = CampbellScript(&f, s, &drawn);
+  if (!drawn) {
+    page->Note("No speed figure: the fitted model has no oscillating mode at any speed.");
+    return;
+  }
+  std::vector<std::string> conditions;
+  for (const auto& [name, speed] : MeasuredConditions(s.modes)) {
+    conditions.push_back(name + " (" + Format(speed, "%.3g") + " m/s)");
+  }
+  f.caption =
+      "Campbell diagram: frequency (Hz, top) and damping ratio (dimensionless, bottom) of each "
+      "mode against forward speed (m/s), one colour per mode. Lines: the fitted model (with "
+      "the parameter values of the first condition), broken where a mode is overdamped. Dots: the "
+      "measured modes, in their mode's colour, at the speed of their condition";
+  f.caption += conditions.empty() ? " (no measured mode names a speed)."
+                                  : ", marked by dashed lines: " + Join(conditions, ", ") + ".";
+  page->AddFigure(std::move(f));
+}
+
 }  // namespace
 
 void IdentifyPage(const IdentifyReport& report, Page* page) {
   const IdentifySummary& summary = report.body.result;
   page->Summary(SummaryFacts(report.body.dataset, summary));
+  if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
   const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
   const Intervals intervals = ParametersSection(summary.estimates, page);
+  if (summary.plausibility.empty() && !summary.estimates.empty()) {
+    page->Note("Plausibility: every value within its plausible range (docs/plausibility.md).");
+  }
   page->Heading("Figures");
   if (auto f = FrequencyFigure(frequencies)) {
     f->caption =
@@ -242,6 +465,7 @@ void IdentifyPage(const IdentifyReport& report, Page* page) {
         "Right: model − measured, in Hz, against the ± 1σ of the measurement drawn around 0.";
     page->AddFigure(std::move(*f));
   }
+  CampbellFigure(summary, page);
   MacFigure(summary.modes, page);
   IntervalFigure(intervals, page);
 }
