@@ -2,6 +2,7 @@
 
 #include "estimation/problem.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -181,7 +182,10 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       const ModalSolution& solution = solutions[m.condition];
       const Mode& mode = solution.modes[pairs[i]];
       ModeFit f;
-      if (dataset.format == 2) f.condition = dataset.conditions[m.condition].name;
+      if (dataset.format == 2) {
+        f.condition = dataset.conditions[m.condition].name;
+        f.speed_m_s = dataset.conditions[m.condition].speed_m_s;
+      }
       f.label = m.label;
       f.model_label = mode.label;
       f.measured_hz = m.frequency_hz;
@@ -232,13 +236,18 @@ std::string IdentifySummary::FullReport() const {
   std::snprintf(line, sizeof line,
                 "  eq. (19) in-plane error %.3e, eq. (20) out-of-plane error %.3e\n",
                 relative_error_in_plane, relative_error_out_of_plane);
-  o << line << "\n  mode                  measured Hz   model Hz   zeta   MAC\n";
+  int width = 20;  // the longest label; with conditions, "condition label"
+  for (const ModeFit& m : modes) {
+    if (m.condition) width = std::max<int>(width, m.condition->size() + 20);
+  }
+  o << line << "\n  " << std::string("mode") + std::string(width - 4, ' ')
+    << " measured Hz   model Hz   zeta   MAC\n";
   for (const ModeFit& m : modes) {
     char mac[16] = "-";
     if (m.mac) std::snprintf(mac, sizeof mac, "%.3f", *m.mac);
     const std::string name = m.condition ? *m.condition + " " + LabelName(m.label)
                                          : std::string(LabelName(m.label));
-    std::snprintf(line, sizeof line, "  %-20s %10.3f %10.3f %6.3f %5s%s\n",
+    std::snprintf(line, sizeof line, "  %-*s %10.3f %10.3f %6.3f %5s%s\n", width,
                   name.c_str(), m.measured_hz, m.model_hz,
                   m.model_damping, mac,
                   m.model_label != m.label

@@ -68,6 +68,7 @@ struct ParameterEstimate {
 
 struct ModeFit {
   std::optional<std::string> condition;  // format 2: the condition's name
+  std::optional<double> speed_m_s;       // format 2: the condition's speed
   ModeLabel label;     // the measured mode's label
   ModeLabel model_label;  // the label of the model mode it was paired with
   double measured_hz = 0;
@@ -82,6 +83,7 @@ struct ModeFit {
   template <class Archive>
   void Serialize(Archive* a) {
     a->VisitIfSet("condition", &condition);
+    a->VisitIfSet("speed_m_s", &speed_m_s);
     a->Visit("label", &label);
     a->Visit("measured_hz", &measured_hz);
     a->Visit("measured_sigma_hz", &measured_sigma_hz);

@@ -13,10 +13,15 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <ostream>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "datasets/dataset.h"
+#include "datasets/synthetic.h"
+#include "model/rigid_ring_model.h"
 #include "tests/browser_check.h"
 #include "report/report.h"
 #include "validation/suites.h"
@@ -175,6 +180,42 @@ Made Campaign() {
   return Render(reports + "/campaign.json");
 }
 
+// A format-2 dataset (docs/conventions.md §7): the example car tire standing
+// and rolling on a drum at 6 m/s, simulated with the knowns and starting
+// values `ringid simulate` gives. With priors: a tight one on r_e0 (the prior
+// decides it) and a wide one on k_bx (the data do).
+std::string RollingDataset(const std::string& name, bool priors) {
+  using ringid::Param;
+  const ringid::Parameters truth = ringid::ExampleCarTire();
+  ringid::Dataset d;
+  d.name = name;
+  d.format = 2;
+  d.conditions = {{"standing", 0.0, {}, {}}, {"drum_6", 6.0, {}, {}}};
+  std::mt19937_64 rng(7);
+  ringid::SetEngineerPriors(truth, 0.1, &rng, &d);
+  if (priors) {
+    d.priors[Param::r_e0] = {ringid::PriorDistribution::kLognormal, truth[Param::r_e0], 1.001};
+    d.priors[Param::k_bx] = {ringid::PriorDistribution::kLognormal, truth[Param::k_bx], 100};
+  }
+  std::string why;
+  EXPECT_TRUE(ringid::Simulate(ringid::RigidRingModel(), truth, ringid::SimulateOptions{}, &rng,
+                               &d, &why))
+      << why;
+  const std::string path = Scratch(name + "_dataset.json");
+  std::ofstream(path) << ringid::DatasetToJson(d);
+  return path;
+}
+
+// That dataset identified (one start) and rendered; made once per process.
+Made IdentifyRolling(bool priors = false) {
+  static std::map<bool, Made> made;
+  const auto it = made.find(priors);
+  if (it != made.end()) return it->second;
+  const std::string name = priors ? "identify_rolling_priors" : "identify_rolling";
+  return made[priors] =
+             Make(name, "identify --starts=1 --dataset=" + RollingDataset(name, priors));
+}
+
 Made Bench(const std::string& suite) {
   return Make("bench_" + suite, "bench --suite=" + suite + " --replicates=2", true);
 }
@@ -315,6 +356,134 @@ TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
   if (verdict["effect"] != "none") {  // before and after, one panel each
     EXPECT_NE(svg.find("after: with " + verdict["effect"].get<std::string>()), std::string::npos);
   }
+}
+
+// The SVG of the figure with id `id`, or "".
+std::string FigureSvg(const std::string& html, const std::string& id) {
+  const size_t at = html.find("<figure id=\"" + id + "\">");
+  if (at == std::string::npos) return "";
+  const size_t begin = html.find("<svg", at), end = html.find("</svg>", at);
+  return begin == std::string::npos || end == std::string::npos ? ""
+                                                                 : html.substr(begin, end - begin);
+}
+
+TEST(HtmlReportTest, IdentifyAtSpeedDrawsACampbellFigure) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyRolling();
+  ASSERT_FALSE(m.report["speed_curves"].empty());
+  ASSERT_EQ(m.report["modes"].size(), 14u);  // seven modes in each of two conditions
+  for (const json& mode : m.report["modes"]) {
+    ASSERT_TRUE(mode.contains("condition")) << mode;
+    ASSERT_TRUE(mode.contains("speed_m_s")) << mode;
+    EXPECT_EQ(mode["speed_m_s"].get<double>(), mode["condition"] == "drum_6" ? 6.0 : 0.0);
+  }
+  const int figures = Count(m.html, "<figure");
+  ExpectWellFormed(m.html, figures);
+  const std::string svg = FigureSvg(m.html, "identify-campbell");
+  ASSERT_FALSE(svg.empty());
+  EXPECT_NE(svg.find("forward speed (m/s)"), std::string::npos);
+  EXPECT_NE(svg.find("frequency (Hz)"), std::string::npos);
+  EXPECT_NE(svg.find("damping ratio"), std::string::npos);
+  // Each mode's curve is in the key; each condition's speed is marked.
+  for (const json& curve : m.report["speed_curves"]) {
+    EXPECT_NE(svg.find(">" + Shown(curve["label"]) + "<"), std::string::npos) << curve["label"];
+  }
+  EXPECT_NE(svg.find(">drum 6<"), std::string::npos);
+  EXPECT_NE(m.html.find("drum_6 (6 m/s)"), std::string::npos);
+  // The modes table names each mode's condition and speed.
+  EXPECT_NE(m.html.find("<th>condition</th>"), std::string::npos);
+  EXPECT_NE(m.html.find("<th>speed (m/s)</th>"), std::string::npos);
+  EXPECT_EQ(Count(m.html, "<td>drum_6</td>"), 7);
+  // The frequency figure tells the conditions apart.
+  EXPECT_NE(Figures(m.html).find(">drum 6 vertical<"), std::string::npos);
+}
+
+TEST(HtmlReportTest, IdentifyCampbellFigureIsWholeInChromium) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  RINGID_REQUIRE_TOOL(!Chromium().empty(), "chromium");
+  const Made m = IdentifyRolling();
+  ASSERT_NE(m.html.find("<figure id=\"identify-campbell\">"), std::string::npos);
+  const int figures = Count(m.html, "<figure");
+  EXPECT_EQ(figures, Count(m.html, "<svg"));
+  const auto check = ringid::testing::CheckFiguresInChromium(m.html_path, figures);
+  ASSERT_TRUE(check.ran) << check.error;
+  std::string problems;
+  for (const std::string& line : check.problems) problems += line + "\n";
+  EXPECT_TRUE(check.problems.empty()) << problems;
+}
+
+TEST(HtmlReportTest, StandingDataHaveNoCampbellFigureNorConditionColumn) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyPaper();
+  ASSERT_TRUE(m.report["speed_curves"].empty());
+  EXPECT_EQ(m.html.find("identify-campbell"), std::string::npos);
+  EXPECT_EQ(m.html.find("<th>condition</th>"), std::string::npos);
+}
+
+// Table 1's fit breaks rules of docs/plausibility.md: each flag is listed
+// before the modes; a fit within every range says so.
+TEST(HtmlReportTest, IdentifyListsThePlausibilityFlags) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyPaper();
+  const json& flags = m.report["plausibility"];
+  ASSERT_FALSE(flags.empty());
+  const size_t section = m.html.find("<h2>Plausibility</h2>");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_LT(section, m.html.find("<h2>Modes</h2>"));
+  for (const json& flag : flags) {
+    EXPECT_NE(m.html.find("<td>" + flag["rule"].get<std::string>() + "</td>"), std::string::npos)
+        << flag["rule"];
+    std::string names;
+    for (const json& p : flag["parameters"]) {
+      names += (names.empty() ? "" : ", ") + p.get<std::string>();
+    }
+    EXPECT_NE(m.html.find("<td>" + names + "</td>"), std::string::npos) << names;
+  }
+  EXPECT_EQ(m.html.find("every value within its plausible range"), std::string::npos);
+  // Without flags: one line saying so, and no section.
+  const Made none = Changed(m, "plausible_identify", [](json* r) {
+    (*r)["plausibility"] = json::array();
+  });
+  EXPECT_EQ(none.html.find("<h2>Plausibility</h2>"), std::string::npos);
+  EXPECT_NE(none.html.find("every value within its plausible range (docs/plausibility.md)"),
+            std::string::npos);
+}
+
+// What decided a parameter with a prior, as ParameterEstimate::DecidedBy says.
+std::string DecidedBy(double prior_share) {
+  return prior_share > 0.5 ? "the prior" : prior_share < 0.1 ? "the data" : "data and prior";
+}
+
+TEST(HtmlReportTest, IdentifyWithPriorsSaysWhatDecidedEachParameter) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyRolling(true);
+  const json& parameters = m.report["parameters"];
+  ASSERT_TRUE(parameters["r_e0"].contains("prior_share"));
+  ASSERT_TRUE(parameters["k_bx"].contains("prior_share"));
+  EXPECT_EQ(DecidedBy(parameters["r_e0"]["prior_share"].get<double>()), "the prior");
+  EXPECT_EQ(DecidedBy(parameters["k_bx"]["prior_share"].get<double>()), "the data");
+  EXPECT_NE(m.html.find("<th>decided by</th>"), std::string::npos);
+  // The row of each parameter with a prior ends with the words.
+  const size_t table = m.html.find("<h2>Parameters</h2>");
+  ASSERT_NE(table, std::string::npos);
+  for (const auto& [name, p] : parameters.items()) {
+    if (!p.contains("prior_share")) continue;
+    const size_t row = m.html.find("<tr><td>" + name + "</td>", table);
+    ASSERT_NE(row, std::string::npos) << name;
+    const std::string tr = m.html.substr(row, m.html.find("</tr>", row) - row);
+    const std::string words = "<td>" + DecidedBy(p["prior_share"].get<double>()) + "</td>";
+    ASSERT_GE(tr.size(), words.size());
+    EXPECT_EQ(tr.substr(tr.size() - words.size()), words) << name;
+  }
+  // And in words above the table.
+  EXPECT_NE(m.html.find("decided by their priors (posterior variance over 50 % of the prior "
+                        "variance): r_e0"),
+            std::string::npos);
+  EXPECT_NE(m.html.find("decided by the data despite a prior (under 10 % of the prior variance "
+                        "left): k_bx"),
+            std::string::npos);
+  // Without priors: no such column.
+  EXPECT_EQ(IdentifyRolling().html.find("<th>decided by</th>"), std::string::npos);
 }
 
 TEST(HtmlReportTest, PredictIsTablesOnly) {
@@ -612,7 +781,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
-                      Kind{"bench_diagnosis", BenchDiagnosis}),
+                      Kind{"bench_diagnosis", BenchDiagnosis},
+                      Kind{"bench_rolling", [] { return Bench("rolling"); }}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for
