@@ -174,6 +174,7 @@ TEST(IdentifyTest, DegenerateSetupsFailCleanly) {
 }  // namespace
 }  // namespace ringid
 
+#include "datasets/synthetic.h"
 #include "estimation/compare.h"
 
 namespace ringid {
@@ -199,6 +200,46 @@ TEST(CompareTest, BothMethodsFromTheSameStartsAndThePapersOwnErrorsAtTable2) {
   // (its Table 1 against its Table 3).
   EXPECT_NEAR(r.initial_error_in_plane, 1.41e-3, 0.1 * 1.41e-3);
   EXPECT_NEAR(r.initial_error_out_of_plane, 6.1e-3, 0.1 * 6.1e-3);
+}
+
+// Standing, the data fix only K_cx / sigma_cx. With a lognormal prior on
+// K_cx alone, the MAP value of K_cx is the prior's median, its posterior
+// variance is the prior's (prior_share 1), and sigma_cx follows the ratio.
+TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
+  const Parameters truth = ExampleCarTire();
+  Dataset d;
+  d.name = "prior";
+  d.format = 2;
+  std::mt19937_64 rng(11);
+  std::string error;
+  ASSERT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &error)) << error;
+  for (int i = 0; i < kNumParams; ++i) {
+    if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+  }
+  for (Param p : {Param::K_cx, Param::sigma_cx, Param::k_bx}) {
+    d.known.erase(p);
+    d.initial[p] = truth[p] * 1.3;
+  }
+  const double median = 7e4, factor = 2;
+  d.priors[Param::K_cx] = {PriorDistribution::kLognormal, median, factor};
+  IdentifyOptions o;
+  o.starts = 1;
+  IdentifySummary s;
+  Identify(RigidRingModel(), d, o, &s);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  const ParameterEstimate& K = Find(s, Param::K_cx);
+  const ParameterEstimate& sigma = Find(s, Param::sigma_cx);
+  EXPECT_NEAR(K.value, median, 1e-3 * median);
+  ASSERT_TRUE(K.prior_share.has_value());
+  EXPECT_NEAR(*K.prior_share, 1.0, 0.02);
+  EXPECT_STREQ(K.DecidedBy(), "the prior");
+  EXPECT_FALSE(sigma.prior_share.has_value());
+  // The ratio is the data's: near the truth, and sigma's log-std is at
+  // least the prior's log-sd.
+  const double ratio = K.value / sigma.value, true_ratio = truth[Param::K_cx] / truth[Param::sigma_cx];
+  EXPECT_NEAR(std::log(ratio / true_ratio), 0, 0.05);
+  ASSERT_TRUE(sigma.std.has_value());
+  EXPECT_GE(*sigma.std / sigma.value, 0.99 * std::log(factor) / 1.959964);
 }
 
 }  // namespace
