@@ -1,5 +1,6 @@
 // ringid: identify rigid-ring tire parameters from modal data.
 // A thin layer: parse flags, load, call the library, print, write the report.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -60,6 +61,8 @@ DEFINE_double(shape_noise, ringid::SimulateOptions().shape_noise,
               "simulate: shape component noise (sd, shapes scaled to 1)");
 DEFINE_double(shift, 0, "simulate: size the one effect to shift some frequency by this fraction (e.g. 0.04)");
 DEFINE_double(prior_spread, 0.1, "simulate: log-normal spread of the initial values around the truth");
+DEFINE_string(speeds, "0", "simulate: V1,V2,... speeds in m/s (>= 0), one condition each (0: standing, else drum_V)");
+DEFINE_string(loads, "", "simulate: F1,F2,... loads F_cz0 in N (> 0); conditions are then speeds x loads");
 DEFINE_string(suite, "", "bench: paper, synthetic, conditioning or diagnosis");
 DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "bench: Monte Carlo replicates per tire (synthetic)");
 DEFINE_string(markdown, "", "bench: also write the Markdown table here");
@@ -414,11 +417,85 @@ int CompareCommand(int argc, char** argv) {
   return Finish<CompareReport>(argc, argv, d, r);
 }
 
+// --NAME=X1,X2,...: finite numbers, each >= 0 (or > 0 when `positive`),
+// none twice. False with a one-line message naming the flag.
+bool ParseNumberList(const char* name, const std::string& text, bool positive, const char* unit,
+                     std::vector<double>* values, std::string* error) {
+  const std::string flag = std::string("--") + name;
+  const std::string rule = std::string(positive ? "a number > 0" : "a number >= 0") + " in " + unit;
+  if (text.empty()) {
+    *error = flag + ": needs a comma-separated list, each item " + rule;
+    return false;
+  }
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    char* end = nullptr;
+    const double v = item.empty() ? NAN : std::strtod(item.c_str(), &end);
+    if (item.empty() || !end || *end != '\0' || !std::isfinite(v) || !(positive ? v > 0 : v >= 0)) {
+      *error = flag + ": bad item '" + item + "' (each must be " + rule + ")";
+      return false;
+    }
+    if (std::find(values->begin(), values->end(), v) != values->end()) {
+      *error = flag + ": '" + item + "' is listed twice";
+      return false;
+    }
+    values->push_back(v);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
+}
+
+// `v` as short as it reads back exactly, in fixed notation where that is
+// exact (6, 12.5, 3000), for condition names: letters, digits, '-', '.'.
+std::string CompactNumber(double v) {
+  char buffer[64];
+  for (int digits = 0; digits <= 17; ++digits) {
+    const int n = std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
+    if (n < static_cast<int>(sizeof buffer) && std::strtod(buffer, nullptr) == v) return buffer;
+  }
+  for (int digits = 1; digits <= 17; ++digits) {  // tiny or huge: 3e-300, 1e+300
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    if (std::strtod(buffer, nullptr) == v) break;
+  }
+  std::string text = buffer;
+  text.erase(std::remove(text.begin(), text.end(), '+'), text.end());
+  return text;
+}
+
+// The conditions of --speeds x --loads (docs/conventions.md §7): "standing"
+// at 0 m/s, "drum_V" otherwise, "_FN" appended for each load, which is then
+// the condition's known F_cz0.
+std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
+                                           const std::vector<double>& loads) {
+  std::vector<Condition> conditions;
+  for (double v : speeds) {
+    Condition c;
+    c.name = v == 0 ? "standing" : "drum_" + CompactNumber(v);
+    c.speed_m_s = v;
+    if (loads.empty()) conditions.push_back(c);
+    for (double f : loads) {
+      Condition with_load = c;
+      with_load.name += "_" + CompactNumber(f) + "N";
+      with_load.known[Param::F_cz0] = f;
+      conditions.push_back(with_load);
+    }
+  }
+  return conditions;
+}
+
 int SimulateCommand(int argc, char** argv) {
   std::string error;
   if (!SetFlags(argc, argv, {"parameters", "effects", "set", "frequency_noise", "damping_noise",
-                             "shape_noise", "prior_spread", "seed", "output", "truth", "shift"},
+                             "shape_noise", "prior_spread", "seed", "output", "truth", "shift",
+                             "speeds", "loads"},
                 &error)) {
+    return Usage(error);
+  }
+  std::vector<double> speeds, loads;
+  if (!ParseNumberList("speeds", FLAGS_speeds, false, "m/s", &speeds, &error)) return Usage(error);
+  if (!gflags::GetCommandLineFlagInfoOrDie("loads").is_default &&
+      !ParseNumberList("loads", FLAGS_loads, true, "N", &loads, &error)) {
     return Usage(error);
   }
   std::vector<const Effect*> effects;
@@ -472,6 +549,13 @@ int SimulateCommand(int argc, char** argv) {
   d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
   std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
   SetEngineerPriors(truth, FLAGS_prior_spread, &rng, &d);
+  d.conditions = SimulatedConditions(speeds, loads);
+  if (!loads.empty()) {  // the load is known in each condition, not shared
+    d.known.erase(Param::F_cz0);
+    d.initial.erase(Param::F_cz0);
+    d.per_condition = {Param::F_cz0};
+  }
+  if (d.conditions.size() > 1 || !loads.empty()) d.format = 2;
   SimulateOptions so;
   so.frequency_noise = FLAGS_frequency_noise;
   so.damping_noise = FLAGS_damping_noise;
@@ -486,13 +570,24 @@ int SimulateCommand(int argc, char** argv) {
   std::string names;
   for (const Effect* e : effects) names += (names.empty() ? "" : ",") + std::string(e->name());
   t["effect"] = names.empty() ? "none" : names;
-  for (Param q : model.parameters()) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
+  for (Param q : model.parameters()) {
+    if (!d.IsPerCondition(q)) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
+  }
+  for (const Condition& c : d.conditions) {  // per-condition values as NAME@CONDITION
+    for (const auto& [q, v] : c.known) {
+      t["parameters"][std::string(ParamName(q)) + "@" + c.name] = {{"value", v}};
+    }
+  }
   if (!WriteFilesAtomically({{FLAGS_output, DatasetToJson(d)}, {FLAGS_truth, JsonText(t)}},
                             &error)) {
     return Usage(error);
   }
-  std::printf("wrote %s (7 modes) and %s (effect %s)\n", FLAGS_output.c_str(), FLAGS_truth.c_str(),
-              t["effect"].get<std::string>().c_str());
+  const std::string modes = d.conditions.size() == 1
+                                ? std::to_string(d.modes.size()) + " modes"
+                                : std::to_string(d.modes.size()) + " modes in " +
+                                      std::to_string(d.conditions.size()) + " conditions";
+  std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),
+              FLAGS_truth.c_str(), t["effect"].get<std::string>().c_str());
   return kExitOk;
 }
 

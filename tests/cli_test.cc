@@ -1,11 +1,14 @@
 // The ringid tool end to end: reports, and the error contract (exit status,
 // docs/conventions.md §6).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iterator>
 #include <fstream>
+#include <map>
+#include <utility>
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -161,6 +164,216 @@ TEST(CliTest, SeveralFilesAreWrittenAllOrNone) {
   EXPECT_FALSE(ringid::WriteFilesAtomically({{first, "c"}, {dir + "/./dataset.json", "d"}}, &error));
   EXPECT_NE(error.find("named for two outputs"), std::string::npos) << error;
   EXPECT_EQ(ReadFile(first), "a");
+}
+
+// Format 2 (docs/conventions.md §7) from the command line.
+
+nlohmann::json LoadJson(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+// `ringid simulate` of the example car tire with `flags`, into Scratch(name).
+std::string SimulateCarTire(const std::string& name, const std::string& flags) {
+  const std::string out = Scratch(name);
+  const RunResult r = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
+                             " " + flags + " --output=" + out + " --truth=" + out + ".truth");
+  EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+  return out;
+}
+
+// The modes of `dataset`'s condition `name`, by label.
+std::map<std::string, nlohmann::json> ModesOf(const nlohmann::json& dataset, const std::string& name) {
+  std::map<std::string, nlohmann::json> modes;
+  for (const auto& c : dataset["conditions"]) {
+    if (c["name"] != name) continue;
+    for (const auto& m : c["modes"]) modes[m["label"].get<std::string>()] = m;
+  }
+  return modes;
+}
+
+TEST(CliTest, SimulateAtSeveralSpeedsWritesFormat2ThatIdentifies) {
+  const std::string data = SimulateCarTire("rolling.json", "--speeds=0,6,12");
+  const nlohmann::json d = LoadJson(data);
+  EXPECT_EQ(d["format"], "ringid-modal-dataset/2");
+  ASSERT_EQ(d["conditions"].size(), 3u);
+  const char* names[] = {"standing", "drum_6", "drum_12"};
+  const double speeds[] = {0, 6, 12};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(d["conditions"][i]["name"], names[i]);
+    EXPECT_EQ(d["conditions"][i]["speed_m_s"].get<double>(), speeds[i]);
+    EXPECT_EQ(d["conditions"][i]["modes"].size(), 7u) << names[i];
+  }
+  EXPECT_FALSE(d.contains("modes"));
+  // Rolling damps the longitudinal mode through the slip states (tenfold at
+  // 12 m/s, far beyond the 10 % damping noise) and shifts frequencies by
+  // about 1 % (four times the frequency noise).
+  const auto standing = ModesOf(d, "standing"), drum_12 = ModesOf(d, "drum_12");
+  ASSERT_EQ(standing.size(), 7u);
+  ASSERT_EQ(drum_12.size(), 7u);
+  EXPECT_GT(drum_12.at("longitudinal")["damping_ratio"].get<double>(),
+            3 * standing.at("longitudinal")["damping_ratio"].get<double>());
+  double largest_shift = 0;
+  for (const auto& [label, m] : standing) {
+    const double f0 = m["frequency_hz"].get<double>();
+    largest_shift = std::max(largest_shift,
+                             std::abs(drum_12.at(label)["frequency_hz"].get<double>() / f0 - 1));
+  }
+  EXPECT_GT(largest_shift, 0.005);
+
+  const std::string report = Scratch("rolling_report.json");
+  std::remove(report.c_str());
+  const RunResult r = Ringid("identify --starts=1 --dataset=" + data + " --output=" + report);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = LoadJson(report);
+  ASSERT_EQ(j["modes"].size(), 21u);
+  std::map<std::string, int> per_condition;
+  for (const auto& m : j["modes"]) {
+    ASSERT_TRUE(m.contains("condition")) << m.dump();
+    ++per_condition[m["condition"].get<std::string>()];
+  }
+  EXPECT_EQ(per_condition, (std::map<std::string, int>{{"standing", 7}, {"drum_6", 7}, {"drum_12", 7}}));
+}
+
+TEST(CliTest, Format2DatasetThroughIdentifiabilityCompareAndReport) {
+  const std::string data = SimulateCarTire("rolling_b.json", "--speeds=0,6,12");
+  const std::string identify = Scratch("rolling_b_identify.json");
+  const std::string identifiability = Scratch("rolling_b_identifiability.json");
+  const std::string compare = Scratch("rolling_b_compare.json");
+  const std::pair<std::string, std::string> runs[] = {
+      {"identify", identify}, {"identifiability", identifiability}, {"compare", compare}};
+  for (const auto& [command, out] : runs) {
+    std::remove(out.c_str());
+    const RunResult r = Ringid(command + " --starts=1 --dataset=" + data + " --output=" + out);
+    EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+    EXPECT_TRUE(Exists(out)) << command;
+  }
+  RINGID_REQUIRE_TOOL(ringid::testing::HaveProgram("gnuplot"), "gnuplot");
+  for (const auto& [command, out] : runs) {
+    const std::string html = Scratch("rolling_b_" + command + ".html");
+    std::remove(html.c_str());
+    const RunResult r = Ringid("report --input=" + out + " --output=" + html);
+    EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+    EXPECT_EQ(ReadFile(html).rfind("<!DOCTYPE html>", 0), 0u) << command;
+  }
+}
+
+// Each defect of a format-2 file: exit 2, one line naming the file and the
+// field, no report, from every command that reads a dataset.
+TEST(CliTest, BadFormat2InputIsOneLineExitTwoAndNoReport) {
+  auto dataset = [](const std::string& known, const std::string& priors,
+                    const std::string& second_name, const std::string& second_speed,
+                    const std::string& first_known) {
+    const std::string modes = R"("modes":[{"label":"vertical","frequency_hz":80.5}])";
+    return R"({"format":"ringid-modal-dataset/2","name":"bad",)"
+           R"("known":)" + known + R"(,"per_condition":["F_cz0"],"priors":)" + priors +
+           R"(,"conditions":[{"name":"standing","speed_m_s":0,"known":)" + first_known + "," +
+           modes + R"(},{"name":")" + second_name + R"(","speed_m_s":)" + second_speed +
+           R"(,"known":{"F_cz0":3000},)" + modes + "}]}";
+  };
+  const std::string known = R"({"m_b":7.7})";
+  const std::string priors = R"({"K_cx":{"distribution":"lognormal","median":8e4,"factor_95":3}})";
+  const std::string load = R"({"F_cz0":3000})";
+  struct Case {
+    std::string what, text, field;
+  };
+  const Case cases[] = {
+      {"duplicate condition name", dataset(known, priors, "standing", "6", load),
+       "conditions[1].name"},
+      {"negative speed", dataset(known, priors, "drum_6", "-6", load), "conditions[1].speed_m_s"},
+      {"prior on an unknown parameter",
+       dataset(known, R"({"k_nonsense":{"distribution":"normal","mean":1,"sigma":0.1}})",
+               "drum_6", "6", load),
+       "priors.k_nonsense"},
+      {"per-condition value of a shared parameter",
+       dataset(known, priors, "drum_6", "6", R"({"F_cz0":3000,"k_bx":2e6})"),
+       "conditions[0].known.k_bx"},
+  };
+  const std::string dir = Scratch("");
+  const std::string out = dir + "format2_never_written.json";
+  int n = 0;
+  for (const Case& c : cases) {
+    const std::string file = dir + "bad_format2_" + std::to_string(n++) + ".json";
+    std::ofstream(file, std::ios::binary) << c.text;
+    for (const std::string command :
+         {"identify", "identifiability", "compare", "diagnose", "predict"}) {
+      std::remove(out.c_str());
+      const RunResult r = Ringid(command + " --dataset=" + file + " --output=" + out);
+      EXPECT_EQ(r.status, 2) << c.what << " (" << command << ")";
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.what << ": " << r.err;
+      EXPECT_NE(r.err.find(file), std::string::npos) << c.what << ": " << r.err;
+      EXPECT_NE(r.err.find(c.field), std::string::npos) << c.what << ": " << r.err;
+      EXPECT_FALSE(Exists(out)) << c.what << " (" << command << ")";
+    }
+  }
+}
+
+TEST(CliTest, BadSpeedsOrLoadsAreRefusedNamingTheFlag) {
+  const std::string out = Scratch("bad_speeds.json");
+  const std::string truth = Scratch("bad_speeds_truth.json");
+  const std::pair<std::string, std::string> cases[] = {
+      {"--speeds=-6", "--speeds"},     {"--speeds=0,-6", "--speeds"},
+      {"--speeds=abc", "--speeds"},    {"--speeds=6km", "--speeds"},
+      {"--speeds=6,,12", "--speeds"},  {"--speeds=", "--speeds"},
+      {"--speeds=nan", "--speeds"},    {"--speeds=6,6", "--speeds"},
+      {"--loads=0", "--loads"},        {"--loads=-3000", "--loads"},
+      {"--loads=3kN", "--loads"},      {"--loads=", "--loads"},
+  };
+  for (const auto& [flag, name] : cases) {
+    std::remove(out.c_str());
+    std::remove(truth.c_str());
+    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
+                               " " + flag + " --output=" + out + " --truth=" + truth);
+    EXPECT_EQ(r.status, 2) << flag;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flag << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("ringid: " + name + ":", 0), 0u) << flag << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << flag;
+    EXPECT_FALSE(Exists(truth)) << flag;
+  }
+}
+
+TEST(CliTest, SimulateWithoutSpeedsStillWritesFormat1) {
+  // The same file name in two directories, so that the dataset names agree.
+  const std::string dir = Scratch("format1");
+  for (const std::string sub : {"/default", "/zero"}) {
+    std::filesystem::create_directories(dir + sub);
+  }
+  const std::string plain = SimulateCarTire("format1/default/tire.json", "--seed=5");
+  const std::string zero = SimulateCarTire("format1/zero/tire.json", "--seed=5 --speeds=0");
+  const nlohmann::json d = LoadJson(plain);
+  EXPECT_EQ(d["format"], "ringid-modal-dataset/1");
+  EXPECT_EQ(d["modes"].size(), 7u);
+  EXPECT_FALSE(d.contains("conditions"));
+  EXPECT_EQ(ReadFile(plain), ReadFile(zero));
+}
+
+TEST(CliTest, SimulateNamesConditionsAndMakesTheLoadPerCondition) {
+  const nlohmann::json one = LoadJson(SimulateCarTire("drum.json", "--speeds=12.5"));
+  EXPECT_EQ(one["format"], "ringid-modal-dataset/2");  // a speed format 1 cannot hold
+  ASSERT_EQ(one["conditions"].size(), 1u);
+  EXPECT_EQ(one["conditions"][0]["name"], "drum_12.5");
+
+  const std::string data = SimulateCarTire("loads.json", "--speeds=0,6 --loads=3000,4500.5");
+  const nlohmann::json d = LoadJson(data);
+  EXPECT_EQ(d["format"], "ringid-modal-dataset/2");
+  EXPECT_EQ(d["per_condition"], nlohmann::json::array({"F_cz0"}));
+  EXPECT_FALSE(d["known"].contains("F_cz0"));
+  const std::pair<const char*, double> expected[] = {{"standing_3000N", 3000},
+                                                     {"standing_4500.5N", 4500.5},
+                                                     {"drum_6_3000N", 3000},
+                                                     {"drum_6_4500.5N", 4500.5}};
+  ASSERT_EQ(d["conditions"].size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    const auto& c = d["conditions"][i];
+    EXPECT_EQ(c["name"], expected[i].first);
+    EXPECT_EQ(c["speed_m_s"].get<double>(), i < 2 ? 0.0 : 6.0);
+    EXPECT_EQ(c["known"]["F_cz0"].get<double>(), expected[i].second);
+  }
+  const nlohmann::json truth = LoadJson(data + ".truth");
+  EXPECT_FALSE(truth["parameters"].contains("F_cz0"));
+  EXPECT_EQ(truth["parameters"]["F_cz0@drum_6_4500.5N"]["value"].get<double>(), 4500.5);
+  const RunResult r = Ringid("identify --starts=1 --dataset=" + data);
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 }  // namespace

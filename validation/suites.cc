@@ -200,7 +200,7 @@ const std::pair<Param, Param> kRollingTies[] = {
 std::string ConditionName(double speed) {
   if (speed == 0) return "standing";
   char text[48];
-  std::snprintf(text, sizeof text, "drum %g m/s", speed);
+  std::snprintf(text, sizeof text, "drum_%g", speed);
   return text;
 }
 
