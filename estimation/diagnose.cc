@@ -37,6 +37,7 @@ std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
   for (size_t i = 0; i < dataset.modes.size(); ++i) {
     ModeMisfit w;
     w.label = dataset.modes[i].label;
+    if (dataset.format == 2) w.condition = dataset.conditions[dataset.modes[i].condition].name;
     for (size_t k = 0; k < slots.size(); ++k) {
       if (slots[k].mode != static_cast<int>(i)) continue;
       w.chi2 += res[k] * res[k];
@@ -58,13 +59,14 @@ std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
   return where;
 }
 
+// The weighted residuals of `dataset` under `model` at the coordinates x of
+// a fit of the same free parameters.
 bool ResidualsAt(const ModalModel& model, const Dataset& dataset,
-                 const Parameters& p, std::vector<ModalResiduals::Slot>* slots,
+                 const Eigen::VectorXd& x, std::vector<ModalResiduals::Slot>* slots,
                  std::vector<double>* r, const ResidualOptions& options) {
   Status status;
   const auto problem = Problem::Create(model, dataset, options, &status);
-  if (!problem) return false;
-  const Eigen::VectorXd x = problem->setup().Encode(p);
+  if (!problem || problem->setup().size() != x.size()) return false;
   r->assign(problem->residuals().num_residuals(), 0);
   *slots = problem->residuals().slots();
   return problem->residuals().Evaluate(x.data(), r->data());
@@ -104,7 +106,7 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
     if (!s.status.ok()) return std::nullopt;
     std::vector<ModalResiduals::Slot> slots;
     std::vector<double> r;
-    if (!ResidualsAt(model, warm, s.parameters, &slots, &r, o.fit.residuals)) return std::nullopt;
+    if (!ResidualsAt(model, warm, s.x, &slots, &r, o.fit.residuals)) return std::nullopt;
     total += ModeChi2(slots, r, warm.modes.size())[j];
   }
   return total;
@@ -193,11 +195,14 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
 // measured mode is lost.
 bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& dataset,
                ShapeConvention convention, Dataset* out) {
-  const ModalSolution s = model.Solve(truth);
-  if (!s.ok) return false;
+  std::vector<ModalSolution> solutions;  // per condition, at its speed
+  for (const Condition& c : dataset.conditions) {
+    solutions.push_back(model.Solve(truth, c.speed_m_s));
+    if (!solutions.back().ok) return false;
+  }
   *out = dataset;
   for (MeasuredMode& m : out->modes) {
-    const Mode* mode = s.Find(m.label);
+    const Mode* mode = solutions[m.condition].Find(m.label);
     if (!mode) return false;
     m.frequency_hz = mode->frequency_hz;
     if (m.damping_ratio) m.damping_ratio = mode->damping_ratio;
@@ -305,6 +310,12 @@ void Diagnose(const RigidRingModel& baseline, const Dataset& dataset, const Diag
     r->status = Status::InvalidInput("invalid options: " + why);
     return;
   }
+  if (!dataset.per_condition.empty()) {
+    r->status = Status::InvalidInput(
+        "diagnose does not take per-condition parameters yet (per_condition); conditions that "
+        "differ only in speed are fine");
+    return;
+  }
   // The dataset's initial values are the prior of the baseline's parameters:
   // a gap absorbed by moving them far from it shows in the chi-square.
   DiagnoseOptions with_prior = o;
@@ -368,7 +379,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   }
   std::vector<ModalResiduals::Slot> es;
   std::vector<double> er;
-  if (ResidualsAt(model, dataset, s.parameters, &es, &er, o.fit.residuals)) {
+  if (ResidualsAt(model, dataset, s.x, &es, &er, o.fit.residuals)) {
     f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
     f.where = Misfits(es, er, dataset);
   }
@@ -471,7 +482,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   // Where it lies: per mode and observable, and in the parameters.
   std::vector<ModalResiduals::Slot> slots;
   std::vector<double> res;
-  if (!ResidualsAt(baseline, dataset, r->baseline.parameters, &slots, &res, o.fit.residuals)) {
+  if (!ResidualsAt(baseline, dataset, r->baseline.x, &slots, &res, o.fit.residuals)) {
     r->status = Status::Failed("the calibrated baseline cannot be evaluated");
     return;
   }
@@ -516,11 +527,13 @@ std::string DiagnosisReport::FullReport() const {
     std::snprintf(line, sizeof line, ", p = %.3g (%s)", *p_value, significant ? "significant" : "not significant");
     o << line;
   }
-  o << "\n\n  where it lies (baseline misfit, in sigma):\n"
-       "  mode                  chi2     freq    damping  shape chi2  worst component\n";
+  int width = 20;
+  for (const ModeMisfit& w : where) width = std::max<int>(width, w.Name().size());
+  o << "\n\n  where it lies (baseline misfit, in sigma):\n  mode" << std::string(width - 4, ' ')
+    << "  chi2     freq    damping  shape chi2  worst component\n";
   for (size_t i = 0; i < where.size(); ++i) {
     const ModeMisfit& w = where[i];
-    std::snprintf(line, sizeof line, "  %-20s %7.1f  %+7.2f  %7s  %9.1f   %s %+.1f%s\n", LabelName(w.label), w.chi2,
+    std::snprintf(line, sizeof line, "  %-*s %7.1f  %+7.2f  %7s  %9.1f   %s %+.1f%s\n", width, w.Name().c_str(), w.chi2,
                   w.frequency_sigma, w.damping_sigma ? std::to_string(*w.damping_sigma).substr(0, 6).c_str() : "-",
                   w.shape_chi2, w.worst_component.c_str(), w.worst_component_sigma,
                   i < mode_shrink.size() ? ("   shrink " + std::to_string(static_cast<int>(std::round(100 * mode_shrink[i]))) + " %").c_str() : "");

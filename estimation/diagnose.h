@@ -44,6 +44,7 @@ struct DiagnoseOptions {
 };
 
 struct ModeMisfit {
+  std::optional<std::string> condition;  // format 2: the condition's name
   ModeLabel label;
   double chi2 = 0;                      // all its residuals, in sigma^2
   double frequency_sigma = 0;           // (model - measured) / sigma
@@ -52,8 +53,14 @@ struct ModeMisfit {
   std::string worst_component;          // the shape component furthest off
   double worst_component_sigma = 0;
 
+  // "label", or "condition label" for format 2.
+  std::string Name() const {
+    return condition ? *condition + " " + LabelName(label) : std::string(LabelName(label));
+  }
+
   template <class Archive>
   void Serialize(Archive* a) {
+    a->VisitIfSet("condition", &condition);
     a->Visit("label", &label);
     a->Visit("chi2", &chi2);
     a->Visit("frequency_sigma", &frequency_sigma);

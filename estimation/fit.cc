@@ -65,7 +65,12 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   so.num_threads = 1;
   // An unsolvable start is refused here rather than inside Ceres.
   if (!(CostAt(residuals, fit.x) < kInf)) {
-    fit.message = "the model cannot be solved at this start";
+    std::vector<ModalSolution> solutions;
+    std::vector<int> pairs;
+    std::string why;
+    fit.message = residuals.Pair(fit.x.data(), &solutions, &pairs, &why)
+                      ? "the residuals are not finite at this start"
+                      : "the model cannot be solved at this start: " + why;
     return fit;
   }
   HistoryCallback history(residuals, &fit);

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   std::printf("%s\n", summary.BriefReport().c_str());
   for (const ringid::ParameterEstimate& e : summary.estimates) {
     if (!e.free) continue;
-    std::printf("%-10s %12.6g", ringid::ParamName(e.param), e.value);
+    std::printf("%-10s %12.6g", e.key.Text().c_str(), e.value);
     if (e.std) std::printf(" +- %.2g\n", *e.std); else std::printf("  (std not defined)\n");
   }
   if (argc == 3) {

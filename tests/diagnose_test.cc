@@ -41,6 +41,26 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
   return r;
 }
 
+// Per-condition values would need a truth per condition for the detectable
+// sizes: refused as input, before any fit.
+TEST(DiagnoseTest, PerConditionParametersAreRefusedAsInput) {
+  Parameters truth = PaperIdentified();
+  std::mt19937_64 rng(3);
+  Dataset d;
+  d.name = "loads";
+  SetEngineerPriors(truth, 0.1, &rng, &d);
+  std::string why;
+  ASSERT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions{}, &rng, &d, &why)) << why;
+  d.format = 2;
+  d.per_condition = {Param::F_cz0};
+  d.conditions[0].known[Param::F_cz0] = d.known.at(Param::F_cz0);
+  d.known.erase(Param::F_cz0);
+  DiagnosisReport r;
+  Diagnose(RigidRingModel(), d, DiagnoseOptions(), &r);
+  EXPECT_TRUE(r.status.invalid_input());
+  EXPECT_NE(r.status.message.find("per_condition"), std::string::npos) << r.status.message;
+}
+
 TEST(DiagnoseTest, NoEffectNoAlarm) {
   for (unsigned seed : {1u, 2u}) {
     const DiagnosisReport r = DiagnoseWithheld(nullptr, Param::m_b, 0, seed);

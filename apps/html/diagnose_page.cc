@@ -69,7 +69,7 @@ std::map<std::string, Misfit> ReadMisfits(const std::vector<ModeMisfit>& where,
   std::map<std::string, Misfit> out;
   for (size_t index = 0; index < where.size(); ++index) {
     const ModeMisfit& mode = where[index];
-    const std::string label = ToString(mode.label);
+    const std::string label = mode.Name();
     Misfit misfit;
     misfit.frequency = Finite(mode.frequency_sigma);
     if (mode.damping_sigma) misfit.damping = Finite(*mode.damping_sigma);
