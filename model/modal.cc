@@ -366,8 +366,8 @@ bool Follow(const ModalSolution& prev, ModalSolution* next, bool strict) {
 }  // namespace
 
 ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
-                           double speed) {
-  ModalSolution prev = SolveModes(assemble(0));
+                           double speed, ModalSolution standing) {
+  ModalSolution prev = std::move(standing);
   if (!prev.ok || !(speed > 0)) return prev;
   // Below this step the assignment by shape is taken as it is (an exact
   // degeneracy, where continuation has no direction to follow).

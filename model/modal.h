@@ -62,8 +62,9 @@ ModalSolution SolveModes(const MechanicalSystem& system);
 // from standstill: each step in speed pairs modes by shape (MAC) and keeps
 // each eigenvalue nearer its predecessor than to the predecessor's
 // neighbours, halving the step until it does (docs/rolling.md §5).
+// `standing` is SolveModes(assemble(0)).
 ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
-                           double speed);
+                           double speed, ModalSolution standing);
 
 }  // namespace ringid
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 namespace ringid {
@@ -109,8 +110,28 @@ ModalSolution RigidRingModel::Solve(const Parameters& p, double speed) const {
     bad.error = "speed must be finite and not negative";
     return bad;
   }
-  if (speed == 0) return SolveModes(Assemble(p));
-  return SolveRolling([&](double v) { return Assemble(p, v); }, speed);
+  ModalSolution standing = standing_.Get(p, [&] { return SolveModes(Assemble(p)); });
+  if (speed == 0) return standing;
+  return SolveRolling([&](double v) { return Assemble(p, v); }, speed, std::move(standing));
+}
+
+ModalSolution RigidRingModel::StandingCache::Get(
+    const Parameters& p, const std::function<ModalSolution()>& solve) const {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [key, solution] : entries_) {
+      if (std::memcmp(&key, &p, sizeof(Parameters)) == 0) return solution;
+    }
+  }
+  ModalSolution solution = solve();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (static_cast<int>(entries_.size()) < kCapacity) {
+    entries_.emplace_back(p, solution);
+  } else {
+    entries_[next_] = {p, solution};
+    next_ = (next_ + 1) % kCapacity;
+  }
+  return solution;
 }
 
 bool RigidRingModel::Has(const Effect* effect) const {

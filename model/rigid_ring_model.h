@@ -2,7 +2,10 @@
 #ifndef RINGID_MODEL_RIGID_RING_MODEL_H_
 #define RINGID_MODEL_RIGID_RING_MODEL_H_
 
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <utility>
 #include <vector>
 
 #include "model/effects.h"
@@ -44,8 +47,27 @@ class RigidRingModel final : public ModalModel {
   RigidRingModel With(const Effect* effect) const;
 
  private:
+  // The standstill modes of the last kCapacity parameter sets. Each condition
+  // of a fit solves the same points (numeric differentiation perturbs the
+  // shared coordinates alike), and a rolling one starts its continuation
+  // from standstill. A copy starts empty; safe across threads.
+  class StandingCache {
+   public:
+    StandingCache() = default;
+    StandingCache(const StandingCache&) {}
+    StandingCache& operator=(const StandingCache&) { return *this; }
+    ModalSolution Get(const Parameters& p, const std::function<ModalSolution()>& solve) const;
+
+   private:
+    static constexpr int kCapacity = 64;
+    mutable std::mutex mutex_;
+    mutable std::vector<std::pair<Parameters, ModalSolution>> entries_;
+    mutable int next_ = 0;
+  };
+
   std::vector<const Effect*> effects_;
   std::vector<Param> used_;
+  StandingCache standing_;
 };
 
 }  // namespace ringid

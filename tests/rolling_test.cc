@@ -185,5 +185,28 @@ TEST(RollingTest, EveryEffectSolvesAtSpeedAndIsTheBaselineAtSizeZero) {
   }
 }
 
+// The model keeps the standstill modes of recent points; what it answers
+// from them is bit for bit what a model that never saw the point computes,
+// and a copy of the model starts with nothing kept.
+TEST(RollingTest, KeptStandstillModesChangeNoResult) {
+  const Parameters p = PaperIdentified();
+  const RigidRingModel warm;
+  for (double v : {0.0, 6.0, 12.0}) warm.Solve(p, v);
+  const RigidRingModel copy = warm;
+  for (double v : {12.0, 6.0, 0.0, 25.0}) {
+    for (const RigidRingModel* m : {&warm, &copy}) {
+      const ModalSolution a = m->Solve(p, v), b = RigidRingModel().Solve(p, v);
+      ASSERT_TRUE(a.ok && b.ok);
+      ASSERT_EQ(a.modes.size(), b.modes.size());
+      for (size_t i = 0; i < a.modes.size(); ++i) {
+        EXPECT_EQ(a.modes[i].label, b.modes[i].label);
+        EXPECT_EQ(a.modes[i].eigenvalue, b.modes[i].eigenvalue) << v;
+        EXPECT_EQ(a.modes[i].shape, b.modes[i].shape);
+      }
+      EXPECT_EQ(a.real_roots, b.real_roots);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ringid
