@@ -53,6 +53,7 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
   for (const auto& prior : residuals.priors()) {
     if (prior.coordinate != i || !u.covariance_ok || e.tied_to) continue;
     e.prior_share = u.covariance(i, i) / prior.CoordinateVariance(setup, x[i]);
+    e.prior_z = prior.Residual(setup, x[i]);
   }
   return e;
 }
@@ -95,6 +96,27 @@ const char* ParameterEstimate::DecidedBy() const {
   if (*prior_share > 0.5) return "the prior";
   if (*prior_share < 0.1) return "the data";
   return "data and prior";
+}
+
+bool ParameterEstimate::PriorConflict() const {
+  return prior_z && std::abs(*prior_z) > kPriorConflictZ;
+}
+
+std::string IdentifySummary::PriorConflicts() const {
+  std::string list;
+  char item[160];
+  for (const ParameterEstimate& e : estimates) {
+    if (!e.PriorConflict()) continue;
+    std::snprintf(item, sizeof item, "%s%s is %.1f prior sigma %s its prior", list.empty() ? "" : "; ",
+                  e.key.Text().c_str(), std::abs(*e.prior_z), *e.prior_z < 0 ? "below" : "above");
+    list += item;
+  }
+  if (list.empty()) return "";
+  char head[120];
+  std::snprintf(head, sizeof head, "prior and data disagree (beyond %.0f prior sigma): ",
+                kPriorConflictZ);
+  return head + list +
+         ". Either the prior is wrong or the model misses what the data show (ringid diagnose).";
 }
 
 bool IdentifyOptions::IsValid(std::string* why) const {
@@ -282,6 +304,9 @@ std::string IdentifySummary::FullReport() const {
   if (!by_both.empty()) o << "\n  decided by data and priors together: " << by_both;
   if (!by_data.empty()) o << "\n  decided by the data despite a prior (< 10 % of its variance left): " << by_data;
   if (!by_prior.empty() || !by_both.empty() || !by_data.empty()) o << "\n";
+  if (const std::string conflicts = PriorConflicts(); !conflicts.empty()) {
+    o << "\n  " << conflicts << "\n";
+  }
   for (const PlausibilityFlag& f : plausibility) o << "\n  implausible (" << f.rule << "): " << f.reason;
   if (!plausibility.empty()) o << "\n";
   if (uncertainty.ok) {

@@ -37,6 +37,10 @@ struct IdentifyOptions {
   bool IsValid(std::string* why) const;
 };
 
+// A prior and the data disagree when the estimate sits further than this many
+// prior standard deviations from the prior's center (beyond its 99.7 % range).
+inline constexpr double kPriorConflictZ = 3.0;
+
 struct ParameterEstimate {
   ParameterKey key;  // the parameter, and its condition when per-condition
   double value = 0;
@@ -48,10 +52,16 @@ struct ParameterEstimate {
   // With a prior: posterior over prior variance (Laplace), near 1 where the
   // prior decides the value, near 0 where the data do.
   std::optional<double> prior_share;
+  // With a prior: the estimate's distance from the prior's center in prior
+  // standard deviations (of the log for a lognormal prior), signed.
+  std::optional<double> prior_z;
 
   Param param() const { return key.param; }
   // "the data", "the prior" or "data and prior", from prior_share.
   const char* DecidedBy() const;
+  // The data pull the estimate further from its prior than the prior allows
+  // (|prior_z| > kPriorConflictZ): one of the two is wrong.
+  bool PriorConflict() const;
 
   template <class Archive>  // keyed by key in IdentifySummary
   void Serialize(Archive* a) {
@@ -63,6 +73,7 @@ struct ParameterEstimate {
     a->Visit("identifiable", &identifiable);
     a->Visit("reason", &reason);
     a->VisitIfSet("prior_share", &prior_share);
+    a->VisitIfSet("prior_z", &prior_z);
   }
 };
 
@@ -143,6 +154,9 @@ struct IdentifySummary {
 
   std::string BriefReport() const;
   std::string FullReport() const;
+  // One sentence naming each parameter whose prior the data contradict
+  // (ParameterEstimate::PriorConflict), empty when there is none.
+  std::string PriorConflicts() const;
 
   template <class Archive>
   void Serialize(Archive* a) {

@@ -205,21 +205,29 @@ TEST(CompareTest, BothMethodsFromTheSameStartsAndThePapersOwnErrorsAtTable2) {
 // Standing, the data fix only K_cx / sigma_cx. With a lognormal prior on
 // K_cx alone, the MAP value of K_cx is the prior's median, its posterior
 // variance is the prior's (prior_share 1), and sigma_cx follows the ratio.
-TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
+// The example car tire measured standing with noise, every parameter known
+// but `free`, which start 30 % off.
+Dataset StandingCarTire(std::vector<Param> free) {
   const Parameters truth = ExampleCarTire();
   Dataset d;
   d.name = "prior";
   d.format = 2;
   std::mt19937_64 rng(11);
   std::string error;
-  ASSERT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &error)) << error;
+  EXPECT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &error)) << error;
   for (int i = 0; i < kNumParams; ++i) {
     if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
   }
-  for (Param p : {Param::K_cx, Param::sigma_cx, Param::k_bx}) {
+  for (Param p : free) {
     d.known.erase(p);
     d.initial[p] = truth[p] * 1.3;
   }
+  return d;
+}
+
+TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
+  const Parameters truth = ExampleCarTire();
+  Dataset d = StandingCarTire({Param::K_cx, Param::sigma_cx, Param::k_bx});
   const double median = 7e4, factor = 2;
   d.priors[Param::K_cx] = {PriorDistribution::kLognormal, median, factor};
   IdentifyOptions o;
@@ -240,6 +248,38 @@ TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
   EXPECT_NEAR(std::log(ratio / true_ratio), 0, 0.05);
   ASSERT_TRUE(sigma.std.has_value());
   EXPECT_GE(*sigma.std / sigma.value, 0.99 * std::log(factor) / 1.959964);
+}
+
+// The data fix k_bx to a fraction of a per cent. A narrow prior at half the
+// truth is contradicted: the estimate stays near the truth, ln 2 / s prior
+// sigma above the prior's median, and the report names the conflict. A prior
+// at the truth is not.
+TEST(PriorTest, DataThatContradictAPriorAreNamedAsAConflict) {
+  const Parameters truth = ExampleCarTire();
+  const double k_bx = truth[Param::k_bx], factor = 1.2;
+  const double s_log = std::log(factor) / 1.959964;
+  IdentifyOptions o;
+  o.starts = 1;
+  for (const double median : {0.5 * k_bx, k_bx}) {
+    Dataset d = StandingCarTire({Param::k_bx, Param::k_btheta});
+    d.priors[Param::k_bx] = {PriorDistribution::kLognormal, median, factor};
+    IdentifySummary s;
+    Identify(RigidRingModel(), d, o, &s);
+    ASSERT_TRUE(s.status.ok()) << s.status.message;
+    const ParameterEstimate& e = Find(s, Param::k_bx);
+    ASSERT_TRUE(e.prior_z.has_value());
+    EXPECT_NEAR(*e.prior_z, std::log(e.value / median) / s_log, 1e-6);
+    EXPECT_NEAR(e.value, k_bx, 0.02 * k_bx);
+    if (median < k_bx) {
+      EXPECT_NEAR(*e.prior_z, std::log(2.0) / s_log, 0.3);
+      EXPECT_TRUE(e.PriorConflict());
+      EXPECT_NE(s.PriorConflicts().find("k_bx is 7."), std::string::npos) << s.PriorConflicts();
+      EXPECT_NE(s.FullReport().find("prior and data disagree"), std::string::npos);
+    } else {
+      EXPECT_FALSE(e.PriorConflict());
+      EXPECT_EQ(s.PriorConflicts(), "");
+    }
+  }
 }
 
 }  // namespace

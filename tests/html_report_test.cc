@@ -471,10 +471,20 @@ TEST(HtmlReportTest, IdentifyWithPriorsSaysWhatDecidedEachParameter) {
     const size_t row = m.html.find("<tr><td>" + name + "</td>", table);
     ASSERT_NE(row, std::string::npos) << name;
     const std::string tr = m.html.substr(row, m.html.find("</tr>", row) - row);
-    const std::string words = "<td>" + DecidedBy(p["prior_share"].get<double>()) + "</td>";
+    char z[64];
+    std::snprintf(z, sizeof z, "<td class=\"n\">%+.1f</td>", p["prior_z"].get<double>());
+    const std::string words = "<td>" + DecidedBy(p["prior_share"].get<double>()) + "</td>" + z;
     ASSERT_GE(tr.size(), words.size());
     EXPECT_EQ(tr.substr(tr.size() - words.size()), words) << name;
   }
+  // Data and priors agree here; a prior 5 sigma off is named as a conflict.
+  EXPECT_EQ(m.html.find("prior and data disagree"), std::string::npos);
+  const Made conflict = Changed(m, "prior_conflict_identify", [](json* r) {
+    (*r)["parameters"]["k_bx"]["prior_z"] = -5.0;
+  });
+  EXPECT_NE(conflict.html.find("prior and data disagree (beyond 3 prior sigma): k_bx is 5.0 "
+                               "prior sigma below its prior"),
+            std::string::npos);
   // And in words above the table.
   EXPECT_NE(m.html.find("decided by their priors (posterior variance over 50 % of the prior "
                         "variance): r_e0"),

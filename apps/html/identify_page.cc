@@ -142,6 +142,7 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
   if (priors) {
     row.push_back(PercentCell(q.prior_share));
     row.push_back(TextCell(q.prior_share ? q.DecidedBy() : "–"));
+    row.push_back(NumberCell(q.prior_z, "%+.1f"));
   }
   return row;
 }
@@ -176,7 +177,9 @@ std::string PriorSentence(const std::vector<ParameterEstimate>& estimates) {
          "alone.";
 }
 
-Intervals ParametersSection(const std::vector<ParameterEstimate>& estimates, Page* page) {
+Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
+  const std::vector<ParameterEstimate>& estimates = summary.estimates;
+  const std::string conflicts = summary.PriorConflicts();
   Intervals intervals;
   const bool priors = std::any_of(estimates.begin(), estimates.end(),
                                   [](const ParameterEstimate& q) { return q.prior_share; });
@@ -184,9 +187,13 @@ Intervals ParametersSection(const std::vector<ParameterEstimate>& estimates, Pag
   for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, priors, &intervals));
   std::vector<std::string> head = {"parameter", "value", "unit", "role", "std",
                                    "95 % interval (factor)", "identifiable", "reason"};
-  if (priors) head.insert(head.end(), {"posterior / prior variance (%)", "decided by"});
+  if (priors) {
+    head.insert(head.end(), {"posterior / prior variance (%)", "decided by",
+                             "distance from the prior (prior sigma)"});
+  }
   page->Heading("Parameters");
   if (priors) page->Note(PriorSentence(estimates));
+  if (!conflicts.empty()) page->Note(conflicts);
   page->Table(head, rows);
   return intervals;
 }
@@ -454,7 +461,7 @@ void IdentifyPage(const IdentifyReport& report, Page* page) {
   page->Summary(SummaryFacts(report.body.dataset, summary));
   if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
   const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
-  const Intervals intervals = ParametersSection(summary.estimates, page);
+  const Intervals intervals = ParametersSection(summary, page);
   if (summary.plausibility.empty() && !summary.estimates.empty()) {
     page->Note("Plausibility: every value within its plausible range (docs/plausibility.md).");
   }
