@@ -1,6 +1,7 @@
 #include "estimation/diagnose.h"
 
 #include "estimation/problem.h"
+#include "estimation/statistics.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +10,6 @@
 #include <sstream>
 
 #include <Eigen/SVD>
-#include <boost/math/distributions/chi_squared.hpp>
 
 #include "model/effects.h"
 
@@ -20,14 +20,6 @@ using internal::ModalResiduals;
 using internal::ParameterSetup;
 
 namespace {
-
-// P(chi-square(dof) >= x).
-double ChiSquareTail(double x, double dof) {
-  if (!(dof > 0)) return std::nan("");
-  if (!(x > 0)) return 1.0;
-  boost::math::chi_squared_distribution<double> d(dof);
-  return boost::math::cdf(boost::math::complement(d, x));
-}
 
 // The weighted residuals of `dataset` under `model` at `p`, per slot.
 // Per measured mode: its residuals in sigma, by observable.
@@ -471,12 +463,10 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                  "the baseline could not be calibrated: " + r->baseline.status.message};
     return;
   }
-  r->chi2_before = 2 * r->baseline.cost;
-  r->dof = static_cast<int>(r->baseline.uncertainty.jacobian.rows()) - r->baseline.uncertainty.rank;
-  if (r->dof > 0) {
-    r->p_value = ChiSquareTail(r->chi2_before, r->dof);
-    r->significant = *r->p_value < o.gap_significance;
-  }
+  r->chi2_before = r->baseline.fit.chi_square;
+  r->dof = r->baseline.fit.degrees_of_freedom;
+  r->p_value = r->baseline.fit.p_value;
+  r->significant = r->p_value && *r->p_value < o.gap_significance;
   r->gap_before = std::max(0.0, r->chi2_before - std::max(r->dof, 0));
 
   // Where it lies: per mode and observable, and in the parameters.

@@ -1,6 +1,7 @@
 #include "estimation/identify.h"
 
 #include "estimation/problem.h"
+#include "estimation/statistics.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace ringid {
@@ -98,6 +100,32 @@ const char* ParameterEstimate::DecidedBy() const {
   return "data and prior";
 }
 
+FitQuality AssessFit(double cost, int residuals, int rank, int shape_scales) {
+  FitQuality f;
+  f.chi_square = 2 * cost;
+  f.degrees_of_freedom = residuals - rank - shape_scales;
+  char words[320];
+  if (f.degrees_of_freedom <= 0) {
+    std::snprintf(words, sizeof words,
+                  "no degree of freedom left (%d residuals, %d determined directions): the fit "
+                  "matches by construction and cannot say whether the model is right",
+                  residuals, rank);
+    f.verdict = words;
+    return f;
+  }
+  f.p_value = ChiSquareTail(f.chi_square, f.degrees_of_freedom);
+  f.poor = *f.p_value < kPoorFitP;
+  std::snprintf(words, sizeof words,
+                f.poor ? "poor fit: chi-square %.4g on %d degrees of freedom (p = %.2g). The model "
+                         "misses what the data show, so the classes and intervals below are "
+                         "optimistic; ringid diagnose says where and which effect"
+                       : "the model fits within the noise: chi-square %.4g on %d degrees of "
+                         "freedom (p = %.2g)",
+                f.chi_square, f.degrees_of_freedom, *f.p_value);
+  f.verdict = words;
+  return f;
+}
+
 bool ParameterEstimate::PriorConflict() const {
   return prior_z && std::abs(*prior_z) > kPriorConflictZ;
 }
@@ -182,6 +210,15 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->parameters = setup.Decode(best.x.data());
   s->x = best.x;
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
+  std::set<int> shapes;
+  for (const ModalResiduals::Slot& slot : residuals.slots()) {
+    if (slot.kind == ModalResiduals::Slot::kShape) shapes.insert(slot.mode);
+  }
+  const int scales = static_cast<int>(shapes.size());
+  s->fit = s->uncertainty.ok
+               ? AssessFit(best.cost, static_cast<int>(s->uncertainty.jacobian.rows()),
+                           s->uncertainty.rank, scales)
+               : AssessFit(best.cost, residuals.num_residuals(), setup.size(), scales);
   for (int i = 0; i < setup.size(); ++i) s->coordinate_names.push_back(setup.name(i));
   for (Param p : model.parameters()) {
     const bool per_condition = dataset.IsPerCondition(p);
@@ -255,6 +292,7 @@ std::string IdentifySummary::FullReport() const {
   o << BriefReport() << "\n";
   if (!status.ok()) return o.str();
   o << "  termination: " << status.message << "\n";
+  o << "  " << fit.verdict << "\n";
   std::snprintf(line, sizeof line,
                 "  eq. (19) in-plane error %.3e, eq. (20) out-of-plane error %.3e\n",
                 relative_error_in_plane, relative_error_out_of_plane);

@@ -123,6 +123,31 @@ struct SpeedCurve {
   }
 };
 
+// Below this p-value a fit is poor: the model misses what the data show.
+inline constexpr double kPoorFitP = 0.01;
+
+// Whether the model fits the data: the chi-square of the weighted residuals
+// (prior rows included) against its degrees of freedom.
+struct FitQuality {
+  double chi_square = 0;        // 2 cost
+  // Residuals minus the Jacobian's rank minus one per compared shape (its
+  // scale is fitted inside the residual).
+  int degrees_of_freedom = 0;
+  std::optional<double> p_value;  // P(chi-square >= chi_square); none without dof
+  bool poor = false;            // p_value < kPoorFitP
+  std::string verdict;          // the above in words
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("chi_square", &chi_square);
+    a->Visit("degrees_of_freedom", &degrees_of_freedom);
+    a->Visit("p_value", &p_value);
+    a->Visit("poor", &poor);
+    a->Visit("verdict", &verdict);
+  }
+};
+FitQuality AssessFit(double cost, int residuals, int rank, int shape_scales);
+
 struct IdentifySummary {
   // Success: a fit was obtained, and message says how the winning start
   // stopped; invalid input: nothing was fitted.
@@ -131,6 +156,7 @@ struct IdentifySummary {
   Method method = Method::kLevenbergMarquardt;
   FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
   double cost = 0;          // 1/2 sum of squared weighted residuals
+  FitQuality fit;
   long evaluations = 0;     // model solutions, all starts
   double seconds = 0;
   int starts = 0;
@@ -165,6 +191,7 @@ struct IdentifySummary {
     status.Serialize(a);
     a->Visit("converged", &converged);
     a->Visit("cost", &cost);
+    a->Visit("fit", &fit);
     a->Visit("evaluations", &evaluations);
     a->Visit("seconds", &seconds);
     a->Visit("starts", &starts);

@@ -12,6 +12,9 @@ inline constexpr double kNormal95 = 1.959963984540054;
 // a profile-likelihood 95 % interval ends where 2 delta cost passes it.
 inline constexpr double kChiSquare1Dof95 = 3.841458820694124;
 
+// P(chi-square(dof) >= x); NaN without a degree of freedom.
+double ChiSquareTail(double x, double dof);
+
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_STATISTICS_H_

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "datasets/synthetic.h"
 #include "estimation/identify.h"
 #include "estimation/statistics.h"
 #include "tests/test_support.h"
@@ -144,6 +145,68 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   const double coverage = static_cast<double>(inside) / total;
   EXPECT_GT(coverage, 0.90);
   EXPECT_LT(coverage, 0.99);
+}
+
+// Over noisy replicates of a correct model, chi-square has the mean and the
+// variance of its degrees of freedom, and p < 0.01 in about 1 % of them.
+// With a hub the baseline lacks (s_h 2e-7 m/N), the fit says it is poor
+// and points to diagnose.
+TEST(IdentifyTest, FitQualityIsTheChiSquareOfItsDegreesOfFreedom) {
+  const Parameters truth = PaperIdentified();
+  std::mt19937_64 rng(21);
+  IdentifyOptions o;
+  o.starts = 1;
+  const int replicates = 150;
+  double sum = 0, sum2 = 0;
+  int dof = 0, poor = 0;
+  for (int r = 0; r < replicates; ++r) {
+    IdentifySummary s;
+    Identify(RigidRingModel(), WellPosed(truth, &rng), o, &s);
+    ASSERT_TRUE(s.status.ok());
+    dof = s.fit.degrees_of_freedom;
+    EXPECT_DOUBLE_EQ(s.fit.chi_square, 2 * s.cost);
+    sum += s.fit.chi_square;
+    sum2 += s.fit.chi_square * s.fit.chi_square;
+    poor += s.fit.poor;
+  }
+  ASSERT_GT(dof, 10);
+  const double mean = sum / replicates, var = sum2 / replicates - mean * mean;
+  EXPECT_NEAR(mean, dof, 3 * std::sqrt(2.0 * dof / replicates));
+  EXPECT_GT(var / (2 * dof), 0.6);
+  EXPECT_LT(var / (2 * dof), 1.6);
+  EXPECT_LE(poor, 6);  // binomial(150, 0.01): P(> 6) < 0.1 %
+
+  Parameters with_hub = truth;
+  with_hub[Param::s_h] = 2e-7;
+  with_hub[Param::m_a] = 15;
+  Dataset d;
+  d.name = "hub";
+  SetEngineerPriors(with_hub, 0.1, &rng, &d);
+  std::string why;
+  ASSERT_TRUE(Simulate(RigidRingModel({FindEffect("hub_compliance")}), with_hub,
+                       SimulateOptions{}, &rng, &d, &why)) << why;
+  IdentifySummary s;
+  Identify(RigidRingModel(), d, o, &s);
+  ASSERT_TRUE(s.status.ok());
+  EXPECT_TRUE(s.fit.poor) << s.fit.verdict;
+  ASSERT_TRUE(s.fit.p_value.has_value());
+  EXPECT_LT(*s.fit.p_value, kPoorFitP);
+  EXPECT_NE(s.FullReport().find("poor fit: chi-square"), std::string::npos);
+  EXPECT_NE(s.fit.verdict.find("ringid diagnose"), std::string::npos);
+}
+
+// Table 1: seven frequencies and sixteen unknowns leave no degree of freedom,
+// and the report says the fit cannot tell whether the model is right.
+TEST(IdentifyTest, AnExactlyDeterminedFitSaysItCannotJudgeTheModel) {
+  IdentifyOptions o;
+  o.starts = 1;
+  IdentifySummary s;
+  Identify(RigidRingModel(), Table1(), o, &s);
+  ASSERT_TRUE(s.status.ok());
+  EXPECT_LE(s.fit.degrees_of_freedom, 0);
+  EXPECT_FALSE(s.fit.p_value.has_value());
+  EXPECT_FALSE(s.fit.poor);
+  EXPECT_NE(s.fit.verdict.find("cannot say whether the model is right"), std::string::npos);
 }
 
 TEST(IdentifyTest, DegenerateSetupsFailCleanly) {

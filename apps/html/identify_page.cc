@@ -41,6 +41,10 @@ FactRows SummaryFacts(const std::string& dataset, const IdentifySummary& s) {
           {"converged", YesNoCell(s.converged)},
           {"solver message", TextCell(s.status.message)},
           {"cost (½ Σ weighted residual²)", NumberCell(s.cost)},
+          {"fit (χ² on its degrees of freedom)", TextCell(s.fit.verdict)},
+          {"χ²", NumberCell(s.fit.chi_square)},
+          {"degrees of freedom", NumberCell(s.fit.degrees_of_freedom, "%.0f")},
+          {"p-value", NumberCell(s.fit.p_value, "%.3g")},
           {"evaluations", NumberCell(static_cast<double>(s.evaluations), "%.0f")},
           {"starts", NumberCell(s.starts, "%.0f")},
           {"final cost per start", StartCostsCell(s.start_costs)},
@@ -459,6 +463,7 @@ void CampbellFigure(const IdentifySummary& s, Page* page) {
 void IdentifyPage(const IdentifyReport& report, Page* page) {
   const IdentifySummary& summary = report.body.result;
   page->Summary(SummaryFacts(report.body.dataset, summary));
+  if (summary.fit.poor) page->Note(summary.fit.verdict + ".");
   if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
   const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
   const Intervals intervals = ParametersSection(summary, page);
