@@ -71,6 +71,8 @@ DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)")
 DEFINE_string(shard, "0/1", "identify, diagnose: I/N, analyse every N-th dataset from the I-th (0-based)");
 DEFINE_string(input, "", "report: a JSON report of ringid");
 DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg");
+DEFINE_string(bounds, "", "identify, identifiability, compare, diagnose: NAME:LO:HI,... bounds in the parameter's units, in place of a factor 1000 around the start");
+DEFINE_string(fix, "", "identify, identifiability, compare, diagnose: NAME,... parameters held at their initial values");
 DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
 
 namespace ringid {
@@ -204,7 +206,58 @@ int Predict(int argc, char** argv) {
 
 const std::set<std::string> kFitFlags = {
     "dataset", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "effects", "output"};
+    "shapes", "damping", "shape_convention", "effects", "output", "bounds", "fix"};
+
+// A number that is the whole of `text`.
+bool ParseNumber(const std::string& text, double* v) {
+  char* end = nullptr;
+  *v = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && std::isfinite(*v);
+}
+
+// --bounds=NAME:LO:HI,...
+bool ParseBounds(Bounds* bounds, std::string* error) {
+  std::stringstream list(FLAGS_bounds);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    if (item.empty()) continue;
+    std::vector<std::string> part;
+    std::stringstream fields(item);
+    for (std::string f; std::getline(fields, f, ':');) part.push_back(f);
+    Bound b;
+    if (part.size() != 3 || !ParseNumber(part[1], &b.lower) || !ParseNumber(part[2], &b.upper)) {
+      *error = "--bounds: bad item '" + item + "' (NAME:LO:HI)";
+      return false;
+    }
+    const std::optional<Param> p = ParseParam(part[0]);
+    if (!p) {
+      *error = "--bounds: unknown parameter '" + part[0] + "'";
+      return false;
+    }
+    (*bounds)[*p] = b;
+  }
+  return true;
+}
+
+// --fix=NAME,... applied to a loaded dataset.
+bool ApplyFix(Dataset* d, std::string* error) {
+  std::vector<Param> fixed;
+  std::stringstream list(FLAGS_fix);
+  for (std::string name; std::getline(list, name, ',');) {
+    if (name.empty()) continue;
+    const std::optional<Param> p = ParseParam(name);
+    if (!p) {
+      *error = "--fix: unknown parameter '" + name + "'";
+      return false;
+    }
+    fixed.push_back(*p);
+  }
+  if (!FixParameters(fixed, d, error)) {
+    *error = "--" + *error;
+    return false;
+  }
+  return true;
+}
 const std::set<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
 // --NAME=VALUE of an enum flag; the valid names on error.
@@ -231,6 +284,7 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
   o->residuals.relative_sigma = FLAGS_relative_sigma;
   o->residuals.use_shapes = FLAGS_shapes;
   o->residuals.use_damping = FLAGS_damping;
+  if (!ParseBounds(&o->bounds, error)) return false;
   if (!o->IsValid(error)) { *error = "bad option: " + *error; return false; }
   if (!ParseEffects(effects, error)) return false;
   if (FLAGS_dataset.empty()) { *error = "needs --dataset=FILE"; return false; }
@@ -246,7 +300,7 @@ bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
   }
   LoadError load;
   if (!LoadDataset(FLAGS_dataset, d, &load)) { *error = load.OneLine(); return false; }
-  return true;
+  return ApplyFix(d, error);
 }
 
 // One dataset's share of a campaign: its report and its row of the summary.
@@ -279,6 +333,7 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   for (size_t i = 0; i < files.size(); ++i) {
     LoadError load;
     if (!LoadDataset(files[i], &datasets[i], &load)) return Usage(load.OneLine());
+    if (!ApplyFix(&datasets[i], &error)) return Usage(error);
     Status status;  // a dataset the model cannot start on
     if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
       return Usage(files[i] + ": " + status.message);

@@ -672,4 +672,29 @@ Parameters InitialParameters(const Dataset& d, int condition) {
   return p;
 }
 
+bool FixParameters(const std::vector<Param>& fixed, Dataset* d, std::string* why) {
+  for (Param p : fixed) {
+    bool moved = false;
+    if (const auto it = d->initial.find(p); it != d->initial.end()) {
+      d->known[p] = it->second;
+      d->initial.erase(it);
+      moved = true;
+    }
+    for (Condition& c : d->conditions) {
+      if (const auto it = c.initial.find(p); it != c.initial.end()) {
+        c.known[p] = it->second;
+        c.initial.erase(it);
+        moved = true;
+      }
+    }
+    if (!moved) {
+      *why = std::string("fix: ") + ParamName(p) + " is not free in " + d->path +
+             (d->ties.count(p) ? " (it is tied)" : "");
+      return false;
+    }
+    d->priors.erase(p);
+  }
+  return true;
+}
+
 }  // namespace ringid

@@ -85,6 +85,11 @@ bool ReadInputFile(const std::string& path, std::string* text, LoadError* error)
 // values, that condition's own, ties applied.
 Parameters InitialParameters(const Dataset& dataset, int condition = 0);
 
+// Holds each of `fixed` at its initial value: moved from initial to known
+// (each condition's own for a per-condition parameter), its prior dropped.
+// False, with why naming it, for a parameter the dataset does not leave free.
+bool FixParameters(const std::vector<Param>& fixed, Dataset* dataset, std::string* why);
+
 // Loads and checks a dataset. On failure returns false and fills `error`;
 // `dataset` is then unspecified.
 bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);

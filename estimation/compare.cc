@@ -73,7 +73,12 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
   const ParameterSetup& setup = problem->setup();
   const ModalResiduals& residuals = problem->residuals();
   const Eigen::VectorXd x0 = setup.StartCoordinates();
-  const Box box = BoundsAround(setup, x0, o.fit.bound_factor);
+  std::string bad;
+  if (!CheckBounds(setup, x0, o.fit.bounds, &bad)) {
+    r->status = Status::InvalidInput(bad);
+    return;
+  }
+  const Box box = BoundsAround(setup, x0, o.fit.bound_factor, o.fit.bounds);
   const auto starts = DrawStarts(setup, x0, box, o.fit.starts, o.fit.start_spread, o.fit.seed,
                                  [&](const Eigen::VectorXd& x) { return std::isfinite(CostAt(residuals, x)); });
   r->starts = static_cast<int>(starts.size());

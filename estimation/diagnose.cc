@@ -217,7 +217,7 @@ double RecalibratedCost(const RigidRingModel& baseline, const ModalModel& model,
   if (!problem) return NAN;
   const Eigen::VectorXd x0 = problem->start();
   const LocalFit fit = FitLocally(problem->residuals(), Method::kLevenbergMarquardt, x0,
-                                  BoundsAround(problem->setup(), x0, o.fit.bound_factor),
+                                  BoundsAround(problem->setup(), x0, o.fit.bound_factor, o.fit.bounds),
                                   o.fit.max_iterations, o.fit.simplex);
   return fit.cost;
 }

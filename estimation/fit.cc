@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <ceres/ceres.h>
@@ -103,13 +104,23 @@ LocalFit FitSimplex(const ModalResiduals& residuals,
 
 }  // namespace
 
+std::optional<BoundSide> Box::On(int i, double x) const {
+  const double tol = 1e-3 * (upper[i] - lower[i]);
+  if (x <= lower[i] + tol) return BoundSide::kLower;
+  if (x >= upper[i] - tol) return BoundSide::kUpper;
+  return std::nullopt;
+}
+
 Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
-                 double bound_factor) {
+                 double bound_factor, const Bounds& bounds) {
   const int n = setup.size();
   Box box{Eigen::VectorXd(n), Eigen::VectorXd(n)};
   const double log_bound = std::log(bound_factor);
   for (int i = 0; i < n; ++i) {
-    if (setup.is_log(i)) {
+    if (const auto b = bounds.find(setup.key(i).param); b != bounds.end()) {
+      box.lower[i] = setup.ToCoordinate(i, b->second.lower);
+      box.upper[i] = setup.ToCoordinate(i, b->second.upper);
+    } else if (setup.is_log(i)) {
       box.lower[i] = x0[i] - log_bound;
       box.upper[i] = x0[i] + log_bound;
     } else {
@@ -121,6 +132,30 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
     }
   }
   return box;
+}
+
+bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
+                 std::string* why) {
+  const Box box = BoundsAround(setup, x0, 2, bounds);
+  for (const auto& [param, bound] : bounds) {
+    bool free = false;
+    for (int i = 0; i < setup.size(); ++i) {
+      if (setup.key(i).param != param) continue;
+      free = true;
+      if (x0[i] < box.lower[i] || x0[i] > box.upper[i]) {
+        char text[200];
+        std::snprintf(text, sizeof text, "bounds: the initial value of %s (%.6g) lies outside %.6g..%.6g",
+                      setup.name(i).c_str(), setup.ToPhysical(i, x0[i]), bound.lower, bound.upper);
+        *why = text;
+        return false;
+      }
+    }
+    if (!free) {
+      *why = std::string("bounds: ") + ParamName(param) + " is not free in this dataset";
+      return false;
+    }
+  }
+  return true;
 }
 
 std::vector<Eigen::VectorXd> DrawStarts(

@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,16 +25,37 @@ struct EnumNames<Method> {
   static constexpr std::array<const char*, 2> kNames = {"lm", "simplex"};
 };
 
+// Bounds a user sets on one parameter, in its units; they replace the box of
+// bound_factor for every coordinate of the parameter.
+struct Bound {
+  double lower = 0, upper = 0;
+};
+using Bounds = std::map<Param, Bound>;
+
+// Which bound a fitted coordinate sits on.
+enum class BoundSide { kLower, kUpper };
+template <>
+struct EnumNames<BoundSide> {
+  static constexpr std::array<const char*, 2> kNames = {"lower", "upper"};
+};
+
 namespace internal {
 
 struct Box {
   Eigen::VectorXd lower, upper;
+  // The side x's coordinate i sits on, within 0.1 % of the box's width.
+  std::optional<BoundSide> On(int i, double x) const;
 };
 
 // Free coordinates within a factor `bound_factor` of x0 (log coordinates),
-// or x0 +- bound_factor * max(|x0|, 1) (others; non-negative ones from 0).
+// or x0 +- bound_factor * max(|x0|, 1) (others; non-negative ones from 0);
+// `bounds` replace that for their parameters.
 Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
-                 double bound_factor);
+                 double bound_factor, const Bounds& bounds = {});
+// False, with why naming the parameter, when a bounded parameter is not free
+// or its start lies outside its bounds.
+bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
+                 std::string* why);
 
 // x0 first, then starts - 1 points drawn around it: log coordinates moved by
 // N(0, spread), others by N(0, spread) * max(|x|, 1); clipped to the box.

@@ -159,7 +159,7 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
                                                double cost, const Uncertainty& u,
                                                const IdentifiabilityOptions& o) {
   const ParameterSetup& setup = problem.setup();
-  const Box box = BoundsAround(setup, problem.start(), o.fit.bound_factor);
+  const Box box = BoundsAround(setup, problem.start(), o.fit.bound_factor, o.fit.bounds);
   std::vector<ParameterIdentifiability> out;
   for (int i = 0; i < setup.size(); ++i) {
     ParameterIdentifiability p;

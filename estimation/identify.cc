@@ -29,7 +29,8 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
 
 // The estimate of p in condition c at the fitted point x.
 ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& residuals,
-                           const Uncertainty& u, const Eigen::VectorXd& x, Param p, int c) {
+                           const Uncertainty& u, const Box& box, const Eigen::VectorXd& x,
+                           Param p, int c) {
   ParameterEstimate e;
   e.key.param = p;
   e.value = setup.Decode(x.data(), c)[p];
@@ -37,6 +38,7 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
   if (tie != setup.ties().end()) e.tied_to = tie->second;
   const int i = setup.CoordinateOf(p, c);
   e.free = i >= 0 && !e.tied_to;
+  if (i >= 0 && !e.tied_to) e.on_bound = box.On(i, x[i]);
   if (i < 0) {
     e.identifiable = Identifiability::kYes;
     e.reason = e.tied_to ? "tied to a fixed parameter" : "fixed (known)";
@@ -147,6 +149,18 @@ std::string IdentifySummary::PriorConflicts() const {
          ". Either the prior is wrong or the model misses what the data show (ringid diagnose).";
 }
 
+std::string IdentifySummary::OnBounds() const {
+  std::string list;
+  for (const ParameterEstimate& e : estimates) {
+    if (!e.on_bound) continue;
+    list += (list.empty() ? "" : ", ") + e.key.Text() + " (" + ToString(*e.on_bound) + ")";
+  }
+  if (list.empty()) return "";
+  return "on a bound of its box, so not an interior optimum (its std and class describe the "
+         "box, not the data): " + list +
+         ". Widen the box with --bounds=NAME:LO:HI, or hold the parameter with --fix=NAME.";
+}
+
 bool IdentifyOptions::IsValid(std::string* why) const {
   if (starts < 1 || starts > 100000) {
     *why = "starts must lie in [1, 100000]";
@@ -159,6 +173,17 @@ bool IdentifyOptions::IsValid(std::string* why) const {
   if (!(bound_factor > 1 && std::isfinite(bound_factor))) {
     *why = "bound_factor must be finite and greater than 1";
     return false;
+  }
+  for (const auto& [param, b] : bounds) {
+    const Domain domain = Info(param).domain;
+    const double least = domain == Domain::kReal ? -INFINITY : 0;
+    if (!(std::isfinite(b.lower) && std::isfinite(b.upper) && b.lower < b.upper) ||
+        b.lower < least || (domain == Domain::kPositive && b.lower == 0)) {
+      *why = std::string("bounds: ") + ParamName(param) +
+             " needs finite LO < HI" +
+             (domain == Domain::kPositive ? ", LO > 0" : domain == Domain::kNonNegative ? ", LO >= 0" : "");
+      return false;
+    }
   }
   if (max_iterations < 1) {
     *why = "max_iterations must be at least 1";
@@ -184,7 +209,11 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   const ParameterSetup& setup = problem->setup();
   const ModalResiduals& residuals = problem->residuals();
   const Eigen::VectorXd x0 = setup.StartCoordinates();
-  const Box box = BoundsAround(setup, x0, o.bound_factor);
+  if (!CheckBounds(setup, x0, o.bounds, &why)) {
+    s->status = Status::InvalidInput(why);
+    return;
+  }
+  const Box box = BoundsAround(setup, x0, o.bound_factor, o.bounds);
   const int starts = setup.size() == 0 ? 1 : o.starts;
   auto usable = [&](const Eigen::VectorXd& x) {
     return std::isfinite(CostAt(residuals, x));
@@ -223,7 +252,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   for (Param p : model.parameters()) {
     const bool per_condition = dataset.IsPerCondition(p);
     for (int c = 0; c < (per_condition ? setup.num_conditions() : 1); ++c) {
-      ParameterEstimate e = Estimate(setup, residuals, s->uncertainty, best.x, p, c);
+      ParameterEstimate e = Estimate(setup, residuals, s->uncertainty, box, best.x, p, c);
       if (per_condition) e.key.condition = dataset.conditions[c].name;
       s->estimates.push_back(e);
     }
@@ -342,6 +371,7 @@ std::string IdentifySummary::FullReport() const {
   if (!by_both.empty()) o << "\n  decided by data and priors together: " << by_both;
   if (!by_data.empty()) o << "\n  decided by the data despite a prior (< 10 % of its variance left): " << by_data;
   if (!by_prior.empty() || !by_both.empty() || !by_data.empty()) o << "\n";
+  if (const std::string bounds = OnBounds(); !bounds.empty()) o << "\n  " << bounds << "\n";
   if (const std::string conflicts = PriorConflicts(); !conflicts.empty()) {
     o << "\n  " << conflicts << "\n";
   }

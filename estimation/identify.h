@@ -27,8 +27,10 @@ struct IdentifyOptions {
   int starts = 4;
   double start_spread = 0.5;
   unsigned seed = 1;
-  // Free coordinates stay within a factor bound_factor of their start.
+  // Free coordinates stay within a factor bound_factor of their start,
+  // those of parameters with `bounds` within them.
   double bound_factor = 1e3;
+  Bounds bounds;
   int max_iterations = 200;  // Levenberg-Marquardt, per start
   SimplexOptions simplex;
   ResidualOptions residuals;
@@ -55,6 +57,9 @@ struct ParameterEstimate {
   // With a prior: the estimate's distance from the prior's center in prior
   // standard deviations (of the log for a lognormal prior), signed.
   std::optional<double> prior_z;
+  // The fit stopped on this side of the parameter's box: not an interior
+  // optimum, so its std and class describe the box, not the data.
+  std::optional<BoundSide> on_bound;
 
   Param param() const { return key.param; }
   // "the data", "the prior" or "data and prior", from prior_share.
@@ -74,6 +79,7 @@ struct ParameterEstimate {
     a->Visit("reason", &reason);
     a->VisitIfSet("prior_share", &prior_share);
     a->VisitIfSet("prior_z", &prior_z);
+    a->VisitIfSet("on_bound", &on_bound);
   }
 };
 
@@ -183,6 +189,8 @@ struct IdentifySummary {
   // One sentence naming each parameter whose prior the data contradict
   // (ParameterEstimate::PriorConflict), empty when there is none.
   std::string PriorConflicts() const;
+  // One sentence naming each parameter on a bound, empty when there is none.
+  std::string OnBounds() const;
 
   template <class Archive>
   void Serialize(Archive* a) {

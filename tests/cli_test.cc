@@ -96,6 +96,50 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
   EXPECT_NE(r.err.find("modes[0].frequency_hz"), std::string::npos);
 }
 
+// --fix holds a parameter at its initial value and --bounds replaces its box,
+// on every fitting command; a bad item, an unknown or non-free parameter, or
+// a start outside the bounds is exit 2 with one line naming it.
+TEST(CliTest, FixAndBoundsReachEveryFittingCommandAndBadOnesAreRefused) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string out = Scratch("fixed.json");
+  std::remove(out.c_str());
+  RunResult r = Ringid("identify --dataset=" + table1 + " --fix=t_0 --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(ReadFile(out));
+  EXPECT_FALSE(j["parameters"]["t_0"]["free"].get<bool>());
+  EXPECT_DOUBLE_EQ(j["parameters"]["t_0"]["value"].get<double>(), 0.00135);
+  r = Ringid("identify --dataset=" + table1 + " --bounds=t_0:0.001:0.05 --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(ReadFile(out));
+  const double t_0 = j["parameters"]["t_0"]["value"].get<double>();
+  EXPECT_GE(t_0, 0.001 * (1 - 1e-12));
+  EXPECT_LE(t_0, 0.05 * (1 + 1e-12));
+  EXPECT_EQ(j["parameters"]["t_0"]["on_bound"], "upper");  // t_0 alone is a free direction
+  std::remove(out.c_str());
+  const std::pair<std::string, std::string> cases[] = {
+      {"--fix=t_0x", "--fix: unknown parameter 't_0x'"},
+      {"--fix=m_b", "--fix: m_b is not free in"},
+      {"--fix=c_bz", "(it is tied)"},
+      {"--bounds=t_0:1", "--bounds: bad item 't_0:1'"},
+      {"--bounds=t_0:0.1:0.01", "bounds: t_0 needs finite LO < HI, LO > 0"},
+      {"--bounds=t_0:0:0.01", "LO > 0"},
+      {"--bounds=t_0:0.1:0.2", "the initial value of t_0 (0.00135) lies outside 0.1..0.2"},
+      {"--bounds=m_b:1:3", "bounds: m_b is not free"},
+      {"--bounds=x_y:1:3", "--bounds: unknown parameter 'x_y'"},
+  };
+  for (const char* command : {"identify", "identifiability", "compare", "diagnose"}) {
+    for (const auto& [flag, words] : cases) {
+      const std::string c = std::string(command) + " --dataset=" + table1 + " " + flag +
+                            " --output=" + out;
+      r = Ringid(c);
+      EXPECT_EQ(r.status, 2) << c;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c << ": " << r.err;
+      EXPECT_NE(r.err.find(words), std::string::npos) << c << ": " << r.err;
+      EXPECT_FALSE(Exists(out)) << c;
+    }
+  }
+}
+
 TEST(CliTest, EveryMalformedDatasetIsRefusedByEveryCommand) {
   const std::string dir = Scratch("");
   const std::string out = dir + "malformed_report.json";

@@ -130,6 +130,38 @@ void ExpectSameDataset(const Dataset& a, const Dataset& b) {
   ExpectSameModes(a.modes, b.modes);
 }
 
+// Fixing moves the initial value to known (each condition's own for a
+// per-condition parameter) and drops the prior; a parameter the dataset does
+// not leave free is refused by name, and nothing else changes.
+TEST(DatasetTest, FixParametersHoldsTheInitialValues) {
+  Dataset d;
+  d.path = "d.json";
+  d.conditions.resize(2);
+  d.conditions[1].name = "drum_6";
+  d.initial[Param::K_cx] = 6e4;
+  d.initial[Param::k_bx] = 3e5;
+  d.known[Param::m_b] = 7.7;
+  d.ties[Param::k_bz] = Param::k_bx;
+  d.priors[Param::K_cx] = {PriorDistribution::kLognormal, 6e4, 2};
+  d.per_condition = {Param::F_cz0};
+  d.conditions[0].initial[Param::F_cz0] = 3000;
+  d.conditions[1].initial[Param::F_cz0] = 4500;
+  std::string why;
+  ASSERT_TRUE(FixParameters({Param::K_cx, Param::F_cz0}, &d, &why)) << why;
+  EXPECT_EQ(d.known.at(Param::K_cx), 6e4);
+  EXPECT_EQ(d.initial.count(Param::K_cx), 0u);
+  EXPECT_EQ(d.priors.count(Param::K_cx), 0u);
+  EXPECT_EQ(d.conditions[0].known.at(Param::F_cz0), 3000);
+  EXPECT_EQ(d.conditions[1].known.at(Param::F_cz0), 4500);
+  EXPECT_TRUE(d.conditions[1].initial.empty());
+  EXPECT_EQ(d.initial.at(Param::k_bx), 3e5);
+  for (Param p : {Param::m_b, Param::k_bz, Param::K_cx}) {
+    Dataset copy = d;
+    EXPECT_FALSE(FixParameters({p}, &copy, &why));
+    EXPECT_NE(why.find(std::string(ParamName(p)) + " is not free in d.json"), std::string::npos);
+  }
+}
+
 TEST(DatasetTest, FormatOneIsOneStandingCondition) {
   Dataset d;
   LoadError e;

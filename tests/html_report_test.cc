@@ -485,6 +485,13 @@ TEST(HtmlReportTest, IdentifyWithPriorsSaysWhatDecidedEachParameter) {
   EXPECT_NE(conflict.html.find("prior and data disagree (beyond 3 prior sigma): k_bx is 5.0 "
                                "prior sigma below its prior"),
             std::string::npos);
+  // A parameter on a bound of its box is named above the table.
+  EXPECT_EQ(m.html.find("on a bound of its box"), std::string::npos);
+  const Made bound = Changed(m, "on_bound_identify", [](json* r) {
+    (*r)["parameters"]["k_bx"]["on_bound"] = "lower";
+  });
+  EXPECT_NE(bound.html.find("on a bound of its box, so not an interior optimum"), std::string::npos);
+  EXPECT_NE(bound.html.find("k_bx (lower)"), std::string::npos);
   // And in words above the table.
   EXPECT_NE(m.html.find("decided by their priors (posterior variance over 50 % of the prior "
                         "variance): r_e0"),

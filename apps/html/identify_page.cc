@@ -198,6 +198,7 @@ Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
   page->Heading("Parameters");
   if (priors) page->Note(PriorSentence(estimates));
   if (!conflicts.empty()) page->Note(conflicts);
+  if (const std::string bounds = summary.OnBounds(); !bounds.empty()) page->Note("Parameters " + bounds);
   page->Table(head, rows);
   return intervals;
 }
