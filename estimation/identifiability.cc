@@ -80,42 +80,152 @@ Eigen::VectorXd Variances(const Eigen::MatrixXd& F) {
   return F.ldlt().solve(Eigen::MatrixXd::Identity(F.rows(), F.cols())).diagonal();
 }
 
+// Where a profile's crossing of the threshold is refined: within this of it
+// (2 delta cost), or once the bracket is below kSmallestBracket (coordinate
+// units: a jump), after at most kMaxBisections midpoints.
+constexpr double kCrossingTolerance = 0.02;
+constexpr double kSmallestBracket = 1e-6;
+constexpr int kMaxBisections = 40;
+// How often a step whose refit fails is halved toward the last good point,
+// and a refit over the threshold restarted from where it stopped.
+constexpr int kStepHalvings = 4;
+constexpr int kRestarts = 3;
+
+// One point of a profile: coordinate i held at t, the others refitted.
+struct ProfilePoint {
+  double t = 0;
+  double delta = 0;  // 2 (cost - cost_min), at least 0
+  Eigen::VectorXd x;
+};
+
+// The profile of one coordinate: refits with it held, from given starts.
+class Profiler {
+ public:
+  Profiler(const ModalResiduals& residuals, const Eigen::VectorXd& xhat, double cost_min,
+           const Box& box, int i, const IdentifiabilityOptions& o)
+      : residuals_(residuals), xhat_(xhat), cost_min_(cost_min), box_(box), i_(i), o_(o) {}
+
+  // Coordinate i held at t, the others refitted from each start in turn
+  // (its coordinate i set to t), then from xhat: the first under the
+  // threshold, else the lowest (a refit from a neighbour can land in a worse
+  // valley than one from xhat); none when no start gives a finite cost.
+  std::optional<ProfilePoint> RefitAt(double t, std::vector<const Eigen::VectorXd*> starts) const {
+    starts.push_back(&xhat_);
+    std::vector<Eigen::VectorXd> tried;
+    std::optional<LocalFit> best;
+    for (const Eigen::VectorXd* start : starts) {
+      Eigen::VectorXd x = *start;
+      x[i_] = t;
+      if (std::find(tried.begin(), tried.end(), x) != tried.end()) continue;
+      tried.push_back(x);
+      LocalFit fit = Refit(x);
+      if (std::isfinite(fit.cost) && (!best || fit.cost < best->cost)) best = std::move(fit);
+      if (best && Delta(best->cost) < kChiSquare1Dof95) break;
+    }
+    if (!best) return std::nullopt;
+    // Over the threshold, Levenberg-Marquardt may have stalled (next to
+    // where the model cannot be solved): restarted while each restart
+    // removes a tenth of the excess over the threshold.
+    for (int k = 0; k < kRestarts && Delta(best->cost) >= kChiSquare1Dof95; ++k) {
+      const double excess = Delta(best->cost) - kChiSquare1Dof95;
+      LocalFit again = Refit(best->x);
+      const double gain = 2 * (best->cost - again.cost);  // -inf where it failed
+      if (gain > 0) best = std::move(again);
+      if (!(gain > std::max(kCrossingTolerance, 0.1 * excess))) break;
+    }
+    return ProfilePoint{t, Delta(best->cost), best->x};
+  }
+
+  // The crossing between `below` (under the threshold) and `above` (over
+  // it) by bisection on the coordinate, each midpoint refitted from the
+  // nearer end first; the first trial is where the signed root of 2 delta
+  // cost, linear in t for a quadratic profile, interpolates to the
+  // threshold. Returns the bound, a refitted point (across a jump the first
+  // over the threshold), or none with *failed_at where no refit was possible.
+  std::optional<double> Bisect(ProfilePoint below, ProfilePoint above, double* failed_at,
+                               std::vector<std::pair<double, double>>* curve,
+                               const ParameterSetup& setup) const {
+    for (int b = 0; b < kMaxBisections; ++b) {
+      if (std::abs(above.delta - kChiSquare1Dof95) < kCrossingTolerance) return above.t;
+      if (std::abs(below.delta - kChiSquare1Dof95) < kCrossingTolerance) return below.t;
+      if (std::abs(above.t - below.t) < kSmallestBracket) break;
+      double fraction = 0.5;
+      if (b == 0) {  // kept within the middle 80 % of the bracket
+        const double a = std::sqrt(below.delta), c = std::sqrt(above.delta);
+        fraction = std::clamp((std::sqrt(kChiSquare1Dof95) - a) / (c - a), 0.1, 0.9);
+      }
+      const double t = below.t + fraction * (above.t - below.t);
+      const bool nearer_below = fraction <= 0.5;
+      const std::optional<ProfilePoint> mid =
+          nearer_below ? RefitAt(t, {&below.x, &above.x}) : RefitAt(t, {&above.x, &below.x});
+      if (!mid) {
+        *failed_at = t;
+        return std::nullopt;
+      }
+      curve->emplace_back(Physical(setup, i_, t), mid->delta);
+      (mid->delta < kChiSquare1Dof95 ? below : above) = *mid;
+    }
+    return above.t;  // a jump: the first point over the threshold
+  }
+
+ private:
+  LocalFit Refit(const Eigen::VectorXd& start) const {
+    return FitLocally(residuals_, Method::kLevenbergMarquardt, start, box_, o_.fit.max_iterations,
+                      o_.fit.simplex, i_);
+  }
+  double Delta(double cost) const { return std::max(0.0, 2 * (cost - cost_min_)); }
+
+  const ModalResiduals& residuals_;
+  const Eigen::VectorXd& xhat_;
+  const double cost_min_;
+  const Box& box_;
+  const int i_;
+  const IdentifiabilityOptions& o_;
+};
+
 ProfileInterval Profile(const ModalResiduals& residuals,
                         const ParameterSetup& setup, const Eigen::VectorXd& xhat,
                         double cost_min, const Box& box, int i, double wald_std,
                         const IdentifiabilityOptions& o) {
+  const Profiler profiler(residuals, xhat, cost_min, box, i, o);
   ProfileInterval p;
   p.computed = true;
   p.curve.emplace_back(Physical(setup, i, xhat[i]), 0.0);
   for (int side : {-1, +1}) {
-    Eigen::VectorXd x = xhat;
+    ProfilePoint last{xhat[i], 0.0, xhat};
     // Start at a quarter of the Wald standard deviation where there is one.
     double step = std::isfinite(wald_std) ? std::min(o.profile_first_step, 0.25 * wald_std)
                                           : o.profile_first_step;
-    double t_prev = xhat[i], d_prev = 0;
+    std::optional<double> bound, failed;  // failed: nearest t past `last` no refit reached
     for (int k = 0; k < o.profile_steps; ++k) {
-      double t = t_prev + side * step;
-      const bool at_bound = t <= box.lower[i] || t >= box.upper[i];
-      t = std::clamp(t, box.lower[i], box.upper[i]);
-      x[i] = t;
-      const LocalFit fit = FitLocally(residuals, Method::kLevenbergMarquardt, x,
-                                      box, o.fit.max_iterations, o.fit.simplex, i);
-      if (!std::isfinite(fit.cost)) break;
-      x = fit.x;
-      const double d = std::max(0.0, 2 * (fit.cost - cost_min));
-      p.curve.emplace_back(Physical(setup, i, t), d);
-      if (d >= kChiSquare1Dof95) {
-        // The signed root of 2 delta cost is linear in t for a quadratic
-        // profile: interpolating it is exact there.
-        const double a = std::sqrt(d_prev), b = std::sqrt(d);
-        const double cross = t_prev + (std::sqrt(kChiSquare1Dof95) - a) / (b - a) * (t - t_prev);
-        (side < 0 ? p.lower : p.upper) = Physical(setup, i, cross);
+      double t = std::clamp(last.t + side * step, box.lower[i], box.upper[i]);
+      std::optional<ProfilePoint> next = profiler.RefitAt(t, {&last.x});
+      // A failed refit: the step halved toward the last good point.
+      for (int h = 0; !next && h < kStepHalvings; ++h) {
+        failed = t;
+        t = last.t + 0.5 * (t - last.t);
+        next = profiler.RefitAt(t, {&last.x});
+      }
+      if (!next) {
+        failed = t;
         break;
       }
-      if (at_bound) break;
-      t_prev = t;
-      d_prev = d;
-      step *= o.profile_growth;
+      p.curve.emplace_back(Physical(setup, i, t), next->delta);
+      if (failed && side * (t - *failed) >= 0) failed.reset();  // got past it
+      if (next->delta >= kChiSquare1Dof95) {
+        double failed_inside = 0;
+        bound = profiler.Bisect(last, *next, &failed_inside, &p.curve, setup);
+        if (!bound) failed = failed_inside;
+        break;
+      }
+      if (t <= box.lower[i] || t >= box.upper[i]) break;
+      step = std::abs(t - last.t) * o.profile_growth;
+      last = *next;
+    }
+    if (bound) {
+      (side < 0 ? p.lower : p.upper) = Physical(setup, i, *bound);
+    } else if (failed) {
+      (side < 0 ? p.lower_failed_at : p.upper_failed_at) = Physical(setup, i, *failed);
     }
   }
   std::sort(p.curve.begin(), p.curve.end());
@@ -500,16 +610,19 @@ std::string IdentifiabilityReport::FullReport() const {
   }
   o << "\n\n  parameter      value        class           std          Wald 95 %                profile 95 %\n";
   for (const ParameterIdentifiability& p : parameters) {
-    auto opt = [](const std::optional<double>& v) {
-      char b[32] = "open";
+    // A side that did not close: where its refits failed, else "open".
+    auto opt = [](const std::optional<double>& v, const std::optional<double>& failed_at) {
+      char b[48] = "open";
       if (v) std::snprintf(b, sizeof b, "%.4g", *v);
+      else if (failed_at) std::snprintf(b, sizeof b, "failed at %.4g", *failed_at);
       return std::string(b);
     };
     char wald[64] = "-", sd[32] = "-";
     if (p.wald_95) std::snprintf(wald, sizeof wald, "[%.4g, %.4g]", p.wald_95->first, p.wald_95->second);
     if (p.std) std::snprintf(sd, sizeof sd, "%.3e", *p.std);
     const std::string prof = p.profile_95.computed
-                                 ? "[" + opt(p.profile_95.lower) + ", " + opt(p.profile_95.upper) + "]"
+                                 ? "[" + opt(p.profile_95.lower, p.profile_95.lower_failed_at) + ", " +
+                                       opt(p.profile_95.upper, p.profile_95.upper_failed_at) + "]"
                                  : "-";
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", p.key.Text().c_str(),
                   p.value, ToString(p.identifiable), sd, wald, prof.c_str());

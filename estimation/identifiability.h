@@ -22,7 +22,8 @@ struct IdentifiabilityOptions {
   // others, until 2 (cost - cost_min) passes the chi-square(1) 95 % point
   // 3.841, at most profile_steps steps a side, steps growing from
   // profile_first_step by profile_growth (coordinate units, log for
-  // positive parameters).
+  // positive parameters); the crossing is then bisected with a refit at
+  // each midpoint. A step whose refit fails is halved a few times.
   int profile_steps = 12;
   double profile_first_step = 0.02;
   double profile_growth = 1.6;
@@ -46,16 +47,25 @@ struct IdentifiabilityOptions {
   bool IsValid(std::string* why) const;
 };
 
+// Each side is closed (lower/upper: a refitted point where 2 delta cost is
+// 3.841 to within 0.02, or across a jump the first over it, 1e-6 in
+// coordinates past the last under it), failed (*_failed_at) or open
+// (neither: the scan reached its last step or the box under the threshold).
 struct ProfileInterval {
   bool computed = false;
   std::optional<double> lower, upper;  // physical units; none: did not close
-  std::vector<std::pair<double, double>> curve;  // (value, 2 delta cost)
+  // Physical value nearest the optimum where no refit was possible (from
+  // no start a finite cost), on a side that did not close; none otherwise.
+  std::optional<double> lower_failed_at, upper_failed_at;
+  std::vector<std::pair<double, double>> curve;  // (value, 2 delta cost), every point refitted
 
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("computed", &computed);
     a->Visit("lower", &lower);
     a->Visit("upper", &upper);
+    a->Visit("lower_failed_at", &lower_failed_at);
+    a->Visit("upper_failed_at", &upper_failed_at);
     a->Visit("curve_value_delta_chi2", &curve);
   }
 };

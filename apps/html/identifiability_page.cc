@@ -41,9 +41,16 @@ Cell WaldCell(const std::optional<std::pair<double, double>>& interval) {
   return IntervalCell(interval->first, interval->second);
 }
 
+// As IntervalCell, a side whose refits failed "failed at x" instead of "open".
 Cell ProfileCell(const ProfileInterval& profile) {
   if (!profile.computed) return {"–", true};
-  return IntervalCell(profile.lower, profile.upper);
+  const auto end = [](std::optional<double> x, std::optional<double> failed_at) {
+    if (x && std::isfinite(*x)) return Format(*x);
+    return failed_at ? "failed at " + Format(*failed_at) : std::string("open");
+  };
+  return {"[" + end(profile.lower, profile.lower_failed_at) + ", " +
+              end(profile.upper, profile.upper_failed_at) + "]",
+          true};
 }
 
 // A collinearity index; a pair is listed only above a finite threshold, so
