@@ -74,6 +74,8 @@ class ModalResiduals {
   int num_residuals() const { return num_residuals_; }
   int num_parameters() const { return setup_.size(); }
   const ParameterSetup& setup() const { return setup_; }
+  const ModalModel& model() const { return model_; }
+  const Dataset& dataset() const { return dataset_; }
 
   // r(x): every condition's residuals in order, then the priors. False when
   // the model cannot be solved or a measured mode has no model counterpart

@@ -8,6 +8,8 @@
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
+#include "estimation/structure.h"
+
 namespace ringid {
 
 bool UncertaintyOptions::IsValid(std::string* why) const {
@@ -65,7 +67,14 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
   u.ok = true;
-  u.jacobian = J;
+  // Finite differences leave noise along directions the model cannot see;
+  // those are decided exactly and projected out.
+  const StructuralFreedom freedom = FindStructuralFreedom(residuals, x);
+  const Eigen::MatrixXd& S = freedom.directions;
+  u.structural_directions = S;
+  u.structural_readable = freedom.readable;
+  u.structural_invariances = freedom.invariances;
+  u.jacobian = S.cols() ? Eigen::MatrixXd(J - (J * S) * S.transpose()) : J;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(u.jacobian, Eigen::ComputeFullV);
   u.singular_values = svd.singularValues();
   const double smax = u.singular_values.size() ? u.singular_values[0] : 0;
@@ -105,6 +114,11 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     const double in_null =
         u.null_space.cols() ? u.null_space.row(i).norm() : 0.0;
     std::ostringstream why;
+    if (S.cols() && S.row(i).norm() > options.null_projection) {
+      u.classes[i] = Identifiability::kNo;
+      u.reasons[i] = "structurally free: " + freedom.InvarianceOf(i);
+      continue;
+    }
     if (in_null > options.null_projection) {
       u.classes[i] = Identifiability::kNo;
       why << "moves along a direction the data leaves free ("

@@ -47,11 +47,18 @@ struct Uncertainty {
   std::vector<Identifiability> classes;  // per coordinate
   std::vector<std::string> reasons;
   std::vector<double> std;  // per coordinate; NaN where not defined
+  // Directions the model cannot see whatever the data (estimation/structure.h);
+  // jacobian, singular_values, rank and null_space are those of the data
+  // Jacobian with these directions projected out.
+  Eigen::MatrixXd structural_directions;   // orthonormal columns
+  std::vector<Eigen::VectorXd> structural_readable;  // the same span, one invariance each
+  std::vector<std::string> structural_invariances;
 
   // The report's part; classes and std go with each parameter.
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("rank", &rank);
+    a->Visit("structural_invariances", &structural_invariances);
     a->Visit("computed", &covariance_ok);
     a->Visit("error", &covariance_error);
     a->Visit("matrix", &covariance);

@@ -6,13 +6,15 @@ namespace {
 using L = ModeLabel;
 
 // k_bz = k_bx + dk_bz and k_bpsi = k_bgamma + dk_bpsi when the ties hold.
-class AnisotropicSidewall final : public Effect {
+class AnisotropicSidewall final : public EffectOf<AnisotropicSidewall> {
+ public:
   const char* name() const override { return "anisotropic_sidewall"; }
   Param size() const override { return Param::dk_bpsi; }
   std::vector<Param> parameters() const override {
     return {Param::dk_bz, Param::dk_bpsi};
   }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
     s->AddSpring(L::kVertical, p[Param::dk_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
     s->AddSpring(L::kYaw, p[Param::dk_bpsi], {{Dof::kPsiB, 1}});
   }
@@ -20,15 +22,17 @@ class AnisotropicSidewall final : public Effect {
 
 // The hub (mass m_a) on springs 1/s_h in x, z, y; the sidewall of eqs. (1),(3)
 // already acts on x_b - x_a etc., so freeing the hub is all this needs.
-class HubCompliance final : public Effect {
+class HubCompliance final : public EffectOf<HubCompliance> {
+ public:
   const char* name() const override { return "hub_compliance"; }
   Param size() const override { return Param::s_h; }
   std::vector<Param> parameters() const override {
     return {Param::s_h, Param::m_a};
   }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
-    const double s_h = p[Param::s_h];
-    if (!(s_h > 0)) return;  // s_h = 0: the rigid hub of the baseline
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
+    const auto& s_h = p[Param::s_h];
+    if (!(s_h > 0.0)) return;  // s_h = 0: the rigid hub of the baseline
     const std::pair<Dof, L> hub[] = {{Dof::kXa, L::kHubLongitudinal},
                                      {Dof::kZa, L::kHubVertical},
                                      {Dof::kYa, L::kHubLateral}};
@@ -41,46 +45,54 @@ class HubCompliance final : public Effect {
 };
 
 // S[psi_b, psi_b] += k_cpsi.
-class ContactYawStiffness final : public Effect {
+class ContactYawStiffness final : public EffectOf<ContactYawStiffness> {
+ public:
   const char* name() const override { return "contact_yaw_stiffness"; }
   Param size() const override { return Param::k_cpsi; }
   std::vector<Param> parameters() const override { return {Param::k_cpsi}; }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
     s->AddSpring(L::kYaw, p[Param::k_cpsi], {{Dof::kPsiB, 1}});
   }
 };
 
 // K[theta_a, theta_a] += k_atheta.
-class AxleTorsion final : public Effect {
+class AxleTorsion final : public EffectOf<AxleTorsion> {
+ public:
   const char* name() const override { return "axle_torsion"; }
   Param size() const override { return Param::k_atheta; }
   std::vector<Param> parameters() const override { return {Param::k_atheta}; }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
     s->AddSpring(L::kRotationInPhase, p[Param::k_atheta], {{Dof::kThetaA, 1}});
   }
 };
 
 // dm spread round the tread at r_e0: translation dm, spin dm r^2, tilt dm r^2/2.
-class SensorMass final : public Effect {
+class SensorMass final : public EffectOf<SensorMass> {
+ public:
   const char* name() const override { return "sensor_mass"; }
   Param size() const override { return Param::dm; }
   std::vector<Param> parameters() const override { return {Param::dm}; }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
-    const double dm = p[Param::dm];
-    const double r2 = p[Param::r_e0] * p[Param::r_e0];
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
+    const auto& dm = p[Param::dm];
+    const auto r2 = p[Param::r_e0] * p[Param::r_e0];
     for (Dof d : {Dof::kXb, Dof::kZb, Dof::kYb}) s->AddMass(d, dm);
     s->AddMass(Dof::kThetaB, dm * r2);
-    s->AddMass(Dof::kGammaB, dm * r2 / 2);
-    s->AddMass(Dof::kPsiB, dm * r2 / 2);
+    s->AddMass(Dof::kGammaB, dm * r2 / 2.0);
+    s->AddMass(Dof::kPsiB, dm * r2 / 2.0);
   }
 };
 
 // K[x_b, y_b] = K[y_b, x_b] = k_xy: the planes become one coupled system.
-class LugCoupling final : public Effect {
+class LugCoupling final : public EffectOf<LugCoupling> {
+ public:
   const char* name() const override { return "lug_coupling"; }
   Param size() const override { return Param::k_xy; }
   std::vector<Param> parameters() const override { return {Param::k_xy}; }
-  void Apply(const Parameters& p, MechanicalSystem* s) const override {
+  template <class P, class S>
+  void ApplyTo(const P& p, S* s) const {
     s->AddStiffness(std::nullopt, Dof::kXb, Dof::kYb, p[Param::k_xy]);
     s->AddStiffness(std::nullopt, Dof::kYb, Dof::kXb, p[Param::k_xy]);
   }

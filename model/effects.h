@@ -8,11 +8,16 @@
 #include <string_view>
 #include <vector>
 
+#include <ceres/jet.h>
+
 #include "model/enum_names.h"
 #include "model/parameters.h"
 #include "model/system.h"
 
 namespace ringid {
+
+// A scalar carrying the derivatives with respect to every parameter.
+using ParameterJet = ceres::Jet<double, kNumParams>;
 
 class Effect {
  public:
@@ -23,6 +28,20 @@ class Effect {
   // The parameter that sizes the effect: at 0 the model is the baseline.
   virtual Param size() const = 0;
   virtual void Apply(const Parameters& p, MechanicalSystem* s) const = 0;
+  virtual void Apply(const ParameterArray<ParameterJet>& p,
+                     BasicSystem<ParameterJet>* s) const = 0;
+};
+
+// An effect written once, as Derived::ApplyTo(p, s) for either scalar.
+template <class Derived>
+class EffectOf : public Effect {
+ public:
+  void Apply(const Parameters& p, MechanicalSystem* s) const final {
+    static_cast<const Derived*>(this)->ApplyTo(p, s);
+  }
+  void Apply(const ParameterArray<ParameterJet>& p, BasicSystem<ParameterJet>* s) const final {
+    static_cast<const Derived*>(this)->ApplyTo(p, s);
+  }
 };
 
 // The catalogue, in the order of docs/conventions.md §4; pointers live for

@@ -106,6 +106,18 @@ class Parameters {
   std::array<double, kNumParams> v_;
 };
 
+// Values of every parameter in another scalar type (a ceres::Jet for exact
+// derivatives, model/structure.h), indexed as Parameters.
+template <class T>
+class ParameterArray {
+ public:
+  const T& operator[](Param p) const { return v_[static_cast<int>(p)]; }
+  T& operator[](Param p) { return v_[static_cast<int>(p)]; }
+
+ private:
+  std::array<T, kNumParams> v_;
+};
+
 }  // namespace ringid
 
 #endif  // RINGID_MODEL_PARAMETERS_H_

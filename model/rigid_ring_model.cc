@@ -12,10 +12,11 @@ namespace {
 // sidewall damping turns with the wheel (circulatory stiffness), and the
 // spinning belt is a gyroscope of polar inertia M(theta_b, theta_b), which
 // includes what effects add to it.
-void AddRolling(double c_bx, double c_bz, double c_bgamma, double c_bpsi,
-                double omega, MechanicalSystem* s) {
+template <class T>
+void AddRolling(const T& c_bx, const T& c_bz, const T& c_bgamma, const T& c_bpsi,
+                const T& omega, BasicSystem<T>* s) {
   // On the sidewall deformation (belt minus hub), eqs. (1), (3).
-  auto circulate = [&](Dof row_b, Dof row_a, Dof col_b, Dof col_a, double v) {
+  auto circulate = [&](Dof row_b, Dof row_a, Dof col_b, Dof col_a, const T& v) {
     s->AddStiffness(std::nullopt, row_b, col_b, v);
     s->AddStiffness(std::nullopt, row_b, col_a, -v);
     s->AddStiffness(std::nullopt, row_a, col_b, -v);
@@ -25,9 +26,64 @@ void AddRolling(double c_bx, double c_bz, double c_bgamma, double c_bpsi,
   circulate(Dof::kZb, Dof::kZa, Dof::kXb, Dof::kXa, -c_bx * omega);
   s->AddStiffness(std::nullopt, Dof::kGammaB, Dof::kPsiB, c_bpsi * omega);
   s->AddStiffness(std::nullopt, Dof::kPsiB, Dof::kGammaB, -c_bgamma * omega);
-  const double spin = s->M()(static_cast<int>(Dof::kThetaB), static_cast<int>(Dof::kThetaB));
+  const T spin = s->M()(static_cast<int>(Dof::kThetaB), static_cast<int>(Dof::kThetaB));
   s->AddVelocityCoupling(Dof::kGammaB, Dof::kPsiB, spin * omega);
   s->AddVelocityCoupling(Dof::kPsiB, Dof::kGammaB, -spin * omega);
+}
+
+// Eqs. (12) and (15) as corrected in docs/model.md, then each effect, then
+// the terms of rolling (docs/rolling.md); P is Parameters or a ParameterArray.
+template <class T, class P>
+BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p, double speed) {
+  using L = ModeLabel;
+  using Q = Param;
+  BasicSystem<T> s;
+  // In-plane, eq. (12): q = [x_b, z_b, theta_a, theta_b]. The sidewall acts
+  // on belt minus hub (eqs. 1, 3); the hub is rigid unless an effect frees it.
+  s.AddMass(Dof::kXb, p[Q::m_b]);
+  s.AddMass(Dof::kZb, p[Q::m_b]);
+  s.AddMass(Dof::kThetaA, p[Q::I_ay]);
+  s.AddMass(Dof::kThetaB, p[Q::I_by]);
+  s.AddDamper(p[Q::c_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
+  s.AddDamper(p[Q::c_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
+  s.AddDamper(p[Q::c_btheta], {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
+  // Each spring is owned by the mode named after the element it deforms: the
+  // in-phase rotation rolls the belt on its contact, shearing the sidewall.
+  s.AddSpring(L::kRotationInPhase, p[Q::k_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
+  s.AddSpring(L::kVertical, p[Q::k_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
+  s.AddSpring(L::kVertical, p[Q::k_cz], {{Dof::kZb, 1}});
+  s.AddSpring(L::kRotationAntiPhase, p[Q::k_btheta],
+              {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
+  // Contact slip, eqs. (6), (8): K_cx / sigma_cx on x_b - r_e0 theta_b.
+  const typename BasicSystem<T>::Combination slip_x = {{Dof::kXb, 1},
+                                                       {Dof::kThetaB, -p[Q::r_e0]}};
+  s.AddSlipLag({L::kLongitudinal, p[Q::K_cx], p[Q::sigma_cx], slip_x, slip_x, {}});
+
+  // Out-of-plane, eq. (15) as corrected in docs/model.md: q = [y_b, gamma_b, psi_b].
+  s.AddMass(Dof::kYb, p[Q::m_b]);
+  s.AddMass(Dof::kGammaB, p[Q::I_bx]);
+  s.AddMass(Dof::kPsiB, p[Q::I_bz]);
+  s.AddDamper(p[Q::c_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
+  s.AddDamper(p[Q::c_bgamma], {{Dof::kGammaB, 1}});
+  s.AddDamper(p[Q::c_bpsi], {{Dof::kPsiB, 1}});
+  const T r_l0 = p[Q::r_l0];
+  s.AddSpring(L::kLateral, p[Q::k_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
+  s.AddSpring(L::kCamber, p[Q::k_bgamma] + r_l0 * p[Q::F_cz0], {{Dof::kGammaB, 1}});
+  s.AddSpring(L::kYaw, p[Q::k_bpsi], {{Dof::kPsiB, 1}});
+  // Lateral slip: F_cy acts on y_b, on camber through r_l0 and on yaw
+  // through the trail t_0; the slip sees y_b - r_l0 gamma_b and, rolling,
+  // the heading psi_b. At standstill this is S of docs/model.md.
+  s.AddSlipLag({L::kLateral, p[Q::K_cy], p[Q::sigma_cy],
+                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}, {Dof::kPsiB, -p[Q::t_0]}},
+                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}},
+                {{Dof::kPsiB, 1}}});
+
+  for (const Effect* e : effects) e->Apply(p, &s);
+  if (speed > 0) {
+    AddRolling<T>(p[Q::c_bx], p[Q::c_bz], p[Q::c_bgamma], p[Q::c_bpsi], speed / p[Q::r_e0], &s);
+  }
+  s.set_speed(speed);
+  return s;
 }
 
 }  // namespace
@@ -47,54 +103,12 @@ RigidRingModel::RigidRingModel(std::vector<const Effect*> effects)
 std::vector<Param> RigidRingModel::parameters() const { return used_; }
 
 MechanicalSystem RigidRingModel::Assemble(const Parameters& p, double speed) const {
-  using L = ModeLabel;
-  using P = Param;
-  MechanicalSystem s;
-  // In-plane, eq. (12): q = [x_b, z_b, theta_a, theta_b]. The sidewall acts
-  // on belt minus hub (eqs. 1, 3); the hub is rigid unless an effect frees it.
-  s.AddMass(Dof::kXb, p[P::m_b]);
-  s.AddMass(Dof::kZb, p[P::m_b]);
-  s.AddMass(Dof::kThetaA, p[P::I_ay]);
-  s.AddMass(Dof::kThetaB, p[P::I_by]);
-  s.AddDamper(p[P::c_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
-  s.AddDamper(p[P::c_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
-  s.AddDamper(p[P::c_btheta], {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
-  // Each spring is owned by the mode named after the element it deforms: the
-  // in-phase rotation rolls the belt on its contact, shearing the sidewall.
-  s.AddSpring(L::kRotationInPhase, p[P::k_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
-  s.AddSpring(L::kVertical, p[P::k_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
-  s.AddSpring(L::kVertical, p[P::k_cz], {{Dof::kZb, 1}});
-  s.AddSpring(L::kRotationAntiPhase, p[P::k_btheta],
-              {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
-  // Contact slip, eqs. (6), (8): K_cx / sigma_cx on x_b - r_e0 theta_b.
-  const MechanicalSystem::Combination slip_x = {{Dof::kXb, 1}, {Dof::kThetaB, -p[P::r_e0]}};
-  s.AddSlipLag({L::kLongitudinal, p[P::K_cx], p[P::sigma_cx], slip_x, slip_x, {}});
+  return AssembleAny<double>(effects_, p, speed);
+}
 
-  // Out-of-plane, eq. (15) as corrected in docs/model.md: q = [y_b, gamma_b, psi_b].
-  s.AddMass(Dof::kYb, p[P::m_b]);
-  s.AddMass(Dof::kGammaB, p[P::I_bx]);
-  s.AddMass(Dof::kPsiB, p[P::I_bz]);
-  s.AddDamper(p[P::c_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
-  s.AddDamper(p[P::c_bgamma], {{Dof::kGammaB, 1}});
-  s.AddDamper(p[P::c_bpsi], {{Dof::kPsiB, 1}});
-  const double r_l0 = p[P::r_l0];
-  s.AddSpring(L::kLateral, p[P::k_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
-  s.AddSpring(L::kCamber, p[P::k_bgamma] + r_l0 * p[P::F_cz0],
-              {{Dof::kGammaB, 1}});
-  s.AddSpring(L::kYaw, p[P::k_bpsi], {{Dof::kPsiB, 1}});
-  // Lateral slip: F_cy acts on y_b, on camber through r_l0 and on yaw
-  // through the trail t_0; the slip sees y_b - r_l0 gamma_b and, rolling,
-  // the heading psi_b. At standstill this is S of docs/model.md.
-  s.AddSlipLag({L::kLateral, p[P::K_cy], p[P::sigma_cy],
-                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}, {Dof::kPsiB, -p[P::t_0]}},
-                {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}},
-                {{Dof::kPsiB, 1}}});
-
-  for (const Effect* e : effects_) e->Apply(p, &s);
-  if (speed > 0) AddRolling(p[P::c_bx], p[P::c_bz], p[P::c_bgamma], p[P::c_bpsi],
-                            speed / p[P::r_e0], &s);
-  s.set_speed(speed);
-  return s;
+BasicSystem<ParameterJet> RigidRingModel::Assemble(const ParameterArray<ParameterJet>& p,
+                                                   double speed) const {
+  return AssembleAny<ParameterJet>(effects_, p, speed);
 }
 
 ModalSolution RigidRingModel::Solve(const Parameters& p, double speed) const {

@@ -23,6 +23,10 @@ class ModalModel {
   // The modes at standstill, and rolling freely at a forward speed (m/s).
   ModalSolution Solve(const Parameters& p) const { return Solve(p, 0.0); }
   virtual ModalSolution Solve(const Parameters& p, double speed_m_s) const = 0;
+  // The system at `speed_m_s`, every value carrying its derivatives with
+  // respect to the parameters (model/structure.h).
+  virtual BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
+                                             double speed_m_s) const = 0;
   // The parameters Solve reads, in catalogue order.
   virtual std::vector<Param> parameters() const = 0;
 };
@@ -34,6 +38,8 @@ class RigidRingModel final : public ModalModel {
   // Eqs. (12) and (15) as corrected in docs/model.md, then each effect, then
   // the terms of rolling at speed_m_s (docs/rolling.md).
   MechanicalSystem Assemble(const Parameters& p, double speed_m_s = 0) const;
+  BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
+                                     double speed_m_s) const override;
   std::unique_ptr<ModalModel> Clone() const override {
     return std::make_unique<RigidRingModel>(*this);
   }

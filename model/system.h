@@ -1,5 +1,7 @@
 // M q'' + C q' + K q = 0 over every degree of freedom of names.h, built element
-// by element so that each label knows the stiffness that carries it.
+// by element so that each label knows the stiffness that carries it. The
+// scalar is double, or a ceres::Jet where the exact derivatives of the
+// matrices with respect to the parameters are wanted (model/structure.h).
 #ifndef RINGID_MODEL_SYSTEM_H_
 #define RINGID_MODEL_SYSTEM_H_
 
@@ -15,11 +17,22 @@
 
 namespace ringid {
 
-class MechanicalSystem {
+// One degree of freedom with its coefficient in a deformation.
+template <class T>
+struct Term {
+  template <class C>
+  Term(Dof d, const C& c) : dof(d), coef(c) {}  // NOLINT: {Dof, 1} reads as a term
+  Dof dof;
+  T coef;
+};
+
+template <class T>
+class BasicSystem {
  public:
-  using Matrix = Eigen::Matrix<double, kNumDofs, kNumDofs>;
-  using Deformation = std::initializer_list<std::pair<Dof, double>>;
-  using Combination = std::vector<std::pair<Dof, double>>;
+  using Scalar = T;
+  using Matrix = Eigen::Matrix<T, kNumDofs, kNumDofs>;
+  using Deformation = std::initializer_list<Term<T>>;
+  using Combination = std::vector<Term<T>>;
 
   // Eq. (5) linearised about free rolling at speed V (docs/rolling.md): the
   // slip zeta of one contact direction obeys sigma zeta' + V zeta =
@@ -27,30 +40,54 @@ class MechanicalSystem {
   // standstill zeta = -d^T q / sigma: the stiffness (K / sigma) f d^T.
   struct SlipLag {
     ModeLabel owner;
-    double stiffness;           // K_c
-    double relaxation_length;   // sigma_c
-    Combination force;          // f
-    Combination velocity;       // d
-    Combination heading;        // e
+    T stiffness;           // K_c
+    T relaxation_length;   // sigma_c
+    Combination force;     // f
+    Combination velocity;  // d
+    Combination heading;   // e
   };
 
   // The seven belt and rim degrees of freedom active; the hub held rigid.
-  MechanicalSystem();
+  BasicSystem() {
+    M_.setZero();
+    C_.setZero();
+    K_.setZero();
+    for (auto& k : K_label_) k.setZero();
+    active_.fill(false);
+    for (int i = 0; i <= I(Dof::kPsiB); ++i) active_[i] = true;
+  }
 
-  void Activate(Dof dof) { active_[static_cast<int>(dof)] = true; }
-  bool active(Dof dof) const { return active_[static_cast<int>(dof)]; }
+  void Activate(Dof dof) { active_[I(dof)] = true; }
+  bool active(Dof dof) const { return active_[I(dof)]; }
 
-  void AddMass(Dof dof, double m);
+  void AddMass(Dof dof, const T& m) { M_(I(dof), I(dof)) += m; }
   // A spring k on the deformation d = sum coef * q: adds k d d^T to K and to the
   // stiffness of `owner`, the label named after the element it deforms.
-  void AddSpring(std::optional<ModeLabel> owner, double k, Deformation d);
-  void AddDamper(double c, Deformation d);
+  void AddSpring(std::optional<ModeLabel> owner, const T& k, Deformation d) {
+    for (const auto& [a, ca] : d) {
+      for (const auto& [b, cb] : d) AddStiffness(owner, a, b, k * ca * cb);
+    }
+  }
+  void AddDamper(const T& c, Deformation d) {
+    for (const auto& [a, ca] : d) {
+      for (const auto& [b, cb] : d) C_(I(a), I(b)) += c * ca * cb;
+    }
+  }
   // A single, possibly unsymmetric, stiffness term (the trail coupling of S).
-  void AddStiffness(std::optional<ModeLabel> owner, Dof row, Dof col, double v);
-  void AddVelocityCoupling(Dof row, Dof col, double v);  // C(row, col) += v
+  void AddStiffness(std::optional<ModeLabel> owner, Dof row, Dof col, const T& v) {
+    K_(I(row), I(col)) += v;
+    if (owner) K_label_[static_cast<int>(*owner)](I(row), I(col)) += v;
+  }
+  void AddVelocityCoupling(Dof row, Dof col, const T& v) { C_(I(row), I(col)) += v; }
   // Adds the lag, and its standstill stiffness to K() and to its owner: K()
   // is always the standing stiffness; at speed the lag's states replace it.
-  void AddSlipLag(SlipLag lag);
+  void AddSlipLag(SlipLag lag) {
+    const T k = lag.stiffness / lag.relaxation_length;
+    for (const auto& [a, fa] : lag.force) {
+      for (const auto& [b, db] : lag.velocity) AddStiffness(lag.owner, a, b, k * fa * db);
+    }
+    lags_.push_back(std::move(lag));
+  }
 
   // The forward speed of free rolling; 0 at standstill.
   void set_speed(double speed_m_s) { speed_ = speed_m_s; }
@@ -60,17 +97,19 @@ class MechanicalSystem {
   const Matrix& M() const { return M_; }
   const Matrix& C() const { return C_; }
   const Matrix& K() const { return K_; }
-  const Matrix& K_label(ModeLabel l) const {
-    return K_label_[static_cast<int>(l)];
-  }
+  const Matrix& K_label(ModeLabel l) const { return K_label_[static_cast<int>(l)]; }
 
  private:
+  static int I(Dof d) { return static_cast<int>(d); }
+
   Matrix M_, C_, K_;
   std::array<Matrix, kNumLabels> K_label_;
   std::array<bool, kNumDofs> active_;
   std::vector<SlipLag> lags_;
   double speed_ = 0;
 };
+
+using MechanicalSystem = BasicSystem<double>;
 
 }  // namespace ringid
 
