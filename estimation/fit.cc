@@ -136,7 +136,7 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
 
 bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
                  std::string* why) {
-  const Box box = BoundsAround(setup, x0, 2, bounds);
+  const Box box = BoundsAround(setup, x0, 2, bounds);  // the factor is unused for bounded ones
   for (const auto& [param, bound] : bounds) {
     bool free = false;
     for (int i = 0; i < setup.size(); ++i) {

@@ -121,6 +121,8 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   Eigen::MatrixXd g(rows.size(), n + conditions);
   int kept = 0;
   for (const Eigen::RowVectorXd& row : rows) {
+    // Derivatives that overflow at an extreme point decide nothing: no claim.
+    if (!row.allFinite()) return out;
     const double norm = row.norm();
     if (norm > 0) g.row(kept++) = row / norm;
   }
