@@ -11,7 +11,7 @@
 namespace ringid {
 namespace {
 
-// {METHODS}, {WEIGHTINGS}, {CONVENTIONS}, {SUITES} and {EFFECTS} are filled in
+// {METHODS}, {WEIGHTINGS}, {CONVENTIONS}, {DERIVATIVES}, {SUITES} and {EFFECTS} are filled in
 // by Help() from the names the library defines.
 const char kHelp[] =
     "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
@@ -26,6 +26,7 @@ const char kHelp[] =
     "             --dataset=FILE [--method={METHODS}] [--starts=N] [--seed=N]\n"
     "             [--weighting={WEIGHTINGS}] [--relative_sigma=X] [--shapes=BOOL]\n"
     "             [--damping=BOOL] [--shape_convention={CONVENTIONS}]\n"
+    "             [--derivatives={DERIVATIVES}] [--bounds=NAME:LO:HI,...] [--fix=NAME,...]\n"
     "             [--effects=LIST] [--output=FILE] [--save_parameters=FILE]\n"
     "  identifiability  what the data determine at the fitted point: rank,\n"
     "             classes, Wald and profile intervals, free combinations,\n"
@@ -89,6 +90,7 @@ std::string Help() {
       {"{METHODS}", Alternatives<Method>()},
       {"{WEIGHTINGS}", Alternatives<FrequencyWeighting>()},
       {"{CONVENTIONS}", Alternatives<ShapeConvention>()},
+      {"{DERIVATIVES}", Alternatives<Derivatives>()},
       {"{SUITES}", Joined(suites, "|")},
       {"{EFFECTS}", Joined(EffectNames(EffectCatalogue()), ", ")}};
   for (const auto& [key, value] : fills) help.replace(help.find(key), std::string(key).size(), value);

@@ -51,6 +51,8 @@ DEFINE_bool(shapes, ringid::ResidualOptions().use_shapes, "identify: use measure
 DEFINE_bool(damping, ringid::ResidualOptions().use_damping, "identify: use measured damping ratios");
 DEFINE_string(shape_convention, ringid::ToString(ringid::ResidualOptions().shape_convention),
               "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
+DEFINE_string(derivatives, ringid::ToString(ringid::ResidualOptions().derivatives),
+              "identify, identifiability, compare, diagnose: Jacobians by numeric (central differences) or analytic (eigenvalue and eigenvector derivatives)");
 DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
 DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect parameters among them)");
 DEFINE_double(frequency_noise, ringid::SimulateOptions().frequency_noise,
@@ -206,7 +208,8 @@ int Predict(int argc, char** argv) {
 
 const std::set<std::string> kFitFlags = {
     "dataset", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "effects", "output", "bounds", "fix"};
+    "shapes", "damping", "shape_convention", "derivatives", "effects", "output", "bounds",
+    "fix"};
 
 // A number that is the whole of `text`.
 bool ParseNumber(const std::string& text, double* v) {
@@ -276,7 +279,8 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
   if (!ParseFlag("method", FLAGS_method, &o->method, error) ||
       !ParseFlag("weighting", FLAGS_weighting, &o->residuals.frequency_weighting, error) ||
       !ParseFlag("shape_convention", FLAGS_shape_convention, &o->residuals.shape_convention,
-                 error)) {
+                 error) ||
+      !ParseFlag("derivatives", FLAGS_derivatives, &o->residuals.derivatives, error)) {
     return false;
   }
   o->starts = FLAGS_starts;

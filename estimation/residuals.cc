@@ -1,6 +1,7 @@
 #include "estimation/residuals.h"
 
 #include <cmath>
+#include <memory>
 
 #include <ceres/dynamic_numeric_diff_cost_function.h>
 
@@ -27,6 +28,27 @@ bool ResidualOptions::IsValid(std::string* why) const {
 
 RealShapeVector ComparableShape(const Mode& mode, ShapeConvention c) {
   return c == ShapeConvention::kPaper ? mode.PaperShape() : mode.RealShape();
+}
+
+RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention c, int p) {
+  const ModeDerivatives& d = *mode.derivatives;
+  const ShapeVector ds = d.shape.col(p);
+  if (c == ShapeConvention::kContract) return ds.real();
+  // Mode::PaperShape: u = Re(s g) / N, g = conj(L) / |L| with L = lambda s_big
+  // (s_big = 1, fixed), N^2 = |s|^2 (1 + |lambda|^2).
+  const std::complex<double> lambda = mode.eigenvalue, dlambda = d.eigenvalue[p];
+  const bool by_lambda = std::abs(lambda) >= 1;
+  const std::complex<double> L = by_lambda ? lambda : 1.0, dL = by_lambda ? dlambda : 0.0;
+  const double abs_L = std::abs(L), dabs_L = (std::conj(L) * dL).real() / abs_L;
+  const std::complex<double> g = std::conj(L) / abs_L;
+  const std::complex<double> dg = std::conj(dL) / abs_L - std::conj(L) * dabs_L / (abs_L * abs_L);
+  const double S = mode.shape.squaredNorm();
+  const double dS = 2 * (mode.shape.conjugate().cwiseProduct(ds)).sum().real();
+  const double l2 = std::norm(lambda), dl2 = 2 * (std::conj(lambda) * dlambda).real();
+  const double N = std::sqrt(S * (1 + l2));
+  const double dN = (dS * (1 + l2) + S * dl2) / (2 * N);
+  const RealShapeVector u = (mode.shape * g).real() / N;
+  return (ds * g + mode.shape * dg).real() / N - u * (dN / N);
 }
 
 double Mac(const RealShapeVector& model,
@@ -163,30 +185,38 @@ bool ModalResiduals::Pair(const double* x, std::vector<ModalSolution>* solutions
   return true;
 }
 
-bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double* own,
-                                       double* r) const {
-  ++evaluations_;
-  const ModalSolution solution =
-      model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
+bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
+                          Eigen::Ref<RowMatrix> dr) const {
   std::vector<int> pairs(dataset_.modes.size(), -1);
   std::string why;
   if (!solution.ok || !PairCondition(c, solution, &pairs, &why)) return false;
+  const bool derive = dr.size() > 0;
   const int end = row_begin_[c + 1];
   for (int k = row_begin_[c]; k < end;) {
     const Slot& slot = slots_[k];
     const MeasuredMode& m = dataset_.modes[slot.mode];
     const Mode& mode = solution.modes[pairs[slot.mode]];
-    double* out = r + (k - row_begin_[c]);
+    const int row = k - row_begin_[c];
+    if (derive && !mode.derivatives) return false;
     switch (slot.kind) {
-      case Slot::kFrequency:
-        *out = (mode.frequency_hz - m.frequency_hz) / FrequencySigma(m);
+      case Slot::kFrequency: {
+        const double sigma = FrequencySigma(m);
+        r[row] = (mode.frequency_hz - m.frequency_hz) / sigma;
+        for (int p = 0; derive && p < kNumParams; ++p) {
+          dr(row, p) = mode.derivatives->Frequency(p) / sigma;
+        }
         ++k;
         break;
-      case Slot::kDamping:
-        *out = (mode.damping_ratio - *m.damping_ratio) /
-               m.damping_sigma.value_or(options_.default_damping_sigma);
+      }
+      case Slot::kDamping: {
+        const double sigma = m.damping_sigma.value_or(options_.default_damping_sigma);
+        r[row] = (mode.damping_ratio - *m.damping_ratio) / sigma;
+        for (int p = 0; derive && p < kNumParams; ++p) {
+          dr(row, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
+        }
         ++k;
         break;
+      }
       case Slot::kPrior:
         ++k;
         break;
@@ -206,11 +236,24 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
         }
         // The paper's vectors have a fixed norm (unit state vector), which
         // carries zeta / |lambda|: only their sign is free.
-        const double alpha =
-            options_.shape_convention == ShapeConvention::kPaper
-                ? (um >= 0 ? 1.0 : -1.0) / largest
-                : (uu > 0 ? um / uu : 0);
+        const bool paper = options_.shape_convention == ShapeConvention::kPaper;
+        const double alpha = paper ? (um >= 0 ? 1.0 : -1.0) / largest : (uu > 0 ? um / uu : 0);
         const double sigma = m.shape_sigma.value_or(options_.default_shape_sigma);
+        for (int p = 0; derive && p < kNumParams; ++p) {
+          const RealShapeVector du = ComparableShapeDerivative(mode, options_.shape_convention, p);
+          double duu = 0, dum = 0;
+          for (const auto& [dof, v] : m.shape) {
+            const int i = static_cast<int>(dof);
+            duu += 2 * u[i] * du[i];
+            dum += du[i] * v / largest;
+          }
+          const double dalpha = paper || !(uu > 0) ? 0.0 : dum / uu - um * duu / (uu * uu);
+          int j = row;
+          for (const auto& [dof, v] : m.shape) {
+            const int i = static_cast<int>(dof);
+            dr(j++, p) = (dalpha * u[i] + alpha * du[i]) / sigma;
+          }
+        }
         for (const auto& [dof, v] : m.shape) {
           r[k++ - row_begin_[c]] = (alpha * u[static_cast<int>(dof)] - v / largest) / sigma;
         }
@@ -221,6 +264,49 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
   for (int k = row_begin_[c]; k < end; ++k) {
     if (!std::isfinite(r[k - row_begin_[c]])) return false;
   }
+  return !derive || dr.allFinite();
+}
+
+bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double* own,
+                                       double* r) const {
+  ++evaluations_;
+  const ModalSolution solution =
+      model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
+  RowMatrix none;
+  return Rows(c, solution, r, none);
+}
+
+bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, const double* own,
+                                               double* r, double* jacobian_shared,
+                                               double* jacobian_own, bool* defined) const {
+  ++evaluations_;
+  *defined = false;
+  const ModalSolution solution =
+      model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s, true);
+  const int rows = row_begin_[c + 1] - row_begin_[c];
+  RowMatrix dr(rows, kNumParams);
+  if (!solution.derivatives_undefined.empty()) {
+    RowMatrix none;
+    return Rows(c, solution, r, none);
+  }
+  if (!Rows(c, solution, r, dr)) return false;
+  *defined = true;
+  // Chain rule through the coordinates: coordinate i sets free()[i] and every
+  // parameter tied to it, d value / d x = PhysicalStd(i, x, 1).
+  const auto chain = [&](int begin, int end, const double* x, double* out) {
+    if (!out) return;
+    Eigen::Map<RowMatrix> J(out, rows, end - begin);
+    for (int i = begin; i < end; ++i) {
+      const double scale = setup_.PhysicalStd(i, x[i - begin], 1.0);
+      Eigen::VectorXd column = dr.col(static_cast<int>(setup_.free()[i]));
+      for (const auto& [from, to] : setup_.ties()) {
+        if (to == setup_.free()[i]) column += dr.col(static_cast<int>(from));
+      }
+      J.col(i - begin) = column * scale;
+    }
+  };
+  chain(0, setup_.num_shared(), shared, jacobian_shared);
+  chain(setup_.own_begin(c), setup_.own_begin(c + 1), own, jacobian_own);
   return true;
 }
 
@@ -233,16 +319,6 @@ bool ModalResiduals::Evaluate(const double* x, double* r) const {
     r[first + k] = priors_[k].Residual(setup_, x[priors_[k].coordinate]);
   }
   return true;
-}
-
-ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals) {
-  ceres::NumericDiffOptions options;
-  options.relative_step_size = 1e-4;
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL>(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP, options);
-  cost->AddParameterBlock(residuals.num_parameters());
-  cost->SetNumResiduals(residuals.num_residuals());
-  return cost;
 }
 
 double ModalResiduals::FrequencySigma(const MeasuredMode& m) const {
@@ -270,6 +346,50 @@ struct ConditionRows {
     const double* o = own ? x[shared ? 1 : 0] : nullptr;
     return residuals->EvaluateCondition(condition, s, o, r);
   }
+};
+
+// Central differences with a relative step of 1e-4 (NewResidualCost).
+ceres::NumericDiffOptions CentralDifferences() {
+  ceres::NumericDiffOptions options;
+  options.relative_step_size = 1e-4;
+  return options;
+}
+
+// One condition's rows with the exact Jacobian; central differences where
+// the derivatives do not exist.
+class AnalyticConditionCost final : public ceres::CostFunction {
+ public:
+  AnalyticConditionCost(const ModalResiduals& residuals, int condition, int num_shared,
+                        int num_own)
+      : residuals_(residuals), condition_(condition), shared_(num_shared > 0),
+        own_(num_own > 0),
+        numeric_(new ConditionRows{&residuals, condition, num_shared > 0, num_own > 0},
+                 ceres::TAKE_OWNERSHIP, CentralDifferences()) {
+    for (int size : {num_shared, num_own}) {
+      if (size == 0) continue;
+      mutable_parameter_block_sizes()->push_back(size);
+      numeric_.AddParameterBlock(size);
+    }
+    const int rows = residuals.row_begin(condition + 1) - residuals.row_begin(condition);
+    set_num_residuals(rows);
+    numeric_.SetNumResiduals(rows);
+  }
+  bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    const double* s = shared_ ? x[0] : nullptr;
+    const double* o = own_ ? x[shared_ ? 1 : 0] : nullptr;
+    if (!jacobians) return residuals_.EvaluateCondition(condition_, s, o, r);
+    double* js = shared_ ? jacobians[0] : nullptr;
+    double* jo = own_ ? jacobians[shared_ ? 1 : 0] : nullptr;
+    bool defined = false;
+    if (!residuals_.EvaluateConditionJacobian(condition_, s, o, r, js, jo, &defined)) return false;
+    return defined || numeric_.Evaluate(x, r, jacobians);
+  }
+
+ private:
+  const ModalResiduals& residuals_;
+  int condition_;
+  bool shared_, own_;
+  ceres::DynamicNumericDiffCostFunction<ConditionRows, ceres::CENTRAL> numeric_;
 };
 
 // The priors, with their exact derivatives, on the shared block.
@@ -301,31 +421,83 @@ class PriorCost final : public ceres::CostFunction {
 
 }  // namespace
 
+ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
+  auto* numeric = new ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL>(
+      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP, CentralDifferences());
+  numeric->AddParameterBlock(residuals.num_parameters());
+  numeric->SetNumResiduals(residuals.num_residuals());
+  if (residuals.options().derivatives == Derivatives::kNumeric) return numeric;
+
+  // Every condition's exact rows placed in x's columns, then the priors.
+  class Analytic final : public ceres::CostFunction {
+   public:
+    Analytic(const ModalResiduals& residuals, ceres::CostFunction* numeric)
+        : residuals_(residuals), numeric_(numeric) {
+      set_num_residuals(residuals.num_residuals());
+      mutable_parameter_block_sizes()->push_back(residuals.num_parameters());
+    }
+    bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+      if (!jacobians || !jacobians[0]) return residuals_.Evaluate(x[0], r);
+      const ParameterSetup& setup = residuals_.setup();
+      const int m = num_residuals(), n = setup.size(), ns = setup.num_shared();
+      Eigen::Map<RowMatrix> J(jacobians[0], m, n);
+      J.setZero();
+      for (int c = 0; c < setup.num_conditions(); ++c) {
+        const int row = residuals_.row_begin(c), rows = residuals_.row_begin(c + 1) - row;
+        const int own = setup.own_begin(c), size = setup.own_begin(c + 1) - own;
+        RowMatrix Js(rows, ns), Jo(rows, size);
+        bool defined = false;
+        if (!residuals_.EvaluateConditionJacobian(c, x[0], x[0] + own, r + row, Js.data(),
+                                                  Jo.data(), &defined)) {
+          return false;
+        }
+        if (!defined) return numeric_->Evaluate(x, r, jacobians);
+        J.block(row, 0, rows, ns) = Js;
+        J.block(row, own, rows, size) = Jo;
+      }
+      const auto& priors = residuals_.priors();
+      for (size_t k = 0; k < priors.size(); ++k) {
+        const int row = residuals_.row_begin(setup.num_conditions()) + static_cast<int>(k);
+        const double xi = x[0][priors[k].coordinate];
+        r[row] = priors[k].Residual(setup, xi);
+        J(row, priors[k].coordinate) = priors[k].Derivative(setup, xi);
+      }
+      return true;
+    }
+
+   private:
+    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const ModalResiduals& residuals_;
+    std::unique_ptr<ceres::CostFunction> numeric_;
+  };
+  return new Analytic(residuals, numeric);
+}
+
 std::vector<std::pair<int, int>> AddResidualBlocks(const ModalResiduals& residuals,
                                                    Eigen::VectorXd* x, ceres::Problem* problem) {
   const ParameterSetup& setup = residuals.setup();
   std::vector<std::pair<int, int>> blocks;
   const int ns = setup.num_shared();
   bool shared_used = !residuals.priors().empty();
-  ceres::NumericDiffOptions options;
-  options.relative_step_size = 1e-4;  // as NewCentralDifferenceCost
   for (int c = 0; c < setup.num_conditions(); ++c) {
     const int begin = setup.own_begin(c), size = setup.own_begin(c + 1) - begin;
     const int rows = residuals.row_begin(c + 1) - residuals.row_begin(c);
     if (rows == 0 || (ns == 0 && size == 0)) continue;
     if (size > 0) blocks.emplace_back(begin, size);
     shared_used = shared_used || ns > 0;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<ConditionRows, ceres::CENTRAL>(
-        new ConditionRows{&residuals, c, ns > 0, size > 0}, ceres::TAKE_OWNERSHIP, options);
     std::vector<double*> parameters;
-    if (ns > 0) {
-      cost->AddParameterBlock(ns);
-      parameters.push_back(x->data());
+    if (ns > 0) parameters.push_back(x->data());
+    if (size > 0) parameters.push_back(x->data() + begin);
+    if (residuals.options().derivatives == Derivatives::kAnalytic) {
+      problem->AddResidualBlock(new AnalyticConditionCost(residuals, c, ns, size), nullptr,
+                                parameters);
+      continue;
     }
-    if (size > 0) {
-      cost->AddParameterBlock(size);
-      parameters.push_back(x->data() + begin);
-    }
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<ConditionRows, ceres::CENTRAL>(
+        new ConditionRows{&residuals, c, ns > 0, size > 0}, ceres::TAKE_OWNERSHIP,
+        CentralDifferences());
+    if (ns > 0) cost->AddParameterBlock(ns);
+    if (size > 0) cost->AddParameterBlock(size);
     cost->SetNumResiduals(rows);
     problem->AddResidualBlock(cost, nullptr, parameters);
   }

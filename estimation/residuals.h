@@ -30,6 +30,17 @@ enum class ShapeConvention {
   kPaper,     // the paper's Tables 4-5 (Mode::PaperShape)
 };
 
+// How the Jacobians of the residuals are made.
+enum class Derivatives {
+  kNumeric,   // central differences through the eigen-solution
+  kAnalytic,  // eigenvalue and eigenvector derivatives (docs/model.md §15),
+              // central differences where two eigenvalues coincide
+};
+
+template <>
+struct EnumNames<Derivatives> {
+  static constexpr std::array<const char*, 2> kNames = {"numeric", "analytic"};
+};
 template <>
 struct EnumNames<FrequencyWeighting> {
   static constexpr std::array<const char*, 2> kNames = {"sigma", "relative"};
@@ -49,6 +60,7 @@ struct ResidualOptions {
   double default_damping_sigma = 0.02;  // where damping_sigma is absent
   double default_shape_sigma = 0.05;    // where shape_sigma is absent
   ShapeConvention shape_convention = ShapeConvention::kContract;
+  Derivatives derivatives = Derivatives::kNumeric;
   // A lognormal prior on free positive baseline parameters, median
   // prior[p] and log-space sigma prior_sigma (0: none), where the dataset
   // gives no prior of its own (docs/conventions.md §7).
@@ -58,8 +70,10 @@ struct ResidualOptions {
   bool IsValid(std::string* why) const;
 };
 
-// The model's real shape under a convention.
+// The model's real shape under a convention, and its derivative with respect
+// to catalogue parameter p (the mode must carry derivatives).
 RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
+RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention convention, int p);
 // MAC of a real model shape against a measured shape on its components.
 double Mac(const RealShapeVector& model,
            const std::vector<std::pair<Dof, double>>& measured);
@@ -88,7 +102,15 @@ class ModalResiduals {
   // The rows of condition c, [row_begin(c), row_begin(c + 1)), from the
   // shared coordinates and that condition's own; rows of the priors follow.
   bool EvaluateCondition(int c, const double* shared, const double* own, double* r) const;
+  // The same rows and their exact derivatives with respect to the shared and
+  // own coordinates (row-major; either may be null). False as
+  // EvaluateCondition; *defined false where the derivatives do not exist
+  // (two eigenvalues coincide), the rows still set.
+  bool EvaluateConditionJacobian(int c, const double* shared, const double* own, double* r,
+                                 double* jacobian_shared, double* jacobian_own,
+                                 bool* defined) const;
   int row_begin(int c) const { return row_begin_[c]; }
+  const ResidualOptions& options() const { return options_; }
 
   // A prior as a residual on one shared coordinate x (docs/conventions.md §7):
   // normal (value(x) - mean) / sigma, lognormal (x - log median) / s with
@@ -131,6 +153,10 @@ class ModalResiduals {
   const Dataset& dataset_;
   const ParameterSetup& setup_;
   ResidualOptions options_;
+  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  // Condition c's rows from its model solution and, where dr is not empty,
+  // their derivatives with respect to each catalogue parameter.
+  bool Rows(int c, const ModalSolution& solution, double* r, Eigen::Ref<RowMatrix> dr) const;
   // Pairs the measured modes of condition c with `solution`'s.
   bool PairCondition(int c, const ModalSolution& solution, std::vector<int>* pairs,
                      std::string* why) const;
@@ -142,14 +168,15 @@ class ModalResiduals {
   mutable std::atomic<long> evaluations_{0};
 };
 
-// The residuals as a Ceres cost function: central differences through the
-// eigen-solution, one parameter block of all free coordinates. The relative
+// The residuals as a Ceres cost function of one parameter block of all free
+// coordinates, with the Jacobian options().derivatives asks for. Numeric:
+// central differences through the eigen-solution. The relative
 // step is 1e-4, not Ceres' 1e-6: the eigenvectors of these near-critically
 // damped modes carry errors near 1e-10, which a 1e-6 step turns into
 // Jacobian noise of 1e-4 (measured on the exact K_cx / sigma_cx pair); with
 // 1e-4 the noise and the truncation error are both near 1e-7.
 // The functor is not owned.
-ceres::CostFunction* NewCentralDifferenceCost(const ModalResiduals& residuals);
+ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals);
 
 // The same residuals in `problem` as one Ceres problem over x: per condition
 // a cost function of the shared coordinates' block and its own block (both

@@ -32,7 +32,7 @@ bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
   const int n = static_cast<int>(x.size());
   const int m = residuals.num_residuals();
   // The same cost function as the fit.
-  std::unique_ptr<ceres::CostFunction> cost(NewCentralDifferenceCost(residuals));
+  std::unique_ptr<ceres::CostFunction> cost(NewResidualCost(residuals));
   Eigen::VectorXd r(m);
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
   double* jac[] = {J.data()};
@@ -63,7 +63,7 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     u.error = u.covariance_error = "the Jacobian could not be evaluated at the fitted point";
     return u;
   }
-  ceres::CostFunction* cost = NewCentralDifferenceCost(residuals);
+  ceres::CostFunction* cost = NewResidualCost(residuals);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
   u.ok = true;

@@ -8,16 +8,11 @@
 #include <string_view>
 #include <vector>
 
-#include <ceres/jet.h>
-
 #include "model/enum_names.h"
 #include "model/parameters.h"
 #include "model/system.h"
 
 namespace ringid {
-
-// A scalar carrying the derivatives with respect to every parameter.
-using ParameterJet = ceres::Jet<double, kNumParams>;
 
 class Effect {
  public:

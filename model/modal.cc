@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -46,15 +47,16 @@ int Index(const std::vector<int>& dofs, Dof d) {
   return it == dofs.end() ? -1 : static_cast<int>(it - dofs.begin());
 }
 
-// The lags whose force acts on the block; only at speed are they states.
-std::vector<const MechanicalSystem::SlipLag*> BlockLags(const MechanicalSystem& s,
-                                                        const std::vector<int>& dofs) {
-  std::vector<const MechanicalSystem::SlipLag*> lags;
+// The lags whose force acts on the block, by index into s.lags(); only at
+// speed are they states.
+template <class T>
+std::vector<int> BlockLags(const BasicSystem<T>& s, const std::vector<int>& dofs) {
+  std::vector<int> lags;
   if (!(s.speed() > 0)) return lags;
-  for (const auto& lag : s.lags()) {
-    for (const auto& [dof, f] : lag.force) {
+  for (int i = 0; i < static_cast<int>(s.lags().size()); ++i) {
+    for (const auto& [dof, f] : s.lags()[i].force) {
       if (Index(dofs, dof) >= 0) {
-        lags.push_back(&lag);
+        lags.push_back(i);
         break;
       }
     }
@@ -62,11 +64,28 @@ std::vector<const MechanicalSystem::SlipLag*> BlockLags(const MechanicalSystem& 
   return lags;
 }
 
-// Solves one block of coupled degrees of freedom and appends its modes.
-bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
-                ModalSolution* out) {
+// On the stack for double; a matrix of jets is too large for it.
+template <class T>
+struct MatrixOf {
+  using type = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxState, kMaxState>;
+};
+template <>
+struct MatrixOf<ParameterJet> {
+  using type = Eigen::Matrix<ParameterJet, Eigen::Dynamic, Eigen::Dynamic>;
+};
+template <class T>
+using MatOf = typename MatrixOf<T>::type;
+
+// Eq. (13): A = [[0, I], [-M^-1 K, -M^-1 C]] over the block; rolling,
+// docs/rolling.md eq. (R8) appends the slip states zeta, whose force
+// replaces the standing stiffness (K / sigma) f d^T that K holds. Also
+// returns M^-1. Written once for double and ParameterJet (the derivatives).
+template <class T>
+MatOf<T> StateMatrix(const BasicSystem<T>& s, const std::vector<int>& dofs,
+                     const std::vector<int>& lags, MatOf<T>* Minv_out) {
   const int k = static_cast<int>(dofs.size());
-  Mat M(k, k), C(k, k), K(k, k);
+  const int m = static_cast<int>(lags.size());
+  MatOf<T> M(k, k), C(k, k), K(k, k);
   for (int a = 0; a < k; ++a) {
     for (int b = 0; b < k; ++b) {
       M(a, b) = s.M()(dofs[a], dofs[b]);
@@ -74,22 +93,11 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
       K(a, b) = s.K()(dofs[a], dofs[b]);
     }
   }
-  const auto lags = BlockLags(s, dofs);
-  const int m = static_cast<int>(lags.size());
-  if (m > kMaxLags) {
-    out->error = "more slip lags than the state vector holds";
-    return false;
-  }
-  Eigen::PartialPivLU<Mat> lu(M);
-  const Mat Minv = lu.inverse();
-  // Eq. (13): A = [[0, I], [-M^-1 K, -M^-1 C]]; rolling, docs/rolling.md
-  // eq. (R8) appends the slip states zeta, whose force replaces the
-  // standing stiffness (K / sigma) f d^T that K holds.
-  Mat A = Mat::Zero(2 * k + m, 2 * k + m);
-  Mat F = Mat::Zero(k, m);
+  MatOf<T> A = MatOf<T>::Zero(2 * k + m, 2 * k + m);
+  MatOf<T> F = MatOf<T>::Zero(k, m);
   for (int j = 0; j < m; ++j) {
-    const auto& lag = *lags[j];
-    const double v = s.speed() / lag.relaxation_length;
+    const auto& lag = s.lags()[lags[j]];
+    const T v = s.speed() / lag.relaxation_length;
     A(2 * k + j, 2 * k + j) = -v;
     for (const auto& [dof, d] : lag.velocity) {
       const int b = Index(dofs, dof);
@@ -109,10 +117,83 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
       }
     }
   }
-  A.block(0, k, k, k).setIdentity();
+  const MatOf<T> Minv = M.inverse();
+  for (int a = 0; a < k; ++a) A(a, k + a) = T(1.0);
   A.block(k, 0, k, k) = -Minv * K;
   A.block(k, k, k, k) = -Minv * C;
   if (m > 0) A.block(k, 2 * k, k, m) = Minv * F;
+  *Minv_out = Minv;
+  return A;
+}
+
+// The derivatives of every oscillating mode of the block (docs/model.md
+// §15), from the eigen-decomposition A V = V diag(lambda), Y = V^-1, and
+// A's derivatives in `dA`. False where two eigenvalues coincide.
+bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMat& V,
+                    const CMat& Y, const std::vector<int>& dofs, const std::vector<int>& columns,
+                    std::vector<Mode>* modes, std::string* why) {
+  const int n = static_cast<int>(lambda.size());
+  const int k = static_cast<int>(dofs.size());
+  std::vector<int> used;  // parameters A depends on
+  for (int p = 0; p < kNumParams; ++p) {
+    bool any = false;
+    for (int i = 0; i < n && !any; ++i) {
+      for (int j = 0; j < n && !any; ++j) any = dA(i, j).v[p] != 0;
+    }
+    if (any) used.push_back(p);
+  }
+  Mat D(n, n);
+  for (size_t c = 0; c < columns.size(); ++c) {
+    const int j = columns[c];
+    Mode& mode = (*modes)[c];
+    for (int o = 0; o < n; ++o) {
+      if (o != j && std::abs(lambda[o] - lambda[j]) <= 1e-8 * std::abs(lambda[j])) {
+        *why = std::string("two eigenvalues coincide at ") + std::to_string(mode.frequency_hz) +
+               " Hz, where the mode shapes have no derivative";
+        return false;
+      }
+    }
+    auto d = std::make_shared<ModeDerivatives>();
+    d->eigenvalue.setZero();
+    d->shape.setZero();
+    const CVec v = V.col(j);
+    int big = 0;
+    for (int a = 1; a < k; ++a) {
+      if (std::abs(v[a]) > std::abs(v[big])) big = a;
+    }
+    d->pivot = dofs[big];
+    CVec inverse_gap(n);
+    for (int o = 0; o < n; ++o) inverse_gap[o] = o == j ? 0.0 : 1.0 / (lambda[j] - lambda[o]);
+    for (int p : used) {
+      for (int a = 0; a < n; ++a) {
+        for (int b = 0; b < n; ++b) D(a, b) = dA(a, b).v[p];
+      }
+      // g = Y dA v: g_j = d lambda, g_o / (lambda_j - lambda_o) the share of v_o in d v.
+      const CVec g = Y * (D.cast<std::complex<double>>() * v);
+      d->eigenvalue[p] = g[j];
+      const CVec dv = V.topRows(k) * g.cwiseProduct(inverse_gap);
+      // shape = v / v_big: d shape = (dv - shape dv_big) / v_big.
+      for (int a = 0; a < k; ++a) {
+        d->shape(dofs[a], p) = (dv[a] - v[a] / v[big] * dv[big]) / v[big];
+      }
+    }
+    mode.derivatives = std::move(d);
+  }
+  return true;
+}
+
+// Solves one block of coupled degrees of freedom and appends its modes.
+bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets,
+                const std::vector<int>& dofs, ModalSolution* out) {
+  const int k = static_cast<int>(dofs.size());
+  const std::vector<int> lags = BlockLags(s, dofs);
+  const int m = static_cast<int>(lags.size());
+  if (m > kMaxLags) {
+    out->error = "more slip lags than the state vector holds";
+    return false;
+  }
+  Mat Minv;
+  const Mat A = StateMatrix(s, dofs, lags, &Minv);
   if (!A.allFinite()) {
     out->error = "state matrix is not finite";
     return false;
@@ -148,6 +229,7 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
   const CMat Minv_T = Minv.transpose().cast<std::complex<double>>();
 
   std::vector<Mode> modes;
+  std::vector<int> columns;  // of each mode in V
   for (int j = 0; j < 2 * k + m; ++j) {
     const std::complex<double> lam = lambda[j];
     const double tiny = 1e-10 * std::max(1.0, std::abs(lam));
@@ -180,6 +262,16 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
     mode.shape.setZero();
     for (int a = 0; a < k; ++a) mode.shape[dofs[a]] = v[a] / pivot;
     modes.push_back(mode);
+    columns.push_back(j);
+  }
+  if (jets && have_left && out->derivatives_undefined.empty()) {
+    MatOf<ParameterJet> unused;
+    const MatOf<ParameterJet> dA = StateMatrix(*jets, dofs, BlockLags(*jets, dofs), &unused);
+    if (!AddDerivatives(dA, lambda, V, Y, dofs, columns, &modes, &out->derivatives_undefined)) {
+      for (Mode& mode : modes) mode.derivatives.reset();
+    }
+  } else if (jets && !have_left) {
+    out->derivatives_undefined = "the eigenvectors of a block are not independent";
   }
   // One-to-one labels: maximise the product of energy shares.
   Eigen::MatrixXd score(modes.size(), labels.size());
@@ -208,6 +300,15 @@ bool SolveBlock(const MechanicalSystem& s, const std::vector<int>& dofs,
 
 }  // namespace
 
+double ModeDerivatives::Frequency(int p) const { return eigenvalue[p].imag() / (2 * M_PI); }
+
+// zeta = -Re(lambda) / |lambda|.
+double ModeDerivatives::DampingRatio(const std::complex<double>& lambda, int p) const {
+  const std::complex<double> d = eigenvalue[p];
+  const double r = std::abs(lambda);
+  return -d.real() / r + lambda.real() * (std::conj(lambda) * d).real() / (r * r * r);
+}
+
 RealShapeVector Mode::PaperShape() const {
   int big = 0;
   for (int i = 1; i < kNumDofs; ++i) {
@@ -228,7 +329,7 @@ const Mode* ModalSolution::Find(ModeLabel label) const {
   return nullptr;
 }
 
-ModalSolution SolveModes(const MechanicalSystem& s) {
+ModalSolution SolveModes(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets) {
   ModalSolution out;
   std::vector<int> active;
   for (int i = 0; i < kNumDofs; ++i) {
@@ -277,7 +378,7 @@ ModalSolution SolveModes(const MechanicalSystem& s) {
     for (int a : active) {
       if (Root(parent, a) == r) dofs.push_back(a);
     }
-    if (!SolveBlock(s, dofs, &out)) {
+    if (!SolveBlock(s, jets, dofs, &out)) {
       out.modes.clear();
       out.vanished.clear();
       out.real_roots.clear();
@@ -365,8 +466,10 @@ bool Follow(const ModalSolution& prev, ModalSolution* next, bool strict) {
 
 }  // namespace
 
-ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
-                           double speed, ModalSolution standing) {
+ModalSolution SolveRolling(
+    const std::function<MechanicalSystem(double)>& assemble, double speed,
+    ModalSolution standing,
+    const std::function<BasicSystem<ParameterJet>(double)>& assemble_jets) {
   ModalSolution prev = std::move(standing);
   if (!prev.ok || !(speed > 0)) return prev;
   // Below this step the assignment by shape is taken as it is (an exact
@@ -375,7 +478,9 @@ ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemb
   double at = 0, step = speed;
   while (at < speed) {
     const double to = std::min(speed, at + step);
-    ModalSolution next = SolveModes(assemble(to));
+    std::optional<BasicSystem<ParameterJet>> jets;
+    if (assemble_jets && to == speed) jets = assemble_jets(to);
+    ModalSolution next = SolveModes(assemble(to), jets ? &*jets : nullptr);
     if (!next.ok) return next;
     const bool coarse = step <= finest;
     if (Follow(prev, &next, !coarse)) {

@@ -5,18 +5,35 @@
 #include <array>
 #include <complex>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "model/names.h"
+#include "model/parameters.h"
 #include "model/system.h"
 
 namespace ringid {
 
 using ShapeVector = Eigen::Matrix<std::complex<double>, kNumDofs, 1>;
 using RealShapeVector = Eigen::Matrix<double, kNumDofs, 1>;
+
+// First derivatives of one mode with respect to every catalogue parameter
+// (columns; zero where the block's state matrix does not depend on it):
+// d lambda = y dA v with y the left eigenvector (y v = 1), and the shape's by
+// expansion over every other eigenvector of the block's state matrix,
+// d v = sum_k y_k dA v / (lambda - lambda_k) v_k, normalised as Mode::shape
+// (docs/model.md §15).
+struct ModeDerivatives {
+  Eigen::Matrix<std::complex<double>, 1, kNumParams> eigenvalue;
+  Eigen::Matrix<std::complex<double>, kNumDofs, kNumParams> shape;
+  int pivot = 0;  // the component Mode::shape is scaled by
+
+  double Frequency(int p) const;  // d frequency_hz / d p
+  double DampingRatio(const std::complex<double>& lambda, int p) const;
+};
 
 struct Mode {
   ModeLabel label;
@@ -30,6 +47,8 @@ struct Mode {
   // Share of the mode's generalised strain energy |w^T K_label v| carried by
   // the elements of each label (w the left eigenvector); sums to <= 1.
   std::array<double, kNumLabels> energy;
+  // Set by SolveModes when asked for derivatives and they exist.
+  std::shared_ptr<const ModeDerivatives> derivatives;
 
   Plane plane() const { return LabelPlane(label); }
   // The convention of docs/conventions.md §2 for comparison with a measured real shape.
@@ -48,6 +67,9 @@ struct ModalSolution {
   // Roots without oscillation (1/s), ascending: rolling, the contact slip
   // lags and any overdamped pair; never paired with a measured mode.
   std::vector<double> real_roots;
+  // Why a mode has no derivatives although they were asked for: two
+  // eigenvalues of one block coincide, where the eigenvectors have none.
+  std::string derivatives_undefined;
 
   const Mode* Find(ModeLabel label) const;
 };
@@ -56,15 +78,21 @@ struct ModalSolution {
 // by the one-to-one assignment that maximises the product of energy shares.
 // At speed, the slip states of system.lags() join the state vector
 // (docs/rolling.md) and the labels are by energy as at standstill.
-ModalSolution SolveModes(const MechanicalSystem& system);
+// With `jets` (the same system assembled with ParameterJet scalars) each
+// mode also carries its derivatives.
+ModalSolution SolveModes(const MechanicalSystem& system,
+                         const BasicSystem<ParameterJet>* jets = nullptr);
 
 // The modes at `speed` of the systems assemble(v), labelled by continuation
 // from standstill: each step in speed pairs modes by shape (MAC) and keeps
 // each eigenvalue nearer its predecessor than to the predecessor's
 // neighbours, halving the step until it does (docs/rolling.md §5).
-// `standing` is SolveModes(assemble(0)).
-ModalSolution SolveRolling(const std::function<MechanicalSystem(double)>& assemble,
-                           double speed, ModalSolution standing);
+// `standing` is SolveModes(assemble(0)). With `assemble_jets` the modes at
+// `speed` carry their derivatives.
+ModalSolution SolveRolling(
+    const std::function<MechanicalSystem(double)>& assemble, double speed,
+    ModalSolution standing,
+    const std::function<BasicSystem<ParameterJet>(double)>& assemble_jets = nullptr);
 
 }  // namespace ringid
 

@@ -41,4 +41,10 @@ Parameters::Parameters() {
 
 bool Parameters::IsSet(Param p) const { return std::isfinite((*this)[p]); }
 
+ParameterArray<ParameterJet> Seeded(const Parameters& p) {
+  ParameterArray<ParameterJet> q;
+  for (int i = 0; i < kNumParams; ++i) q[ParamAt(i)] = ParameterJet(p[ParamAt(i)], i);
+  return q;
+}
+
 }  // namespace ringid

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include <ceres/jet.h>
+
 #include "model/enum_names.h"
 
 namespace ringid {
@@ -106,6 +108,9 @@ class Parameters {
   std::array<double, kNumParams> v_;
 };
 
+// A scalar carrying the derivatives with respect to every parameter.
+using ParameterJet = ceres::Jet<double, kNumParams>;
+
 // Values of every parameter in another scalar type (a ceres::Jet for exact
 // derivatives, model/structure.h), indexed as Parameters.
 template <class T>
@@ -117,6 +122,9 @@ class ParameterArray {
  private:
   std::array<T, kNumParams> v_;
 };
+
+// p with each parameter carrying its own unit derivative.
+ParameterArray<ParameterJet> Seeded(const Parameters& p);
 
 }  // namespace ringid
 

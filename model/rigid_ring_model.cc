@@ -111,7 +111,7 @@ BasicSystem<ParameterJet> RigidRingModel::Assemble(const ParameterArray<Paramete
   return AssembleAny<ParameterJet>(effects_, p, speed);
 }
 
-ModalSolution RigidRingModel::Solve(const Parameters& p, double speed) const {
+ModalSolution RigidRingModel::Solve(const Parameters& p, double speed, bool derivatives) const {
   for (Param q : used_) {
     if (!std::isfinite(p[q])) {
       ModalSolution bad;
@@ -124,9 +124,16 @@ ModalSolution RigidRingModel::Solve(const Parameters& p, double speed) const {
     bad.error = "speed must be finite and not negative";
     return bad;
   }
+  const auto jets = [&](double v) { return Assemble(Seeded(p), v); };
+  if (derivatives && speed == 0) {
+    const BasicSystem<ParameterJet> s = jets(0);
+    return SolveModes(Assemble(p), &s);
+  }
   ModalSolution standing = standing_.Get(p, [&] { return SolveModes(Assemble(p)); });
   if (speed == 0) return standing;
-  return SolveRolling([&](double v) { return Assemble(p, v); }, speed, std::move(standing));
+  return SolveRolling([&](double v) { return Assemble(p, v); }, speed, std::move(standing),
+                      derivatives ? std::function<BasicSystem<ParameterJet>(double)>(jets)
+                                  : nullptr);
 }
 
 ModalSolution RigidRingModel::StandingCache::Get(

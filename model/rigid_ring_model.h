@@ -22,7 +22,12 @@ class ModalModel {
   virtual std::unique_ptr<ModalModel> Clone() const = 0;
   // The modes at standstill, and rolling freely at a forward speed (m/s).
   ModalSolution Solve(const Parameters& p) const { return Solve(p, 0.0); }
-  virtual ModalSolution Solve(const Parameters& p, double speed_m_s) const = 0;
+  ModalSolution Solve(const Parameters& p, double speed_m_s) const {
+    return Solve(p, speed_m_s, false);
+  }
+  // With `derivatives` each mode carries its derivatives with respect to
+  // the parameters (ModeDerivatives), unless derivatives_undefined says why not.
+  virtual ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const = 0;
   // The system at `speed_m_s`, every value carrying its derivatives with
   // respect to the parameters (model/structure.h).
   virtual BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
@@ -45,7 +50,7 @@ class RigidRingModel final : public ModalModel {
   }
   using ModalModel::Solve;
   // At speed the labels follow the standing ones by continuation.
-  ModalSolution Solve(const Parameters& p, double speed_m_s) const override;
+  ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const override;
   std::vector<Param> parameters() const override;
   const std::vector<const Effect*>& effects() const { return effects_; }
   bool Has(const Effect* effect) const;

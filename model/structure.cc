@@ -18,9 +18,7 @@ Eigen::MatrixXd Derivatives(const std::vector<ParameterJet>& rows) {
 }  // namespace
 
 SystemDerivatives Differentiate(const ModalModel& model, const Parameters& p, double speed) {
-  ParameterArray<ParameterJet> jets;
-  for (int i = 0; i < kNumParams; ++i) jets[ParamAt(i)] = ParameterJet(p[ParamAt(i)], i);
-  const BasicSystem<ParameterJet> s = model.Assemble(jets, speed);
+  const BasicSystem<ParameterJet> s = model.Assemble(Seeded(p), speed);
   std::vector<ParameterJet> scaling, invariant;
   for (const auto* m : {&s.M(), &s.C(), &s.K()}) {
     for (int a = 0; a < kNumDofs; ++a) {
