@@ -52,7 +52,7 @@ const char kHelp[] =
     "             one report per dataset in DIR, a summary table and DIR/campaign.json\n"
     "             (campaign.I-of-N.json for a shard)\n"
     "  bench      accuracy and conditioning suites, run from the repository root\n"
-    "             --suite={SUITES} [--replicates=N] [--seed=N]\n"
+    "             --suite={SUITES} [--replicates=N] [--seed=N] [--derivatives={DERIVATIVES}]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
     "  schema     every report's fields and their types, as Markdown (docs/reports.md)\n"
     "  report     any JSON report of ringid as one self-contained HTML page: tables\n"

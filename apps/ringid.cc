@@ -52,7 +52,7 @@ DEFINE_bool(damping, ringid::ResidualOptions().use_damping, "identify: use measu
 DEFINE_string(shape_convention, ringid::ToString(ringid::ResidualOptions().shape_convention),
               "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
 DEFINE_string(derivatives, ringid::ToString(ringid::ResidualOptions().derivatives),
-              "identify, identifiability, compare, diagnose: Jacobians by numeric (central differences) or analytic (eigenvalue and eigenvector derivatives)");
+              "identify, identifiability, compare, diagnose, bench: Jacobians by numeric (central differences) or analytic (eigenvalue and eigenvector derivatives)");
 DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
 DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect parameters among them)");
 DEFINE_double(frequency_noise, ringid::SimulateOptions().frequency_noise,
@@ -691,7 +691,8 @@ int DiagnoseCommand(int argc, char** argv) {
 
 int BenchCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"suite", "replicates", "seed", "output", "markdown"}, &error)) {
+  if (!SetFlags(argc, argv, {"suite", "replicates", "seed", "output", "markdown", "derivatives"},
+                &error)) {
     return Usage(error);
   }
   if (FLAGS_replicates < 1) return Usage("--replicates: must be at least 1");
@@ -699,6 +700,7 @@ int BenchCommand(int argc, char** argv) {
     if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
   }
   SuiteOptions o;
+  if (!ParseFlag("derivatives", FLAGS_derivatives, &o.derivatives, &error)) return Usage(error);
   o.replicates = FLAGS_replicates;
   o.seed = static_cast<unsigned>(FLAGS_seed);
   Progress progress(FLAGS_suite + " suite");

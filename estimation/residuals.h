@@ -171,11 +171,11 @@ class ModalResiduals {
 // The residuals as a Ceres cost function of one parameter block of all free
 // coordinates, with the Jacobian options().derivatives asks for. Numeric:
 // central differences through the eigen-solution. The relative
-// step is 1e-4, not Ceres' 1e-6: the eigenvectors of these near-critically
-// damped modes carry errors near 1e-10, which a 1e-6 step turns into
-// Jacobian noise of 1e-4 (measured on the exact K_cx / sigma_cx pair); with
-// 1e-4 the noise and the truncation error are both near 1e-7.
-// The functor is not owned.
+// step is 1e-4, not Ceres' 1e-6: before the state matrix was balanced
+// (model/modal.cc) the eigenvectors of these near-critically damped modes
+// carried errors near 1e-10, which a 1e-6 step turned into Jacobian noise of
+// 1e-4 (measured on the exact K_cx / sigma_cx pair); with 1e-4 the noise and
+// the truncation error were both near 1e-7. The functor is not owned.
 ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals);
 
 // The same residuals in `problem` as one Ceres problem over x: per condition

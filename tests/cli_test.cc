@@ -114,7 +114,14 @@ TEST(CliTest, FixAndBoundsReachEveryFittingCommandAndBadOnesAreRefused) {
   const double t_0 = j["parameters"]["t_0"]["value"].get<double>();
   EXPECT_GE(t_0, 0.001 * (1 - 1e-12));
   EXPECT_LE(t_0, 0.05 * (1 + 1e-12));
-  EXPECT_EQ(j["parameters"]["t_0"]["on_bound"], "upper");  // t_0 alone is a free direction
+  // The example car tire's k_cz is 2e5 N/m; bounds above it, around the
+  // start of 2.5e5, hold the fit on the lower one.
+  r = Ringid("identify --dataset=" + Source("datasets/examples/car_tire_rolling.json") +
+             " --starts=1 --bounds=k_cz:220000:300000 --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(ReadFile(out));
+  EXPECT_NEAR(j["parameters"]["k_cz"]["value"].get<double>(), 220000, 1);
+  EXPECT_EQ(j["parameters"]["k_cz"]["on_bound"], "lower");
   std::remove(out.c_str());
   const std::pair<std::string, std::string> cases[] = {
       {"--fix=t_0x", "--fix: unknown parameter 't_0x'"},

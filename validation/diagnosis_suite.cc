@@ -63,6 +63,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
         DiagnosisReport dr;
         DiagnoseOptions dopt;
         dopt.held_out = false;  // reported by diagnose, not voted on; skipped for speed
+        dopt.fit.residuals.derivatives = o.derivatives;
         Diagnose(RigidRingModel(), d, dopt, &dr);
         if (!dr.status.ok()) return Status::Failed(d.name + ": " + dr.status.message);
         seconds += dr.seconds;

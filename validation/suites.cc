@@ -90,6 +90,7 @@ Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite) {
     IdentifyOptions io;
     io.method = method;
     io.starts = 1;
+    io.residuals.derivatives = o.derivatives;
     IdentifySummary f;
     Identify(RigidRingModel(), table1, io, &f);
     suite->identify.push_back({method, f.relative_error_in_plane, f.relative_error_out_of_plane,
@@ -124,6 +125,7 @@ Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
       }
       IdentifyOptions io;
       io.starts = 1;
+      io.residuals.derivatives = o.derivatives;
       IdentifySummary f;
       Identify(RigidRingModel(), d, io, &f);
       if (!f.status.ok()) {
@@ -176,6 +178,7 @@ Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite) {
     d.ties = table1.ties;
     IdentifiabilityOptions io;
     io.profile_steps = 0;
+    io.fit.residuals.derivatives = o.derivatives;
     IdentifiabilityReport a;
     AnalyzeIdentifiability(RigidRingModel(), d, io, &a);
     if (!a.status.ok()) return Status::Failed(std::string(v.name) + ": " + a.status.message);
@@ -273,6 +276,7 @@ Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
     if (Status s = RollingDataset(truth, o.speeds, &rng, &d); !s.ok()) return s;
     IdentifyOptions io;
     io.starts = 1;
+    io.residuals.derivatives = o.derivatives;
     IdentifySummary f;
     Identify(RigidRingModel(), d, io, &f);
     if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);

@@ -27,6 +27,8 @@ struct SuiteOptions {
   unsigned seed = 1;
   // rolling: the conditions measured, m/s (0: standing; the others on a drum).
   std::vector<double> speeds = {0, 6, 12};
+  // How every fit of the suite makes its Jacobians.
+  Derivatives derivatives = Derivatives::kNumeric;
   // Called with (done, total) as the suite's cases finish.
   std::function<void(int, int)> on_case;
 };
