@@ -604,6 +604,21 @@ bool NeedsFormat2(const Dataset& d) {
 
 }  // namespace
 
+std::string ParameterSetToJson(const Parameters& p, const std::string& name,
+                               const std::string& description) {
+  json j;
+  j["format"] = "ringid-parameters/1";
+  j["name"] = name;
+  j["description"] = description;
+  j["parameters"] = json::object();
+  for (int i = 0; i < kNumParams; ++i) {
+    const Param q = ParamAt(i);
+    const bool baseline = Info(q).group == Group::kEffect && p[q] == 0;  // the default
+    if (p.IsSet(q) && !baseline) j["parameters"][ParamName(q)] = {{"value", p[q]}};
+  }
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 std::string DatasetToJson(const Dataset& d) {
   const bool format2 = NeedsFormat2(d);
   json j;

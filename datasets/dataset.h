@@ -102,6 +102,12 @@ bool ParseDataset(const std::string& text, const std::string& path,
 // "parameters" object and reads back as one.
 bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
 
+// Writes the set parameters of `p` as a parameter set (ringid-parameters/1,
+// each {"value": V}), which LoadParameterSet reads back; effect parameters at
+// their baseline 0 (the default) are left out.
+std::string ParameterSetToJson(const Parameters& p, const std::string& name,
+                               const std::string& description);
+
 // Writes a dataset back to the JSON form of docs/conventions.md §3.
 std::string DatasetToJson(const Dataset& dataset);
 
