@@ -28,6 +28,7 @@
 #include "validation/suites.h"
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
+#include "datasets/tir_parameters.h"
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
@@ -54,7 +55,7 @@ DEFINE_string(shape_convention, ringid::ToString(ringid::ResidualOptions().shape
 DEFINE_string(derivatives, ringid::ToString(ringid::ResidualOptions().derivatives),
               "identify, identifiability, compare, diagnose, bench: Jacobians by numeric (central differences) or analytic (eigenvalue and eigenvector derivatives)");
 DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
-DEFINE_string(set, "", "simulate: NAME=VALUE,... parameter values to set (effect parameters among them)");
+DEFINE_string(set, "", "simulate, predict, export: NAME=VALUE,... parameter values to set (effect parameters among them)");
 DEFINE_double(frequency_noise, ringid::SimulateOptions().frequency_noise,
               "simulate: relative frequency noise (sd)");
 DEFINE_double(damping_noise, ringid::SimulateOptions().damping_noise,
@@ -76,6 +77,7 @@ DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg")
 DEFINE_string(bounds, "", "identify, identifiability, compare, diagnose: NAME:LO:HI,... bounds in the parameter's units, in place of a factor 1000 around the start");
 DEFINE_string(fix, "", "identify, identifiability, compare, diagnose: NAME,... parameters held at their initial values");
 DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
+DEFINE_string(format, "", "export: tir (the rigid-ring part of an MF-Swift .tir, docs/tir.md) or json (ringid-parameters/1)");
 
 namespace ringid {
 
@@ -157,9 +159,49 @@ Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
                         seed);
 }
 
+// --set=NAME=VALUE,...: each a catalogue parameter, its value finite and in
+// its domain (docs/conventions.md §1), applied in order over `p`.
+bool ApplySet(const std::string& list, Parameters* p, std::string* error) {
+  std::stringstream items(list);
+  for (std::string item; std::getline(items, item, ',');) {
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    const auto q = ParseParam(item.substr(0, eq));
+    char* end = nullptr;
+    const double v = eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
+    if (!q || eq == std::string::npos || !end || *end != '\0' || !std::isfinite(v)) {
+      *error = "--set: bad item '" + item + "' (NAME=VALUE)";
+      return false;
+    }
+    const Domain d = Info(*q).domain;
+    if ((d == Domain::kPositive && !(v > 0)) || (d == Domain::kNonNegative && v < 0)) {
+      *error = "--set: " + item.substr(0, eq) + " must be " +
+               (d == Domain::kPositive ? "positive" : "not negative");
+      return false;
+    }
+    (*p)[*q] = v;
+  }
+  return true;
+}
+
+// The one line for the parameters the model needs and `source` (a parameter
+// set or a .tir) does not give; the first named with where it could come from.
+std::string MissingParameters(const std::string& source, const std::vector<Param>& missing) {
+  const std::string name = ParamName(missing[0]);
+  if (!IsTirPath(source)) return source + ": parameters." + name + ": missing (the model needs it)";
+  const std::string key = TirKeyFor(missing[0]);
+  std::string line = source + ": " + name + ": missing (the model needs it; " +
+                     (key.empty() ? std::string("a .tir cannot hold it") : "the .tir has no " + key) +
+                     "): give --set=" + name + "=VALUE";
+  for (size_t i = 1; i < missing.size(); ++i) {
+    line += (i == 1 ? "; also missing: " : ", ") + std::string(ParamName(missing[i]));
+  }
+  return line;
+}
+
 int Predict(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"parameters", "dataset", "effects", "output"}, &error)) {
+  if (!SetFlags(argc, argv, {"parameters", "dataset", "effects", "output", "set"}, &error)) {
     return Usage(error);
   }
   std::vector<const Effect*> effects;
@@ -171,19 +213,20 @@ int Predict(int argc, char** argv) {
   Parameters p;
   LoadError load;
   if (!FLAGS_parameters.empty()) {
-    if (!LoadParameterSet(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+    if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
   } else {
     Dataset d;
     if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
     p = InitialParameters(d);
   }
+  if (!ApplySet(FLAGS_set, &p, &error)) return Usage(error);
   const RigidRingModel model(effects);
   const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
+  std::vector<Param> missing;
   for (Param q : model.parameters()) {
-    if (!p.IsSet(q)) {
-      return Usage(source + ": parameters." + ParamName(q) + ": missing (the model needs it)");
-    }
+    if (!p.IsSet(q)) missing.push_back(q);
   }
+  if (!missing.empty()) return Usage(MissingParameters(source, missing));
   const ModalSolution s = model.Solve(p);
   if (!s.ok) {
     std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
@@ -572,19 +615,7 @@ int SimulateCommand(int argc, char** argv) {
   Parameters truth;
   LoadError load;
   if (!LoadParameterSet(FLAGS_parameters, &truth, &load)) return Usage(load.OneLine());
-  std::stringstream list(FLAGS_set);
-  std::string item;
-  while (std::getline(list, item, ',')) {
-    if (item.empty()) continue;
-    const size_t eq = item.find('=');
-    const auto p = ParseParam(item.substr(0, eq));
-    char* end = nullptr;
-    const double v = eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
-    if (!p || eq == std::string::npos || !end || *end != '\0' || !std::isfinite(v)) {
-      return Usage("--set: bad item '" + item + "' (NAME=VALUE)");
-    }
-    truth[*p] = v;
-  }
+  if (!ApplySet(FLAGS_set, &truth, &error)) return Usage(error);
   if (FLAGS_shift != 0) {
     if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) return Usage("--shift: must be in (0, 0.5)");
     if (effects.size() != 1) return Usage("--shift: needs exactly one effect in --effects");
@@ -757,6 +788,40 @@ int ReportCommand(int argc, char** argv) {
   return kExitOk;
 }
 
+// export: a parameter set (ringid-parameters/1 or a .tir), with --set, as the
+// rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 (docs/tir.md).
+int ExportCommand(int argc, char** argv) {
+  std::string error;
+  if (!SetFlags(argc, argv, {"parameters", "set", "format", "output"}, &error)) return Usage(error);
+  if (FLAGS_parameters.empty()) {
+    return Usage("export needs --parameters=FILE (ringid-parameters/1 or .tir)");
+  }
+  if (FLAGS_format != "tir" && FLAGS_format != "json") {
+    return Usage("--format: must be tir or json");
+  }
+  if (!FLAGS_output.empty() && !CanWrite(FLAGS_output, &error)) return Usage(error);
+  Parameters p;
+  LoadError load;
+  if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+  if (!ApplySet(FLAGS_set, &p, &error)) return Usage(error);
+  const std::string source =
+      FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
+  const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();
+  std::string text;
+  if (FLAGS_format == "json") {
+    text = ParameterSetToJson(p, name, "exported by ringid from " + source);
+  } else if (!ParametersToTir(p, name, source, &text, &load)) {
+    return Usage(load.OneLine());
+  }
+  if (FLAGS_output.empty()) {
+    std::fputs(text.c_str(), stdout);
+    return kExitOk;
+  }
+  const int rc = Write(FLAGS_output, text);
+  if (rc == kExitOk) std::printf("wrote %s\n", FLAGS_output.c_str());
+  return rc;
+}
+
 }  // namespace
 }  // namespace ringid
 
@@ -778,6 +843,7 @@ int main(int argc, char** argv) {
   if (command == "simulate") return ringid::SimulateCommand(argc, argv);
   if (command == "diagnose") return ringid::DiagnoseCommand(argc, argv);
   if (command == "report") return ringid::ReportCommand(argc, argv);
+  if (command == "export") return ringid::ExportCommand(argc, argv);
   if (command == "schema") {
     if (argc > 2) return ringid::Usage("schema takes no flags");
     std::fputs(ringid::ReportsMarkdown().c_str(), stdout);

@@ -18,6 +18,9 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/reports.h"
+#include "datasets/synthetic.h"
+#include "datasets/tir.h"
+#include "datasets/tir_parameters.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -425,6 +428,160 @@ TEST(CliTest, SimulateNamesConditionsAndMakesTheLoadPerCondition) {
   EXPECT_EQ(truth["parameters"]["F_cz0@drum_6_4500.5N"]["value"].get<double>(), 4500.5);
   const RunResult r = Ringid("identify --starts=1 --dataset=" + data);
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// The .tir interchange from the command line (docs/tir.md).
+
+// --set=NAME=VALUE,... of every parameter of the standing model that `have`
+// lacks, at its value in `from`, to 17 digits.
+std::string SetTheRest(const ringid::Parameters& have, const ringid::Parameters& from) {
+  std::string set;
+  for (ringid::Param q : ringid::RigidRingModel().parameters()) {
+    if (have.IsSet(q)) continue;
+    char value[40];
+    std::snprintf(value, sizeof value, "%.17g", from[q]);
+    set += (set.empty() ? "--set=" : ",") + std::string(ringid::ParamName(q)) + "=" + value;
+  }
+  return set;
+}
+
+// predict's modes of `args`, by label: {frequency, damping ratio}.
+std::map<std::string, std::pair<double, double>> PredictedModes(const std::string& args) {
+  const std::string out = Scratch("tir_predict.json");
+  std::remove(out.c_str());
+  const RunResult r = Ringid("predict " + args + " --output=" + out);
+  EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+  std::map<std::string, std::pair<double, double>> modes;
+  if (r.status != 0) return modes;
+  const nlohmann::json report = LoadJson(out);
+  for (const auto& m : report["modes"]) {
+    modes[m["label"].get<std::string>()] = {m["model_hz"].get<double>(),
+                                            m["damping_ratio"].get<double>()};
+  }
+  return modes;
+}
+
+// A tire one has a .tir for: its standing modes from the .tir and --set of
+// what a .tir cannot hold are the modes of the full parameter set, whether
+// the .tir was written by export or is the public TNO belt (whose rest, the
+// example car tire's, also supplies damping and k_cz).
+TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
+  const std::string car = Source("datasets/examples/car_tire.json");
+  const std::string tir = Scratch("car_tire.tir");
+  std::remove(tir.c_str());
+  const RunResult r = Ringid("export --parameters=" + car + " --format=tir --output=" + tir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ringid::Parameters full;
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadParameterSet(car, &full, &e)) << e.OneLine();
+  const auto expected = PredictedModes("--parameters=" + car);
+  ASSERT_EQ(expected.size(), 7u);
+  for (const std::string& file : {tir, Source("datasets/examples/tno_205_60R15_belt.tir")}) {
+    ringid::Parameters from_tir;
+    ASSERT_TRUE(ringid::LoadParameters(file, &from_tir, &e)) << e.OneLine();
+    const auto modes = PredictedModes("--parameters=" + file + " " + SetTheRest(from_tir, full));
+    ASSERT_EQ(modes.size(), 7u) << file;
+    for (const auto& [label, m] : expected) {
+      EXPECT_NEAR(modes.at(label).first, m.first, 1e-9 * m.first) << file << ": " << label;
+      EXPECT_NEAR(modes.at(label).second, m.second, 1e-9) << file << ": " << label;
+    }
+  }
+}
+
+// export --format=json of a .tir: a parameter set a dataset's initial values
+// can be copied from, holding what the .tir determines and nothing else.
+TEST(CliTest, ExportOfATirAsJsonWritesTheParameterSetItDetermines) {
+  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string out = Scratch("tno_belt.json");
+  std::remove(out.c_str());
+  RunResult r = Ringid("export --parameters=" + tno + " --set=k_cz=2e5 --format=json --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = LoadJson(out);
+  EXPECT_EQ(j["format"], "ringid-parameters/1");
+  ringid::Parameters back, car;
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadParameterSet(out, &back, &e)) << e.OneLine();
+  ASSERT_TRUE(ringid::LoadParameterSet(Source("datasets/examples/car_tire.json"), &car, &e));
+  std::vector<std::string> names;
+  for (auto it = j["parameters"].begin(); it != j["parameters"].end(); ++it) names.push_back(it.key());
+  EXPECT_EQ(names, (std::vector<std::string>{"I_bx", "I_by", "I_bz", "k_bgamma", "k_bpsi",
+                                             "k_btheta", "k_bx", "k_by", "k_bz", "k_cz", "m_b"}));
+  for (const std::string& n : names) {
+    const ringid::Param q = *ringid::ParseParam(n);
+    EXPECT_DOUBLE_EQ(back[q], car[q]) << n;
+  }
+  // And back to a .tir: the same belt.
+  const std::string again = Scratch("tno_belt_again.tir");
+  std::remove(again.c_str());
+  r = Ringid("export --parameters=" + out + " --format=tir --output=" + again);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ringid::TirFile f;
+  ASSERT_TRUE(ringid::LoadTir(again, &f, &e)) << e.OneLine();
+  EXPECT_DOUBLE_EQ(*f.Find("STRUCTURAL", "FREQ_LAT")->number, 41.47);
+  EXPECT_DOUBLE_EQ(*f.Find("VERTICAL", "VERTICAL_STIFFNESS")->number,
+                   1 / (1 / car[ringid::Param::k_bz] + 1 / 2e5));
+}
+
+// Bad .tir files, bad flags and incomplete sets: exit 2, one line naming the
+// file and the key or flag, nothing written.
+TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
+  const std::string dir = Scratch("");
+  const std::string car = Source("datasets/examples/car_tire.json");
+  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string good = ReadFile(tno);
+  const auto with = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = good;
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    std::ofstream(dir + name, std::ios::binary) << text;
+    return dir + name;
+  };
+  const std::string no_lat = with("no_lat.tir", "\nFREQ_LAT", "\n$FREQ_LAT");
+  const std::string mm = with("mm.tir", "'meter'", "'mm'");
+  const std::string syntax = with("syntax.tir", "= 7.698", "= 7.698 kg");
+  const std::string partial = dir + "partial_belt.json";
+  std::ofstream(partial) << R"({"format":"ringid-parameters/1","parameters":{"m_b":{"value":7.7}}})";
+  const std::string out = dir + "never_written.tir";
+  ringid::Parameters all_but_c_bx;  // the TNO belt and c_bx: --set gives the rest but c_bx
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadParameters(tno, &all_but_c_bx, &e)) << e.OneLine();
+  all_but_c_bx[ringid::Param::c_bx] = 1;
+  const std::pair<std::string, std::string> cases[] = {
+      {"export --parameters=" + no_lat + " --format=json", "no_lat.tir: [STRUCTURAL] FREQ_LAT: missing"},
+      {"predict --parameters=" + no_lat, "no_lat.tir: [STRUCTURAL] FREQ_LAT: missing"},
+      {"predict --parameters=" + mm, "mm.tir: [UNITS] LENGTH (line 14): must be 'meter'"},
+      {"export --parameters=" + syntax + " --format=tir",
+       "syntax.tir: [INERTIA] BELT_MASS (line 21): not a number"},
+      {"predict --parameters=" + tno, "tno_205_60R15_belt.tir: I_ay: missing (the model needs it; "
+                                      "a .tir cannot hold it): give --set=I_ay=VALUE; also missing: F_cz0"},
+      {"predict --parameters=" + tno + " " + SetTheRest(all_but_c_bx, ringid::ExampleCarTire()),
+       "c_bx: missing (the model needs it; the .tir has no [STRUCTURAL] DAMP_LONG): give --set=c_bx=VALUE"},
+      {"predict --parameters=/nonexistent.tir", "/nonexistent.tir: cannot open file"},
+      {"export --parameters=" + car + " --format=xml", "--format: must be tir or json"},
+      {"export --parameters=" + car, "--format: must be tir or json"},
+      {"export --format=tir", "export needs --parameters=FILE"},
+      {"export --parameters=" + partial + " --format=tir",
+       "partial_belt.json: parameters.I_bx: missing (the .tir's [INERTIA] BELT_IXX needs it)"},
+      {"export --parameters=" + car + " --format=tir --set=m_b=-1", "--set: m_b must be positive"},
+      {"export --parameters=" + car + " --format=tir --set=k_nonsense=1", "--set: bad item 'k_nonsense=1'"},
+      {"export --parameters=" + car + " --format=tir --dataset=x.json", "--dataset: unknown flag"},
+      {"predict --parameters=" + car + " --set=s_h=-1", "--set: s_h must be not negative"},
+      {"simulate --parameters=" + car + " --set=m_b=0 --truth=" + out + ".truth",
+       "--set: m_b must be positive"},
+  };
+  for (const auto& [args, words] : cases) {
+    std::remove(out.c_str());
+    const RunResult r = Ringid(args + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << args;
+    EXPECT_FALSE(Exists(out + ".truth")) << args;
+  }
+  const RunResult r = Ringid("export --parameters=" + car + " --format=tir --output=/nonexistent-dir/t.tir");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent-dir/t.tir"), std::string::npos) << r.err;
 }
 
 }  // namespace
