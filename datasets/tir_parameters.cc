@@ -321,7 +321,8 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
     note(Differ(p[P::k_bx], p[P::k_bz]),
          "FREQ_LONG holds k_bx; k_bz = " + TirNumber(p[P::k_bz]) + " N/m differs (its frequency " +
              TirNumber(Frequency(p[P::k_bz], p[P::m_b])) +
-             " Hz) and reads back as k_bx; VERTICAL_STIFFNESS keeps the series of k_bz and k_cz.");
+             " Hz) and reads back as k_bx" +
+             (p.IsSet(P::k_cz) ? "; VERTICAL_STIFFNESS keeps the series of k_bz and k_cz." : "."));
   }
   if (AllSet(p, {P::k_bgamma, P::I_bx, P::k_bpsi, P::I_bz})) {
     const double camber = Frequency(p[P::k_bgamma], p[P::I_bx]);
