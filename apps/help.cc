@@ -55,6 +55,8 @@ const char kHelp[] =
     "             --suite={SUITES} [--replicates=N] [--seed=N] [--derivatives={DERIVATIVES}]\n"
     "             [--output=FILE.json] [--markdown=FILE.md]\n"
     "  schema     every report's fields and their types, as Markdown (docs/reports.md)\n"
+    "  reference  parameters, degrees of freedom, labels and effects with their units,\n"
+    "             as Markdown (docs/reference.md)\n"
     "  report     any JSON report of ringid as one self-contained HTML page: tables\n"
     "             and figures (SVG drawn by gnuplot, package gnuplot-nox)\n"
     "             --input=REPORT.json --output=FILE.html [--figures_dir=DIR]\n"

@@ -23,6 +23,7 @@
 #include "apps/progress.h"
 #include "apps/help.h"
 #include "apps/reports.h"
+#include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
 #include "report/report.h"
 #include "validation/suites.h"
@@ -781,6 +782,11 @@ int main(int argc, char** argv) {
   if (command == "schema") {
     if (argc > 2) return ringid::Usage("schema takes no flags");
     std::fputs(ringid::ReportsMarkdown().c_str(), stdout);
+    return 0;
+  }
+  if (command == "reference") {
+    if (argc > 2) return ringid::Usage("reference takes no flags");
+    std::fputs(ringid::ReferenceMarkdown().c_str(), stdout);
     return 0;
   }
   return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/reports.h"
+#include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
 #include "report/schema.h"
 #include "report/report.h"
@@ -235,6 +236,11 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
   EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";
+}
+
+TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
+  EXPECT_EQ(ReadFile(Source("docs/reference.md")), ringid::ReferenceMarkdown())
+      << "run: build/ringid reference > docs/reference.md";
 }
 
 // The fields docs/conventions.md §6 promises other people's scripts, written
