@@ -441,18 +441,29 @@ Eigen::MatrixXd Correlation(const Uncertainty& u) {
 }
 
 // Largest identifiable subset: rank-revealing QR with column pivoting on the
-// column-normalised Jacobian.
-std::vector<std::string> IdentifiableSubset(const Eigen::MatrixXd& J, const ParameterSetup& setup,
+// column-normalised Jacobian, over the coordinates with no component in a
+// free direction, structural or of the data's null space (those not classed
+// no: one decision, in AnalyzeUncertainty). A coordinate with such a
+// component is not determined while the others are free, whatever the
+// pivoting would make of its column (a structural pair's projected column,
+// or noise normalised to length 1).
+std::vector<std::string> IdentifiableSubset(const Uncertainty& u, const ParameterSetup& setup,
                                             double rank_tolerance) {
-  Eigen::MatrixXd Jn = J;
-  for (int i = 0; i < Jn.cols(); ++i) {
-    if (Jn.col(i).norm() > 0) Jn.col(i) /= Jn.col(i).norm();
+  std::vector<int> candidates;
+  for (int i = 0; i < setup.size(); ++i) {
+    if (u.classes[i] != Identifiability::kNo) candidates.push_back(i);
+  }
+  std::vector<std::string> subset;
+  if (candidates.empty()) return subset;
+  Eigen::MatrixXd Jn(u.jacobian.rows(), candidates.size());
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    Jn.col(k) = u.jacobian.col(candidates[k]);
+    if (Jn.col(k).norm() > 0) Jn.col(k) /= Jn.col(k).norm();
   }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Jn);
   qr.setThreshold(rank_tolerance);
-  std::vector<std::string> subset;
   for (int k = 0; k < qr.rank(); ++k) {
-    subset.push_back(setup.name(qr.colsPermutation().indices()[k]));
+    subset.push_back(setup.name(candidates[qr.colsPermutation().indices()[k]]));
   }
   return subset;
 }
@@ -679,7 +690,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   FreeDirections(u, setup, o, &combinations);
   r->combinations = combinations.Release();
   r->correlation = Correlation(u);
-  r->identifiable_subset = IdentifiableSubset(J, setup, o.fit.uncertainty.rank_tolerance);
+  r->identifiable_subset = IdentifiableSubset(u, setup, o.fit.uncertainty.rank_tolerance);
   r->advice = ExperimentAdvice(*problem, xhat, u, o);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -721,8 +732,10 @@ std::string IdentifiabilityReport::FullReport() const {
   for (const Combination& c : combinations) {
     o << "    " << c.text << "  (" << c.meaning << ")\n";
   }
-  o << "\n  largest identifiable subset (pivoted QR):";
+  o << "\n  largest identifiable subset (pivoted QR over the parameters with no component in a free "
+       "direction):";
   for (const std::string& s : identifiable_subset) o << " " << s;
+  if (identifiable_subset.empty()) o << " none";
   o << "\n";
   if (!advice.empty()) {
     o << "\n  what would help (information gain on the parameter, nats):\n";
