@@ -1,5 +1,6 @@
 // The gap diagnosis on withheld-effect data, whose truth it never sees.
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include "validation/suites.h"
 #include "datasets/synthetic.h"
 #include "estimation/diagnose.h"
+#include "estimation/statistics.h"
 #include "model/effects.h"
 #include "tests/test_support.h"
 
@@ -163,6 +165,20 @@ TEST(DiagnoseTest, ThePapersData) {
   const std::vector<std::string> g = EffectNames(r.indistinguishable);
   EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;
   EXPECT_NE(std::find(g.begin(), g.end(), "anisotropic_sidewall"), g.end()) << r.explanation;
+}
+
+// The chi-square point at a level against closed forms: on two degrees of
+// freedom P(chi-square >= x) = exp(-x / 2); on one, the 95 % point is the
+// normal's squared.
+TEST(DiagnoseTest, TheGroupThresholdIsTheChiSquarePointAtTheLevel) {
+  for (double alpha : {0.05, 1e-3, 1e-6}) {
+    EXPECT_NEAR(ChiSquareCritical(alpha, 2), -2 * std::log(alpha), 1e-9) << alpha;
+    EXPECT_NEAR(std::erfc(std::sqrt(ChiSquareCritical(alpha, 1) / 2)), alpha, 1e-9 * alpha) << alpha;
+  }
+  EXPECT_NEAR(ChiSquareCritical(0.05, 1), kNormal95 * kNormal95, 1e-12);
+  EXPECT_NEAR(ChiSquareCritical(0.05, 1), kChiSquare1Dof95, 1e-12);
+  EXPECT_TRUE(std::isnan(ChiSquareCritical(0.05, 0)));
+  EXPECT_TRUE(std::isnan(ChiSquareCritical(0, 1)));
 }
 
 TEST(DiagnoseTest, QuickValidationSuite) {
