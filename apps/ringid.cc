@@ -152,10 +152,13 @@ int Write(const std::string& path, const std::string& text) {
 // A campaign names each report's own dataset file.
 Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
                    const std::string& dataset = FLAGS_dataset) {
-  return MakeProvenance(argc, argv,
-                        {{"dataset", dataset}, {"parameters", FLAGS_parameters},
-                         {"input", FLAGS_input}},
-                        seed);
+  Provenance p = MakeProvenance(argc, argv,
+                                {{"dataset", dataset}, {"parameters", FLAGS_parameters},
+                                 {"input", FLAGS_input}},
+                                seed);
+  // Checked by every command that fits before it runs.
+  p.derivatives = FromString<Derivatives>(FLAGS_derivatives).value_or(Derivatives::kNumeric);
+  return p;
 }
 
 int Predict(int argc, char** argv) {

@@ -57,6 +57,17 @@ TEST(ReportTest, IdentifyWithShapesAndDampingRoundTripsByteForByte) {
            "identify-shapes.json"));
 }
 
+// The provenance says how the Jacobians were taken, as the command asked.
+TEST(ReportTest, ProvenanceRecordsTheDerivativeMode) {
+  for (const char* mode : {"numeric", "analytic"}) {
+    const Json j = Json::parse(ReadFile(Made(std::string("identify --starts=1 --derivatives=") +
+                                                 mode + " --dataset=" +
+                                                 Source("datasets/paper/table1.json"),
+                                             std::string("identify-") + mode + ".json")));
+    EXPECT_EQ(j["provenance"]["derivatives"], mode);
+  }
+}
+
 TEST(ReportTest, PredictRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::PredictReport>(
       Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "predict.json"));
