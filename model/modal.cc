@@ -181,7 +181,7 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
     const CVec v = V.col(j);
     int big = 0;
     for (int a = 1; a < k; ++a) {
-      if (std::abs(v[a]) > std::abs(v[big])) big = a;
+      if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
     d->pivot = dofs[big];
     CVec inverse_gap(n);
@@ -283,7 +283,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     for (double& e : mode.energy) e /= total;
     int big = 0;
     for (int a = 1; a < k; ++a) {
-      if (std::abs(v[a]) > std::abs(v[big])) big = a;
+      if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
     const std::complex<double> pivot = v[big];
     mode.shape.setZero();
@@ -341,7 +341,7 @@ double ModeDerivatives::DampingRatio(const std::complex<double>& lambda, int p) 
 RealShapeVector Mode::PaperShape() const {
   int big = 0;
   for (int i = 1; i < kNumDofs; ++i) {
-    if (std::abs(shape[i]) > std::abs(shape[big])) big = i;
+    if (std::norm(shape[i]) > std::norm(shape[big])) big = i;
   }
   // dgeev: unit 2-norm over [v; lambda v], largest component real.
   const std::complex<double> largest =
