@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/reports.h"
+#include "model/spelling.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -425,6 +426,145 @@ TEST(CliTest, SimulateNamesConditionsAndMakesTheLoadPerCondition) {
   EXPECT_EQ(truth["parameters"]["F_cz0@drum_6_4500.5N"]["value"].get<double>(), 4500.5);
   const RunResult r = Ringid("identify --starts=1 --dataset=" + data);
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// A command line that helps (issue 14).
+
+// Each command lists its flags with their defaults and meaning, from the
+// flags' definitions, and the values a named flag takes from the library.
+TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
+  const std::map<std::string, std::vector<std::string>> expected = {
+      {"predict", {"--parameters=TEXT  (default none)", "--effects=LIST"}},
+      {"identify", {"--dataset=TEXT  (default none)", "--starts=N  (default 4)",
+                    "--method=lm|simplex  (default 'lm')",
+                    "--shapes[=BOOL]  (default true; --noshapes for false)",
+                    "--relative_sigma=X", "--save_parameters=TEXT", "--output_dir=TEXT",
+                    "--effects=LIST  (default none)", "LIST is any of"}},
+      {"identifiability", {"--dataset=TEXT", "--derivatives=numeric|analytic  (default 'numeric')"}},
+      {"compare", {"--starts=N  (default 4)"}},
+      {"simulate", {"--set=TEXT", "--shift=X  (default 0)", "--truth=TEXT",
+                    "--speeds=TEXT  (default '0')"}},
+      {"diagnose", {"--effects=LIST", "--jobs=N  (default 1)", "--shard=TEXT  (default '0/1')"}},
+      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling  (default none)",
+                 "--replicates=N  (default 200)"}},
+      {"report", {"--input=TEXT", "--figures_dir=TEXT"}},
+      {"schema", {"It takes no flags."}},
+  };
+  for (const auto& [command, lines] : expected) {
+    const RunResult r = Ringid(command + " --help");
+    EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.err, "") << command;
+    EXPECT_EQ(r.out.rfind("usage: ringid " + command, 0), 0u) << r.out;
+    for (const std::string& line : lines) {
+      EXPECT_NE(r.out.find(line), std::string::npos) << command << " --help lacks " << line
+                                                     << ":\n" << r.out;
+    }
+    EXPECT_EQ(Ringid("help " + command).out, r.out) << command;
+    EXPECT_EQ(Ringid(command + " -h").out, r.out) << command;
+  }
+  // Flags of other commands are not listed.
+  EXPECT_EQ(Ringid("identify --help").out.find("--suite"), std::string::npos);
+  // Help wins over the other flags, even bad ones.
+  EXPECT_EQ(Ringid("identify --bogus=1 --help").status, 0);
+  const RunResult all = Ringid("help");
+  EXPECT_EQ(all.status, 0);
+  EXPECT_NE(all.out.find("ringid COMMAND --help"), std::string::npos) << all.out;
+  EXPECT_NE(all.out.find("ringid simulate --parameters=FILE --output=DATASET --truth=FILE"),
+            std::string::npos) << all.out;
+}
+
+TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string out = Scratch("next_argument.json");
+  std::remove(out.c_str());
+  RunResult r = Ringid("identify --dataset " + table1 + " --starts 1 --noshapes --damping" +
+                       " --output " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(out));
+  const auto& inputs = j["provenance"]["inputs"];
+  ASSERT_EQ(inputs.size(), 1u) << j["provenance"].dump();
+  EXPECT_EQ(inputs[0]["path"], table1);
+  std::remove(out.c_str());
+  // A boolean never takes the next argument, and --noNAME takes no value.
+  const std::pair<std::string, std::string> cases[] = {
+      {"--shapes false", "unexpected argument 'false' (a boolean takes --shapes=false, or "
+                         "--shapes or --noshapes alone)"},
+      {"--noshapes=true", "--noshapes: takes no value (or write --shapes=false)"},
+      {"--starts", "--starts: needs a value (--starts=VALUE or --starts VALUE)"},
+      {"--starts --shapes", "--starts: needs a value"},
+      {"--starts abc", "--starts: bad value 'abc' (an integer expected)"},
+      {"--nostarts", "--nostarts: unknown flag for 'identify'"},
+  };
+  for (const auto& [flags, words] : cases) {
+    r = Ringid("identify --dataset " + table1 + " " + flags + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << flags << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << flags;
+  }
+}
+
+TEST(SpellingTest, ATypoIsNearAndAnotherWordIsNot) {
+  EXPECT_EQ(ringid::EditDistance("dataset", "datset"), 1);
+  EXPECT_EQ(ringid::EditDistance("label", "lable"), 1);  // two neighbours swapped
+  EXPECT_EQ(ringid::EditDistance("", "abc"), 3);
+  const std::vector<std::string> flags = {"dataset", "output", "starts", "seed"};
+  EXPECT_EQ(ringid::NearestName("datset", flags), "dataset");
+  EXPECT_EQ(ringid::NearestName("sed", flags), "seed");
+  EXPECT_EQ(ringid::NearestName("frobnicate", flags), std::nullopt);
+  EXPECT_EQ(ringid::UnknownName("flag", "x", {"a", "b", "c"}), "unknown flag 'x' (expected a, b or c)");
+  EXPECT_EQ(ringid::UnknownName("flag", "sedd", flags, false), "unknown flag 'sedd' (did you mean 'seed'?)");
+}
+
+// A misspelled name, wherever it is given, is answered with the nearest
+// valid one and the valid ones.
+TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string bad_label = Scratch("bad_label.json");
+  std::ofstream(bad_label) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
+                              R"("modes":[{"label":"rotation_inphase","frequency_hz":30}]})";
+  const std::string out = Scratch("misspelled.json");
+  std::remove(out.c_str());
+  const std::pair<std::string, std::string> cases[] = {
+      {"identify --dataset=" + bad_label,
+       bad_label + ": modes[0].label: unknown label 'rotation_inphase' (did you mean "
+                   "'rotation_in_phase'? expected rotation_in_phase, rotation_anti_phase, "
+                   "vertical, longitudinal, camber, yaw or lateral)"},
+      {"identify --datset=" + table1,
+       "--datset: unknown flag for 'identify' (did you mean --dataset?); see 'ringid identify "
+       "--help'"},
+      {"identify --noshape --dataset=" + table1, "(did you mean --noshapes?)"},
+      {"identify --suite=paper --dataset=" + table1,
+       "--suite: not a flag of 'identify' (it is one of bench)"},
+      {"identfy --dataset=" + table1, "unknown command 'identfy' (did you mean 'identify'?"},
+      {"identify --fix=t_0x --dataset=" + table1,
+       "--fix: unknown parameter 't_0x' (did you mean 't_0'? expected m_b, I_ay,"},
+      {"identify --bounds=k_bxx:1:2 --dataset=" + table1,
+       "--bounds: unknown parameter 'k_bxx' (did you mean 'k_bx'?"},
+      {"diagnose --effects=hub_complaince --dataset=" + table1,
+       "--effects: unknown effect 'hub_complaince' (did you mean 'hub_compliance'? expected "
+       "anisotropic_sidewall, hub_compliance,"},
+      {"compare --method=lmm --dataset=" + table1,
+       "--method: unknown value 'lmm' (did you mean 'lm'? expected lm or simplex)"},
+      {"bench --suite=papr", "--suite: unknown suite 'papr' (did you mean 'paper'?"},
+  };
+  for (const auto& [command, words] : cases) {
+    const RunResult r = Ringid(command + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << command << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << command;
+  }
+}
+
+TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
+  const std::string set = Source("datasets/paper/parameters.json");
+  for (const std::string command : {"identify", "predict", "diagnose"}) {
+    const RunResult r = Ringid(command + " --dataset=" + set);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, "ringid: " + set + ": format: this is a parameter set "
+                     "(ringid-parameters/1), not a dataset; use --parameters\n") << command;
+  }
 }
 
 }  // namespace
