@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -499,6 +501,88 @@ std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
   return conditions;
 }
 
+// --set=NAME=VALUE,...: each a parameter of the catalogue and a finite number.
+bool ParseSet(std::map<Param, double>* set, std::string* error) {
+  std::stringstream list(FLAGS_set);
+  for (std::string item; std::getline(list, item, ',');) {
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos) {
+      *error = "--set: bad item '" + item + "' (NAME=VALUE)";
+      return false;
+    }
+    const std::string name = item.substr(0, eq);
+    const std::optional<Param> p = ParseParam(name);
+    if (!p) {
+      *error = "--set: " + UnknownName("parameter", name, NamesOf<Param>());
+      return false;
+    }
+    double v = 0;
+    if (!ParseNumber(item.substr(eq + 1), &v)) {
+      *error = "--set: " + name + ": bad value '" + item.substr(eq + 1) + "' (a finite number)";
+      return false;
+    }
+    (*set)[*p] = v;
+  }
+  return true;
+}
+
+// The effect of the catalogue that `p` belongs to, or null for a parameter
+// of the baseline.
+const Effect* EffectOf(Param p) {
+  for (const Effect* e : EffectCatalogue()) {
+    const std::vector<Param> own = e->parameters();
+    if (std::find(own.begin(), own.end(), p) != own.end()) return e;
+  }
+  return nullptr;
+}
+
+// simulate: every effect of --effects has a size (non-zero, from --set, the
+// parameter file or --shift), and every effect size in --set has its effect
+// in --effects. Either alone would simulate the baseline while the truth file
+// names an effect, or drop the size without a word. (An effect's other
+// parameters, m_a, may be set for any run: scripts/campaign_demo.sh sets it
+// for every case.)
+bool CheckEffectSizes(const std::vector<const Effect*>& effects,
+                      const std::map<Param, double>& set, const Parameters& file,
+                      std::string* error) {
+  for (const auto& [p, v] : set) {
+    const Effect* e = EffectOf(p);
+    if (e && e->size() == p && std::find(effects.begin(), effects.end(), e) == effects.end()) {
+      *error = std::string("--set: ") + ParamName(p) + " is the size of the effect " +
+               e->name() + ", which --effects does not list; add --effects=" + e->name();
+      return false;
+    }
+  }
+  if (FLAGS_shift != 0) {
+    if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) {
+      *error = "--shift: must be in (0, 0.5)";
+      return false;
+    }
+    if (effects.size() != 1) {
+      *error = "--shift: needs exactly one effect in --effects, whose size it sets";
+      return false;
+    }
+    if (set.count(effects[0]->size())) {
+      *error = std::string("--shift: sizes ") + ParamName(effects[0]->size()) +
+               ", which --set gives too; give one of them";
+      return false;
+    }
+    return true;
+  }
+  for (const Effect* e : effects) {
+    const Param size = e->size();
+    const auto it = set.find(size);
+    const double value = it != set.end() ? it->second : file[size];
+    if (value == 0 || !std::isfinite(value)) {
+      *error = std::string("--effects: ") + e->name() + " has no size: give --set=" +
+               ParamName(size) + "=VALUE (not 0) or --shift=FRACTION";
+      return false;
+    }
+  }
+  return true;
+}
+
 int SimulateCommand(int argc, char** argv) {
   std::string error;
   std::vector<double> speeds, loads;
@@ -522,27 +606,20 @@ int SimulateCommand(int argc, char** argv) {
   Parameters truth;
   LoadError load;
   if (!LoadParameterSet(FLAGS_parameters, &truth, &load)) return Usage(load.OneLine());
-  std::stringstream list(FLAGS_set);
-  std::string item;
-  while (std::getline(list, item, ',')) {
-    if (item.empty()) continue;
-    const size_t eq = item.find('=');
-    const auto p = ParseParam(item.substr(0, eq));
-    char* end = nullptr;
-    const double v = eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
-    if (!p || eq == std::string::npos || !end || *end != '\0' || !std::isfinite(v)) {
-      return Usage("--set: bad item '" + item + "' (NAME=VALUE)");
-    }
-    truth[*p] = v;
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error) || !CheckEffectSizes(effects, set, truth, &error)) {
+    return Usage(error);
   }
-  if (FLAGS_shift != 0) {
-    if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) return Usage("--shift: must be in (0, 0.5)");
-    if (effects.size() != 1) return Usage("--shift: needs exactly one effect in --effects");
-    truth[effects[0]->size()] = 0;  // set below
-  }
+  for (const auto& [p, v] : set) truth[p] = v;
+  if (FLAGS_shift != 0) truth[effects[0]->size()] = 0;  // set below
   const RigidRingModel model(effects);
   for (Param q : model.parameters()) {
-    if (!truth.IsSet(q)) return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
+    if (truth.IsSet(q)) continue;
+    if (const Effect* e = EffectOf(q)) {  // the file of a tire need not know the effect
+      return Usage("--effects: " + std::string(e->name()) + " needs " + ParamName(q) +
+                   ": give --set=" + ParamName(q) + "=VALUE");
+    }
+    return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
   }
   if (FLAGS_shift != 0) {
     const Param p = effects[0]->size();

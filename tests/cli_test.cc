@@ -567,4 +567,48 @@ TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
   }
 }
 
+// simulate: an effect needs its size and a size its effect; each defect is
+// one line naming the flag and what is missing, and nothing is written.
+TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
+  const std::string out = Scratch("sized.json"), truth = Scratch("sized_truth.json");
+  const std::pair<std::string, std::string> cases[] = {
+      {"--effects=lug_coupling",
+       "ringid: --effects: lug_coupling has no size: give --set=k_xy=VALUE (not 0) or "
+       "--shift=FRACTION\n"},
+      {"--effects=lug_coupling --set=k_xy=0",
+       "ringid: --effects: lug_coupling has no size: give --set=k_xy=VALUE (not 0) or "
+       "--shift=FRACTION\n"},
+      {"--set=s_h=1e-7",
+       "ringid: --set: s_h is the size of the effect hub_compliance, which --effects does "
+       "not list; add --effects=hub_compliance\n"},
+      {"--effects=hub_compliance --set=s_hh=1e-7",
+       "ringid: --set: unknown parameter 's_hh' (did you mean 's_h'? expected m_b, I_ay,"},
+      {"--effects=hub_compliance --set=s_h=1e-7",
+       "ringid: --effects: hub_compliance needs m_a: give --set=m_a=VALUE\n"},
+      {"--effects=lug_coupling --set=k_xy=abc",
+       "ringid: --set: k_xy: bad value 'abc' (a finite number)\n"},
+      {"--effects=lug_coupling --set=k_xy=1e4 --shift=0.05",
+       "ringid: --shift: sizes k_xy, which --set gives too; give one of them\n"},
+      {"--shift=0.05", "ringid: --shift: needs exactly one effect in --effects"},
+  };
+  for (const auto& [flags, line] : cases) {
+    std::remove(out.c_str());
+    std::remove(truth.c_str());
+    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+                               " " + flags + " --output=" + out + " --truth=" + truth);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+    EXPECT_EQ(r.err.rfind(line, 0), 0u) << flags << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << flags;
+    EXPECT_FALSE(Exists(truth)) << flags;
+  }
+  // Sized, they run; an effect's other parameter may be set without it.
+  for (const std::string flags : {"--effects=lug_coupling --shift=0.05", "--set=m_a=15",
+                                  "--effects=hub_compliance --set=s_h=2e-7,m_a=15"}) {
+    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+                               " " + flags + " --output=" + out + " --truth=" + truth);
+    EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+  }
+}
+
 }  // namespace
