@@ -120,14 +120,17 @@ int Write(const std::string& path, const std::string& text) {
   return kExitOk;
 }
 
+// The input files the flags name, as (flag, path): each goes into the
+// provenance, and no output may overwrite one. A campaign names each report's
+// own dataset file.
+std::vector<std::pair<std::string, std::string>> Inputs(const std::string& dataset = FLAGS_dataset) {
+  return {{"dataset", dataset}, {"parameters", FLAGS_parameters}, {"input", FLAGS_input}};
+}
+
 // This process's provenance, with the inputs its flags named.
-// A campaign names each report's own dataset file.
 Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
                    const std::string& dataset = FLAGS_dataset) {
-  return MakeProvenance(argc, argv,
-                        {{"dataset", dataset}, {"parameters", FLAGS_parameters},
-                         {"input", FLAGS_input}},
-                        seed);
+  return MakeProvenance(argc, argv, Inputs(dataset), seed);
 }
 
 int Predict(int argc, char** argv) {
@@ -137,7 +140,7 @@ int Predict(int argc, char** argv) {
   if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
     return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
   }
-  if (!FLAGS_output.empty() && !CanWrite(FLAGS_output, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
   Parameters p;
   LoadError load;
   if (!FLAGS_parameters.empty()) {
@@ -263,8 +266,9 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
 bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
                    Dataset* d, std::string* error) {
   if (!ReadFitOptions(o, effects, error)) return false;
-  for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
-    if (!out.empty() && !CanWrite(out, error)) return false;
+  if (!CheckOutputs({{"output", FLAGS_output}, {"save_parameters", FLAGS_save_parameters}},
+                    Inputs(), error)) {
+    return false;
   }
   LoadError load;
   if (!LoadDataset(FLAGS_dataset, d, &load)) { *error = load.OneLine(); return false; }
@@ -292,6 +296,14 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   std::vector<std::string> files, reports;
   if (!ListDatasets(FLAGS_dataset, shard, &files, &error)) return Usage(error);
   if (!ReportNames(files, FLAGS_output_dir, &reports, &error)) return Usage(error);
+  for (size_t i = 0; i < reports.size(); ++i) {  // --output_dir=the datasets' own directory
+    for (const std::string& f : files) {
+      if (SameFile(reports[i], f)) {
+        return Usage("--output_dir: " + reports[i] + ", the report of " + files[i] +
+                     ", would overwrite the dataset " + f);
+      }
+    }
+  }
   const std::string summary_path =
       (std::filesystem::path(FLAGS_output_dir) /
        (shard.count == 1 ? std::string("campaign.json")
@@ -596,12 +608,11 @@ int SimulateCommand(int argc, char** argv) {
   if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
     return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
   }
-  if (FLAGS_output == FLAGS_truth) return Usage("--truth: must differ from --output");
   for (double v : {FLAGS_frequency_noise, FLAGS_damping_noise, FLAGS_shape_noise, FLAGS_prior_spread}) {
     if (!(v >= 0) || !std::isfinite(v)) return Usage("noise levels and --prior_spread must be finite and not negative");
   }
-  for (const std::string& out : {FLAGS_output, FLAGS_truth}) {
-    if (!CanWrite(out, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, Inputs(), &error)) {
+    return Usage(error);
   }
   Parameters truth;
   LoadError load;
@@ -716,8 +727,8 @@ int DiagnoseCommand(int argc, char** argv) {
 int BenchCommand(int argc, char** argv) {
   std::string error;
   if (FLAGS_replicates < 1) return Usage("--replicates: must be at least 1");
-  for (const std::string& out : {FLAGS_output, FLAGS_markdown}) {
-    if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"markdown", FLAGS_markdown}}, {}, &error)) {
+    return Usage(error);
   }
   SuiteOptions o;
   if (!ParseFlag("derivatives", FLAGS_derivatives, &o.derivatives, &error)) return Usage(error);
@@ -753,10 +764,11 @@ int ReportCommand(int argc, char** argv) {
   if (FLAGS_input.empty() || FLAGS_output.empty()) {
     return Usage("report needs --input=REPORT.json and --output=FILE.html");
   }
-  if (!CanWrite(FLAGS_output, &error)) return Usage(error);
-  std::error_code ec;
-  if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir, ec)) {
-    return Usage("--figures_dir: " + FLAGS_figures_dir + ": not a directory");
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  // Made only when the page is written, like --output_dir, so that a failed
+  // run leaves nothing behind.
+  if (!FLAGS_figures_dir.empty() && !CanMakeDirectory(FLAGS_figures_dir, &error)) {
+    return Usage("--figures_dir: " + error);
   }
   Json report;
   if (!LoadReport(FLAGS_input, &report, &error)) return Usage(error);
@@ -772,7 +784,14 @@ int ReportCommand(int argc, char** argv) {
     files.emplace_back((std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string(), f.svg);
   }
   files.emplace_back(FLAGS_output, html);
-  if (!WriteFilesAtomically(files, &error)) return Usage(error);
+  std::vector<std::string> made;
+  if (!FLAGS_figures_dir.empty() && !MakeDirectory(FLAGS_figures_dir, &made, &error)) {
+    return Usage("--figures_dir: " + error);
+  }
+  if (!WriteFilesAtomically(files, &error)) {
+    RemoveMade(made);  // all or none: the directory too
+    return Usage(error);
+  }
   std::printf("wrote %s (%zu figure(s))\n", FLAGS_output.c_str(), figures.size());
   return kExitOk;
 }

@@ -611,4 +611,68 @@ TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
   }
 }
 
+// Every output is checked before any work, exit 2 and nothing written: a
+// directory given as a file, one file named twice (however spelled), an
+// output that would overwrite an input, and a --figures_dir that cannot be
+// made. --figures_dir is made when missing, as --output_dir is.
+TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string dir = Scratch("outputs");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/a_directory");
+  const std::string copy = dir + "/table1.json";
+  std::filesystem::copy_file(table1, copy);
+  const std::string same = dir + "/same.json";
+  const std::string file = dir + "/a_file";
+  std::ofstream(file) << "x";
+  const std::string report = Scratch("outputs_identify.json");
+  RunResult r = Ringid("identify --starts=1 --dataset=" + table1 + " --output=" + report);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::pair<std::string, std::string> cases[] = {
+      {"compare --starts=1 --dataset=" + table1 + " --output=" + dir + "/a_directory",
+       "ringid: --output: " + dir + "/a_directory: is a directory, not a file\n"},
+      {"identify --dataset=" + table1 + " --output=" + same + " --save_parameters=" + same,
+       "ringid: --save_parameters: " + same + " is also --output; give each output its own "
+       "file\n"},
+      {"identify --dataset=" + table1 + " --output=" + same + " --save_parameters=" + dir +
+           "/a_directory/../same.json",
+       "ringid: --save_parameters: " + dir + "/a_directory/../same.json is also --output"},
+      {"identify --dataset=" + copy + " --output=" + dir + "/./table1.json",
+       "ringid: --output: " + dir + "/./table1.json is the --dataset input, which it would "
+       "overwrite\n"},
+      {"simulate --parameters=" + Source("datasets/paper/parameters.json") + " --output=" + same +
+           " --truth=" + same,
+       "ringid: --truth: " + same + " is also --output"},
+      {"bench --suite=paper --output=" + same + " --markdown=" + same,
+       "ringid: --markdown: " + same + " is also --output"},
+      {"identify --dataset=" + dir + " --output_dir=" + dir,
+       "ringid: --output_dir: " + dir + "/table1.json, the report of " + dir +
+           "/table1.json, would overwrite the dataset"},
+      {"report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" + file +
+           "/figures",
+       "ringid: --figures_dir: " + file + "/figures: " + file + " is not a directory\n"},
+      {"report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" + file,
+       "ringid: --figures_dir: " + file + ": not a directory\n"},
+  };
+  for (const auto& [command, line] : cases) {
+    r = Ringid(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err.rfind(line, 0), 0u) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+    EXPECT_EQ(r.out, "") << command << ": the run went ahead";
+  }
+  EXPECT_FALSE(Exists(same));
+  EXPECT_FALSE(Exists(dir + "/page.html"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir + "/a_directory"));
+  EXPECT_EQ(ReadFile(copy), ReadFile(table1));
+
+  RINGID_REQUIRE_TOOL(ringid::testing::HaveProgram("gnuplot"), "gnuplot");
+  const std::string figures = dir + "/new/figures";
+  r = Ringid("report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" +
+             figures);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(Exists(dir + "/page.html"));
+  EXPECT_FALSE(std::filesystem::is_empty(figures));
+}
+
 }  // namespace
