@@ -9,6 +9,8 @@
 
 #include <unistd.h>
 
+#include "apps/interrupt.h"
+
 namespace ringid {
 
 using nlohmann::json;
@@ -35,6 +37,7 @@ bool CanWrite(const std::string& path, std::string* error) {
     *error = path + ": is a directory, not a file";
     return false;
   }
+  const auto hold = HoldInterruption();  // an interruption leaves no probe behind
   const std::string probe = path + ".ringid-probe";
   std::FILE* f = std::fopen(probe.c_str(), "wb");
   if (!f) {
@@ -158,6 +161,8 @@ bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>
       }
     }
   }
+  // An interruption waits for the whole group (apps/interrupt.h).
+  const auto hold = HoldInterruption();
   // Each file goes to a temporary beside it; an existing file is kept as a
   // hard link beside it until every rename has succeeded, so that a failed
   // rename puts back what was there (or removes what was not).
@@ -207,6 +212,7 @@ bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>
   for (const std::string& b : backups) {
     if (!b.empty()) std::remove(b.c_str());
   }
+  for (const auto& file : files) NoteWritten(file.first);
   return true;
 }
 

@@ -30,7 +30,7 @@ bool WriteFileAtomically(const std::string& path, const std::string& text,
 // fails, the files renamed before it are put back as they were (an existing
 // file from a hard link kept beside it, a new one removed). A path named
 // twice is refused before anything is written. Not atomic against a crash
-// between two renames.
+// between two renames; an interruption (apps/interrupt.h) waits for the group.
 bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
                           std::string* error);
 // Whether `path` could be written, checked before a long run starts: not a

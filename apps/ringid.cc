@@ -23,6 +23,7 @@
 #include "apps/campaign.h"
 #include "apps/command_line.h"
 #include "apps/html_report.h"
+#include "apps/interrupt.h"
 #include "apps/progress.h"
 #include "apps/help.h"
 #include "apps/reports.h"
@@ -282,6 +283,28 @@ struct CampaignItem {
 };
 using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
 
+// What an interrupted campaign kept: the reports finished whole (each is
+// written as its dataset finishes), and whether the summary was written.
+std::string CampaignKept(const std::vector<std::string>& written,
+                         const std::vector<std::string>& reports, const std::string& summary) {
+  std::string names;
+  int finished = 0;
+  bool summarised = false;
+  for (const std::string& w : written) {
+    if (w == summary) {
+      summarised = true;
+    } else if (std::find(reports.begin(), reports.end(), w) != reports.end()) {
+      names += (finished++ ? ", " : "") + std::filesystem::path(w).filename().string();
+    }
+  }
+  const std::string dir = std::filesystem::path(summary).parent_path().string();
+  const std::string of = " of " + std::to_string(reports.size()) + " report(s)";
+  if (finished == 0) return "none" + of + " finished; nothing written in " + dir;
+  return "kept the " + std::to_string(finished) + of + " finished whole, in " + dir + ": " +
+         names + "; " + std::filesystem::path(summary).filename().string() +
+         (summarised ? " written" : " not written");
+}
+
 // --output_dir: every dataset of --dataset (this shard's share), --jobs at
 // once. Every input is loaded and checked before anything runs, so a bad one
 // stops the campaign with exit 2 and nothing written, as does a dataset
@@ -327,6 +350,9 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   }
   if (!CanWrite(summary_path, &error)) return Usage("--output_dir: " + error);
   const int n = static_cast<int>(files.size());
+  const KeptNote kept([&](const std::vector<std::string>& written) {
+    return CampaignKept(written, reports, summary_path);
+  });
   std::vector<CampaignItem> items(n);
   std::vector<std::string> write_errors(n);
   const auto t0 = std::chrono::steady_clock::now();
@@ -784,6 +810,7 @@ int ReportCommand(int argc, char** argv) {
     files.emplace_back((std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string(), f.svg);
   }
   files.emplace_back(FLAGS_output, html);
+  const auto hold = HoldInterruption();  // the figures' directory and the files, or none
   std::vector<std::string> made;
   if (!FLAGS_figures_dir.empty() && !MakeDirectory(FLAGS_figures_dir, &made, &error)) {
     return Usage("--figures_dir: " + error);
@@ -896,6 +923,7 @@ int Run(int argc, char** argv) {
 }  // namespace ringid
 
 int main(int argc, char** argv) {
+  ringid::ExitOnInterrupt();  // first: its thread must exist before any other
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = 3;  // Ceres reports failed evaluations at ERROR; the report says why
   google::InitGoogleLogging(argv[0]);

@@ -10,9 +10,14 @@
 #include <map>
 #include <utility>
 #include <string>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -673,6 +678,82 @@ TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(Exists(dir + "/page.html"));
   EXPECT_FALSE(std::filesystem::is_empty(figures));
+}
+
+// ringid `args`, started in the source tree and not waited for; stdout
+// discarded, stderr to `err`.
+pid_t Start(const std::string& args, const std::string& err) {
+  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
+                            args + " > /dev/null 2> " + err;
+  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+  return pid;
+}
+
+// The exit status of `pid`, -1 if a signal killed it.
+int Finish(pid_t pid) {
+  int raw = 0;
+  EXPECT_EQ(::waitpid(pid, &raw, 0), pid);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Ctrl-C or SIGTERM in the middle of a run: one line saying what was kept
+// (nothing: reports are written whole at the end), exit 128 + the signal.
+TEST(CliTest, AnInterruptedRunSaysWhatItKept) {
+  const std::string dir = Scratch("interrupt");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::pair<int, std::string> signals[] = {{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}};
+  for (const auto& [signo, name] : signals) {
+    const std::string err = Scratch("interrupt_" + name + ".txt");
+    const pid_t pid = Start("bench --suite=synthetic --output=" + dir + "/bench.json --markdown=" +
+                                dir + "/bench.md",
+                            err);
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    ::kill(pid, signo);
+    EXPECT_EQ(Finish(pid), 128 + signo) << name;
+    EXPECT_EQ(ReadFile(err), "ringid: interrupted (" + name +
+                                 "): nothing written (a report is written whole when its run "
+                                 "ends)\n");
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << name << ": a file was left behind";
+  }
+}
+
+// An interrupted campaign keeps the reports it finished, each whole, and
+// says which; its summary is not written.
+TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
+  const std::string dir = Scratch("interrupted_campaign");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/data");
+  for (const char* name : {"a", "b", "c"}) {
+    std::filesystem::copy_file(Source("datasets/paper/table1.json"),
+                               dir + "/data/" + name + ".json");
+  }
+  const std::string err = Scratch("interrupted_campaign.txt");
+  const pid_t pid = Start("identify --starts=400 --dataset=" + dir + "/data --output_dir=" + dir +
+                              "/out",
+                          err);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
+  while (!Exists(dir + "/out/a.json") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGINT);
+  ASSERT_EQ(Finish(pid), 130) << ReadFile(err);
+  std::vector<std::string> kept;
+  for (const auto& f : std::filesystem::directory_iterator(dir + "/out")) {
+    kept.push_back(f.path().filename().string());
+    EXPECT_NO_THROW(nlohmann::json::parse(ReadFile(f.path().string()))) << f.path();
+  }
+  std::sort(kept.begin(), kept.end());
+  ASSERT_GE(kept.size(), 1u);
+  ASSERT_LE(kept.size(), 2u) << "the campaign finished before the signal";
+  EXPECT_EQ(kept[0], "a.json");
+  std::string names;
+  for (const std::string& k : kept) names += (names.empty() ? "" : ", ") + k;
+  EXPECT_EQ(ReadFile(err), "ringid: interrupted (SIGINT): kept the " +
+                               std::to_string(kept.size()) + " of 3 report(s) finished whole, in " +
+                               dir + "/out: " + names + "; campaign.json not written\n");
 }
 
 }  // namespace
