@@ -22,6 +22,7 @@
 
 #include "apps/campaign.h"
 #include "apps/command_line.h"
+#include "apps/data_dir.h"
 #include "apps/html_report.h"
 #include "apps/interrupt.h"
 #include "apps/progress.h"
@@ -760,6 +761,7 @@ int BenchCommand(int argc, char** argv) {
   if (!ParseFlag("derivatives", FLAGS_derivatives, &o.derivatives, &error)) return Usage(error);
   o.replicates = FLAGS_replicates;
   o.seed = static_cast<unsigned>(FLAGS_seed);
+  o.source_dir = DataDir();  // from any working directory
   Progress progress(FLAGS_suite + " suite");
   o.on_case = [&](int done, int total) { progress.Set(done, total); };
   const SuiteEntry* suite = nullptr;
@@ -876,7 +878,8 @@ const std::vector<Command>& Commands() {
        Joined(kFitFlags, kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
        "the accuracy and conditioning suites, on the paper's data installed with\n"
-       "ringid (speed: build/benchmarks/ringid_benchmarks)",
+       "ringid, here in " + DataDir() + "/datasets/paper\n"
+       "(speed: build/benchmarks/ringid_benchmarks)",
        {"suite", "replicates", "seed", "derivatives", "output", "markdown"}, BenchCommand},
       {"report", "--input=REPORT.json --output=FILE.html",
        "any JSON report of ringid as one self-contained HTML page: tables and\n"

@@ -756,4 +756,36 @@ TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
                                dir + "/out: " + names + "; campaign.json not written\n");
 }
 
+// The paper's data are installed with the package and found from any
+// directory: by the build tree's binary in its source tree, and by an
+// installed binary beside itself (PREFIX/share/ringid), whatever the prefix.
+TEST(CliTest, TheSuitesRunFromAnyDirectoryBuiltOrInstalled) {
+  const std::string elsewhere = Scratch("elsewhere");
+  std::filesystem::create_directories(elsewhere);
+  RunResult r = Ringid("bench --suite=paper", elsewhere);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Table 3 reproduced"), std::string::npos) << r.out;
+
+  const std::string prefix = Scratch("prefix");
+  std::filesystem::remove_all(prefix);
+  const std::string install = std::string(RINGID_CMAKE) + " --install " + RINGID_BUILD_DIR +
+                              " --prefix " + prefix + " > /dev/null";
+  ASSERT_EQ(std::system(install.c_str()), 0) << install;
+  for (const char* f : {"datasets/paper/table1.json", "datasets/paper/parameters.json",
+                        "datasets/examples/car_tire.json"}) {
+    EXPECT_TRUE(Exists(prefix + "/share/ringid/" + f)) << f;
+  }
+  const std::string installed = prefix + "/bin/ringid";
+  const std::string out = Scratch("installed_bench.txt");
+  const std::string run = "cd " + elsewhere + " && " + installed + " bench --suite=paper > " + out;
+  ASSERT_EQ(std::system(run.c_str()), 0) << run;
+  EXPECT_NE(ReadFile(out).find("Table 3 reproduced"), std::string::npos);
+  // The installed binary reads the installed data, not the source tree's.
+  const std::string help = "cd " + elsewhere + " && " + installed + " bench --help > " + out;
+  ASSERT_EQ(std::system(help.c_str()), 0) << help;
+  EXPECT_NE(ReadFile(out).find(prefix + "/share/ringid/datasets/paper"), std::string::npos)
+      << ReadFile(out);
+  std::filesystem::remove_all(prefix);
+}
+
 }  // namespace
