@@ -891,14 +891,21 @@ const std::vector<Command>& Commands() {
   return commands;
 }
 
+std::string UnknownCommand(const std::string& name) {
+  std::vector<std::string> names = {"help"};
+  for (const Command& c : Commands()) names.push_back(c.name);
+  return UnknownName("command", name, names) + "; see 'ringid help'";
+}
+
 // `ringid help [COMMAND]`.
 int HelpCommand(int argc, char** argv) {
   if (argc <= 2) {
     std::fputs(Help(Commands()).c_str(), stdout);
     return kExitOk;
   }
+  if (argc > 3) return Usage("help takes at most one command (see 'ringid help')");
   const Command* c = FindCommand(Commands(), argv[2]);
-  if (!c || argc > 3) return Usage("help takes at most one command (see 'ringid help')");
+  if (!c) return Usage(UnknownCommand(argv[2]));
   std::fputs(CommandHelp(*c).c_str(), stdout);
   return kExitOk;
 }
@@ -908,11 +915,7 @@ int Run(int argc, char** argv) {
   const std::string name = argc > 1 ? argv[1] : "help";
   if (name == "help" || name == "--help" || name == "-h") return HelpCommand(argc, argv);
   const Command* command = FindCommand(Commands(), name);
-  if (!command) {
-    std::vector<std::string> names = {"help"};
-    for (const Command& c : Commands()) names.push_back(c.name);
-    return Usage(UnknownName("command", name, names) + "; see 'ringid help'");
-  }
+  if (!command) return Usage(UnknownCommand(name));
   if (WantsHelp(argc, argv)) {
     std::fputs(CommandHelp(*command).c_str(), stdout);
     return kExitOk;

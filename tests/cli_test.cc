@@ -560,6 +560,11 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
     EXPECT_NE(r.err.find(words), std::string::npos) << command << ": " << r.err;
     EXPECT_FALSE(Exists(out)) << command;
   }
+  const RunResult r = Ringid("help simulat");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
+                   "predict, identify, identifiability, compare, simulate, diagnose, bench, "
+                   "report or schema); see 'ringid help'\n");
 }
 
 TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
