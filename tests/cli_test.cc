@@ -489,6 +489,19 @@ TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
   const auto& inputs = j["provenance"]["inputs"];
   ASSERT_EQ(inputs.size(), 1u) << j["provenance"].dump();
   EXPECT_EQ(inputs[0]["path"], table1);
+  EXPECT_EQ(j["starts"], 1);
+  // --noshapes turns the shapes off: the example car tire's 21 modes then
+  // give 42 residuals (frequency and damping) instead of 252, less one fitted
+  // scale per shape.
+  const std::string rolling = Source("datasets/examples/car_tire_rolling.json");
+  int dof[2];
+  for (int shapes = 0; shapes < 2; ++shapes) {
+    r = Ringid("identify --dataset " + rolling + " --starts 1 " +
+               (shapes ? "--shapes" : "--noshapes") + " --output " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    dof[shapes] = nlohmann::json::parse(ReadFile(out))["fit"]["degrees_of_freedom"].get<int>();
+  }
+  EXPECT_EQ(dof[1] - dof[0], 252 - 42 - 21);
   std::remove(out.c_str());
   // A boolean never takes the next argument, and --noNAME takes no value.
   const std::pair<std::string, std::string> cases[] = {
