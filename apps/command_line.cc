@@ -67,17 +67,18 @@ const Command* FindCommand(const std::vector<Command>& all, const std::string& n
 
 bool SetFlags(int argc, char** argv, const Command& command,
               const std::vector<Command>& all, std::string* error) {
+  std::string bare_bool;  // the flag just before, if a boolean given alone
   for (int i = 2; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
       *error = "unexpected argument '" + arg + "'";
-      if (i > 2 && IsBool(std::string(argv[i - 1]).substr(2))) {
-        const std::string flag = std::string(argv[i - 1]).substr(2);
-        *error += " (a boolean takes --" + flag + "=" + arg + ", or --" + flag + " or --no" +
-                  flag + " alone)";
+      if (!bare_bool.empty()) {  // --shapes false
+        *error += " (a boolean takes --" + bare_bool + "=" + arg + ", or --" + bare_bool +
+                  " or --no" + bare_bool + " alone)";
       }
       return false;
     }
+    bare_bool.clear();
     arg = arg.substr(2);
     const size_t eq = arg.find('=');
     std::string name = arg.substr(0, eq);
@@ -100,6 +101,7 @@ bool SetFlags(int argc, char** argv, const Command& command,
     }
     if (!value && info.type == "bool") {
       value = "true";  // a boolean never takes the next argument (as in gflags)
+      bare_bool = name;
     } else if (!value) {
       // --NAME VALUE; an argument that is itself a flag is not a value.
       if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0) {

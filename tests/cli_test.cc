@@ -512,6 +512,8 @@ TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
       {"--starts --shapes", "--starts: needs a value"},
       {"--starts abc", "--starts: bad value 'abc' (an integer expected)"},
       {"--nostarts", "--nostarts: unknown flag for 'identify'"},
+      {"--starts 1 2", "unexpected argument '2'\n"},
+      {"x", "unexpected argument 'x'\n"},
   };
   for (const auto& [flags, words] : cases) {
     r = Ringid("identify --dataset " + table1 + " " + flags + " --output=" + out);
