@@ -93,8 +93,10 @@ MeasuredMode Mode(const json& j, const std::string& field) {
   if (!j.contains("label")) Fail(field + ".label", "missing");
   const std::string label = String(j["label"], field + ".label");
   const auto parsed = ParseLabel(label);
-  if (!parsed || LabelPlane(*parsed) == Plane::kHub) {
-    Fail(field + ".label", UnknownName("label", label, MeasurableLabels()));
+  if (!parsed) Fail(field + ".label", UnknownName("label", label, MeasurableLabels()));
+  if (LabelPlane(*parsed) == Plane::kHub) {  // not a typo: nothing to suggest
+    Fail(field + ".label", "'" + label + "' is a mode of the hub, which a dataset does not "
+                          "list (expected " + OneOf(MeasurableLabels()) + ")");
   }
   m.label = *parsed;
   if (j.contains("plane")) {

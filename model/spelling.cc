@@ -25,10 +25,10 @@ int EditDistance(std::string_view a, std::string_view b) {
 
 std::optional<std::string> NearestName(std::string_view text,
                                        const std::vector<std::string>& candidates) {
-  // A third of the letters wrong is still recognisably the same word;
-  // beyond that (or in a name of one or two letters) a suggestion is a guess
-  // that misleads more than it helps.
-  const int allowed = static_cast<int>(text.size()) / 3;
+  // About a third of the letters wrong is still recognisably the same word
+  // (one in "zb", two in "datset"); beyond that, or in a name of one letter,
+  // a suggestion is a guess that misleads more than it helps.
+  const int allowed = (static_cast<int>(text.size()) + 1) / 3;
   std::optional<std::string> best;
   int best_distance = allowed + 1;
   for (const std::string& c : candidates) {

@@ -18,8 +18,8 @@ namespace ringid {
 int EditDistance(std::string_view a, std::string_view b);
 
 // The candidate nearest to `text` if it is near enough to be a typo of it (at
-// most a third of its letters wrong, rounded down); the first of equally near
-// ones.
+// most (letters + 1) / 3 edits: none for one letter, one for two to four, two
+// for five to seven, ...); the first of equally near ones.
 std::optional<std::string> NearestName(std::string_view text,
                                        const std::vector<std::string>& candidates);
 

@@ -532,6 +532,8 @@ TEST(SpellingTest, ATypoIsNearAndAnotherWordIsNot) {
   EXPECT_EQ(ringid::NearestName("datset", flags), "dataset");
   EXPECT_EQ(ringid::NearestName("sed", flags), "seed");
   EXPECT_EQ(ringid::NearestName("frobnicate", flags), std::nullopt);
+  EXPECT_EQ(ringid::NearestName("zb", {"x_b", "z_b"}), "z_b");
+  EXPECT_EQ(ringid::NearestName("s", {"seed"}), std::nullopt);
   EXPECT_EQ(ringid::UnknownName("flag", "x", {"a", "b", "c"}), "unknown flag 'x' (expected a, b or c)");
   EXPECT_EQ(ringid::UnknownName("flag", "sedd", flags, false), "unknown flag 'sedd' (did you mean 'seed'?)");
 }
