@@ -1,105 +1,137 @@
 #include "apps/help.h"
 
-#include <utility>
-#include <vector>
+#include <gflags/gflags.h>
 
 #include "estimation/fit.h"
 #include "estimation/residuals.h"
 #include "model/effects.h"
+#include "model/spelling.h"
 #include "validation/suites.h"
 
 namespace ringid {
 namespace {
 
-// {METHODS}, {WEIGHTINGS}, {CONVENTIONS}, {DERIVATIVES}, {SUITES} and {EFFECTS} are filled in
-// by Help() from the names the library defines.
-const char kHelp[] =
-    "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
-    "\n"
-    "usage: ringid COMMAND [--flag=value ...]\n"
-    "\n"
-    "commands:\n"
-    "  help       this text\n"
-    "  predict    modes of a parameter set, as a table and JSON\n"
-    "             --parameters=FILE | --dataset=FILE  [--set=NAME=VALUE,...]\n"
-    "             [--effects=LIST] [--output=FILE]; a FILE.tir is read as MF-Swift's\n"
-    "             rigid-ring part (docs/tir.md), the rest given by --set\n"
-    "  identify   fit parameters to a dataset, with covariance and identifiability\n"
-    "             --dataset=FILE [--method={METHODS}] [--starts=N] [--seed=N]\n"
-    "             [--weighting={WEIGHTINGS}] [--relative_sigma=X] [--shapes=BOOL]\n"
-    "             [--damping=BOOL] [--shape_convention={CONVENTIONS}]\n"
-    "             [--derivatives={DERIVATIVES}] [--bounds=NAME:LO:HI,...] [--fix=NAME,...]\n"
-    "             [--effects=LIST] [--output=FILE] [--save_parameters=FILE]\n"
-    "  identifiability  what the data determine at the fitted point: rank,\n"
-    "             classes, Wald and profile intervals, free combinations,\n"
-    "             collinear pairs, identifiable subset, experiment advice\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  compare    Downhill Simplex and Levenberg-Marquardt from the same --starts=N\n"
-    "             starts: success rate, final costs, evaluations, time per fit\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  simulate   a dataset measured from a parameter set, optionally with effects,\n"
-    "             and a separate truth file\n"
-    "             --parameters=FILE [--effects=LIST] [--set=NAME=VALUE,...]\n"
-    "             [--frequency_noise=X] [--damping_noise=X] [--shape_noise=X]\n"
-    "             [--shift=X] [--prior_spread=X] [--seed=N] --output=DATASET --truth=FILE\n"
-    "             [--speeds=V,...] [--loads=F,...]: one condition per speed (m/s; 0 is\n"
-    "             standing, the default) and load (N, then F_cz0 per condition);\n"
-    "             several conditions or loads give a format-2 dataset\n"
-    "  diagnose   the gap between the calibrated baseline and the data: where it\n"
-    "             lies, which effect explains it, how far it shrinks; --effects=LIST\n"
-    "             puts effects in the baseline, and the others are tried on top\n"
-    "             --dataset=FILE and the fitting flags of identify\n"
-    "  campaigns: identify and diagnose take --dataset=FILE,DIR,... (a directory\n"
-    "             stands for its *.json) with --output_dir=DIR [--jobs=N] [--shard=I/N];\n"
-    "             one report per dataset in DIR, a summary table and DIR/campaign.json\n"
-    "             (campaign.I-of-N.json for a shard)\n"
-    "  bench      accuracy and conditioning suites, run from the repository root\n"
-    "             --suite={SUITES} [--replicates=N] [--seed=N] [--derivatives={DERIVATIVES}]\n"
-    "             [--output=FILE.json] [--markdown=FILE.md]\n"
-    "  export     a parameter set (JSON or .tir) as the rigid-ring part of an\n"
-    "             MF-Swift .tir, or as ringid-parameters/1 JSON (docs/tir.md)\n"
-    "             --parameters=FILE --format=tir|json [--set=NAME=VALUE,...] [--output=FILE]\n"
-    "  schema     every report's fields and their types, as Markdown (docs/reports.md)\n"
-    "  report     any JSON report of ringid as one self-contained HTML page: tables\n"
-    "             and figures (SVG drawn by gnuplot, package gnuplot-nox)\n"
-    "             --input=REPORT.json --output=FILE.html [--figures_dir=DIR]\n"
-    "\n"
-    "effects: {EFFECTS}\n"
-    "\n"
-    "exit status:\n"
-    "  0  success\n"
-    "  1  the run finished but the analysis failed (the report says why)\n"
-    "  2  bad input: unreadable or malformed file, unknown or bad flag,\n"
-    "     unwritable --output; one line on stderr, nothing written\n";
+// How a flag is given, shown after the commands.
+const char kFlagSyntax[] =
+    "Give a flag as --NAME=VALUE or --NAME VALUE; a boolean alone (--shapes) is\n"
+    "true, and --noNAME (--noshapes) false.\n";
 
-// `names` joined by `separator`.
-std::string Joined(const std::vector<std::string>& names, const char* separator) {
+const char kExitStatus[] =
+    "exit status:\n"
+    "  0    success\n"
+    "  1    the run finished but the analysis failed (the report says why)\n"
+    "  2    bad input: unreadable or malformed file, unknown or bad flag,\n"
+    "       unwritable output; one line on stderr, nothing written\n"
+    "  130  interrupted (Ctrl-C; 143 for SIGTERM): one line on stderr says what\n"
+    "       was kept (nothing, or a campaign's finished reports)\n";
+
+// `text` with every line indented by `indent`.
+std::string Indented(const std::string& text, const std::string& indent) {
   std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : separator) + n;
+  size_t start = 0;
+  while (start < text.size()) {
+    const size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end == std::string::npos ? end : end - start);
+    out += (line.empty() ? "" : indent) + line + "\n";
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
   return out;
 }
 
-template <class E>
-std::string Alternatives() {
-  const auto& names = EnumNames<E>::kNames;
-  return Joined(std::vector<std::string>(names.begin(), names.end()), "|");
+// `text` broken into lines of at most `width` characters after `indent`.
+std::string Wrapped(const std::string& text, const std::string& indent, size_t width = 78) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && indent.size() + line.size() + 1 + word.size() > width) {
+      out += indent + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + indent + line + "\n";
+}
+
+// "--NAME=N  (default 4)" and the like, from gflags' record of the flag; a
+// flag that takes one of the library's names shows them: --method=lm|simplex.
+std::string FlagLine(const gflags::CommandLineFlagInfo& info,
+                     const std::vector<std::string>& values) {
+  std::string line = "--" + info.name;
+  std::string value = info.default_value;
+  if (info.type == "bool") {
+    line += "[=BOOL]";
+    value += "; --no" + info.name + " for false";
+  } else if (info.type == "string") {
+    std::string names;
+    for (const std::string& v : values) names += (names.empty() ? "" : "|") + v;
+    line += "=" + (values.empty() ? "TEXT" : info.name == "effects" ? "LIST" : names);
+    value = value.empty() ? "none" : "'" + value + "'";
+  } else if (info.type == "double") {
+    line += "=X";
+  } else {
+    line += "=N";
+  }
+  return line + "  (default " + value + ")";
+}
+
+std::string Usage(const Command& c) {
+  std::string line = "ringid " + c.name;
+  if (!c.usage.empty()) line += " " + c.usage;
+  if (!c.flags.empty()) line += " [FLAG ...]";
+  return line;
 }
 
 }  // namespace
 
-std::string Help() {
-  std::string help = kHelp;
-  std::vector<std::string> suites;
-  for (const SuiteEntry& s : Suites()) suites.push_back(s.name);
-  const std::pair<const char*, std::string> fills[] = {
-      {"{METHODS}", Alternatives<Method>()},
-      {"{WEIGHTINGS}", Alternatives<FrequencyWeighting>()},
-      {"{CONVENTIONS}", Alternatives<ShapeConvention>()},
-      {"{DERIVATIVES}", Alternatives<Derivatives>()},
-      {"{SUITES}", Joined(suites, "|")},
-      {"{EFFECTS}", Joined(EffectNames(EffectCatalogue()), ", ")}};
-  for (const auto& [key, value] : fills) help.replace(help.find(key), std::string(key).size(), value);
+std::vector<std::string> FlagValues(const std::string& flag) {
+  if (flag == "method") return NamesOf<Method>();
+  if (flag == "weighting") return NamesOf<FrequencyWeighting>();
+  if (flag == "shape_convention") return NamesOf<ShapeConvention>();
+  if (flag == "derivatives") return NamesOf<Derivatives>();
+  if (flag == "effects") return EffectNames(EffectCatalogue());
+  if (flag == "format") return {"tir", "json"};  // export's
+  if (flag == "suite") {
+    std::vector<std::string> names;
+    for (const SuiteEntry& s : Suites()) names.push_back(s.name);
+    return names;
+  }
+  return {};
+}
+
+std::string Help(const std::vector<Command>& commands) {
+  std::string help =
+      "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
+      "\n"
+      "usage: ringid COMMAND [--flag=value ...]\n"
+      "       ringid COMMAND --help    the command's flags, their defaults and meaning\n"
+      "\n"
+      "commands:\n";
+  for (const Command& c : commands) {
+    help += "  " + Usage(c) + "\n" + Indented(c.summary, "      ");
+  }
+  help += "\n" + std::string(kFlagSyntax) + "\n" +
+          Wrapped("effects: " + OneOf(FlagValues("effects")), "") + "\n" + kExitStatus;
   return help;
+}
+
+std::string CommandHelp(const Command& c) {
+  std::string help = "usage: " + Usage(c) + "\n\n" + c.summary + "\n";
+  if (c.summary.empty() || c.summary.back() != '\n') help += "\n";
+  if (c.flags.empty()) return help + "It takes no flags.\n";
+  help += "flags:\n";
+  for (const std::string& name : c.flags) {
+    const gflags::CommandLineFlagInfo info = gflags::GetCommandLineFlagInfoOrDie(name.c_str());
+    const std::vector<std::string> values = FlagValues(name);
+    std::string meaning = info.description;
+    if (name == "effects") meaning += "; LIST is any of " + OneOf(values);
+    help += "  " + FlagLine(info, values) + "\n" + Wrapped(meaning, "      ");
+  }
+  return help + "\n" + kFlagSyntax;
 }
 
 }  // namespace ringid

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -19,10 +21,14 @@
 #include <glog/logging.h>
 
 #include "apps/campaign.h"
+#include "apps/command_line.h"
+#include "apps/data_dir.h"
 #include "apps/html_report.h"
+#include "apps/interrupt.h"
 #include "apps/progress.h"
 #include "apps/help.h"
 #include "apps/reports.h"
+#include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
 #include "report/report.h"
 #include "validation/suites.h"
@@ -34,50 +40,54 @@
 #include "estimation/identify.h"
 #include "estimation/problem.h"
 #include "model/effects.h"
+#include "model/spelling.h"
 #include "model/rigid_ring_model.h"
 
-DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3)");
-DEFINE_string(parameters, "", "parameter set (ringid-parameters/1 or an identify report)");
-DEFINE_string(output, "", "write the JSON report here");
-DEFINE_string(save_parameters, "", "identify: also write the fitted parameter set here");
-DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "identify: lm (Levenberg-Marquardt) or simplex (Downhill Simplex)");
-DEFINE_int32(starts, ringid::IdentifyOptions().starts, "identify: number of starts (the initial point and starts-1 random ones)");
+// Each flag's meaning, for every command that takes it; which commands take
+// it is the table of commands in main(), and `ringid COMMAND --help` shows
+// both. The values a named flag takes come from the library (apps/help.cc).
+DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3); a campaign takes FILE,DIR,... (a directory stands for its *.json)");
+DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report); predict and export also read the rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), the rest given by --set");
+DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
+DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
+DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "how to fit: Levenberg-Marquardt or the Downhill Simplex");
+DEFINE_int32(starts, ringid::IdentifyOptions().starts, "number of starts: the dataset's initial point and starts-1 random ones");
 DEFINE_int32(seed, static_cast<int>(ringid::IdentifyOptions().seed),
-             "identify: seed of the random starts; simulate, bench: of the noise");
+             "seed of the random starts, and of the noise in simulate and bench");
 DEFINE_string(weighting, ringid::ToString(ringid::ResidualOptions().frequency_weighting),
-              "identify: frequency weighting, sigma or relative (eqs. 19-20)");
+              "frequency residuals weighted by their sigma, or relative to the frequency (eqs. 19-20)");
 DEFINE_double(relative_sigma, ringid::ResidualOptions().relative_sigma,
-              "identify: relative frequency sigma where none is given");
-DEFINE_bool(shapes, ringid::ResidualOptions().use_shapes, "identify: use measured mode shapes");
-DEFINE_bool(damping, ringid::ResidualOptions().use_damping, "identify: use measured damping ratios");
+              "relative frequency sigma where the dataset gives none");
+DEFINE_bool(shapes, ringid::ResidualOptions().use_shapes, "fit the measured mode shapes");
+DEFINE_bool(damping, ringid::ResidualOptions().use_damping, "fit the measured damping ratios");
 DEFINE_string(shape_convention, ringid::ToString(ringid::ResidualOptions().shape_convention),
-              "identify: how measured real shapes were made: contract or paper (Tables 4-5)");
+              "how the measured real shapes were made: as the contract says, or as the paper's Tables 4-5");
 DEFINE_string(derivatives, ringid::ToString(ringid::ResidualOptions().derivatives),
-              "identify, identifiability, compare, diagnose, bench: Jacobians by numeric (central differences) or analytic (eigenvalue and eigenvector derivatives)");
-DEFINE_string(truth, "", "simulate: write the truth (effect and all values) here");
-DEFINE_string(set, "", "simulate, predict, export: NAME=VALUE,... parameter values to set (effect parameters among them)");
+              "Jacobians by central differences (numeric) or from eigenvalue and eigenvector derivatives (analytic)");
+DEFINE_string(truth, "", "write the truth (effects and every value) here");
+DEFINE_string(set, "", "NAME=VALUE,...: parameter values to set over the file's, each in its parameter's domain; an effect's size among them");
 DEFINE_double(frequency_noise, ringid::SimulateOptions().frequency_noise,
-              "simulate: relative frequency noise (sd)");
+              "relative frequency noise (sd)");
 DEFINE_double(damping_noise, ringid::SimulateOptions().damping_noise,
-              "simulate: relative damping-ratio noise (sd)");
+              "relative damping-ratio noise (sd)");
 DEFINE_double(shape_noise, ringid::SimulateOptions().shape_noise,
-              "simulate: shape component noise (sd, shapes scaled to 1)");
-DEFINE_double(shift, 0, "simulate: size the one effect to shift some frequency by this fraction (e.g. 0.04)");
-DEFINE_double(prior_spread, 0.1, "simulate: log-normal spread of the initial values around the truth");
-DEFINE_string(speeds, "0", "simulate: V1,V2,... speeds in m/s (>= 0), one condition each (0: standing, else drum_V)");
-DEFINE_string(loads, "", "simulate: F1,F2,... loads F_cz0 in N (> 0); conditions are then speeds x loads");
-DEFINE_string(suite, "", "bench: paper, synthetic, conditioning or diagnosis");
-DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "bench: Monte Carlo replicates per tire (synthetic)");
-DEFINE_string(markdown, "", "bench: also write the Markdown table here");
-DEFINE_string(output_dir, "", "identify, diagnose: a campaign; one report per dataset and campaign.json here");
-DEFINE_int32(jobs, 1, "identify, diagnose: datasets analysed at once (threads)");
-DEFINE_string(shard, "0/1", "identify, diagnose: I/N, analyse every N-th dataset from the I-th (0-based)");
-DEFINE_string(input, "", "report: a JSON report of ringid");
-DEFINE_string(figures_dir, "", "report: also write each figure as DIR/NAME.svg");
-DEFINE_string(bounds, "", "identify, identifiability, compare, diagnose: NAME:LO:HI,... bounds in the parameter's units, in place of a factor 1000 around the start");
-DEFINE_string(fix, "", "identify, identifiability, compare, diagnose: NAME,... parameters held at their initial values");
-DEFINE_string(effects, "", "comma-separated effects of docs/conventions.md §4 to add to the model");
-DEFINE_string(format, "", "export: tir (the rigid-ring part of an MF-Swift .tir, docs/tir.md) or json (ringid-parameters/1)");
+              "shape component noise (sd, shapes scaled to 1)");
+DEFINE_double(shift, 0, "size the one effect of --effects to shift some frequency by this fraction (e.g. 0.04)");
+DEFINE_double(prior_spread, 0.1, "log-normal spread of the dataset's initial values around the truth");
+DEFINE_string(speeds, "0", "V1,V2,...: speeds in m/s (>= 0), one condition each (0: standing, else drum_V)");
+DEFINE_string(loads, "", "F1,F2,...: loads F_cz0 in N (> 0); the conditions are then speeds x loads");
+DEFINE_string(suite, "", "the validation suite to run");
+DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling)");
+DEFINE_string(markdown, "", "also write the Markdown table here");
+DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");
+DEFINE_int32(jobs, 1, "campaign: datasets analysed at once (threads)");
+DEFINE_string(shard, "0/1", "campaign: I/N, analyse every N-th dataset from the I-th (0-based)");
+DEFINE_string(input, "", "a JSON report of ringid");
+DEFINE_string(figures_dir, "", "also write each figure as DIR/NAME.svg (the directory made if missing)");
+DEFINE_string(bounds, "", "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around the start");
+DEFINE_string(fix, "", "NAME,...: parameters held at their initial values");
+DEFINE_string(effects, "", "EFFECT,...: effects of docs/conventions.md §4 to add to the model (diagnose: to its baseline; the others are tried on top)");
+DEFINE_string(format, "", "what to write: the rigid-ring part of an MF-Swift .tir (docs/tir.md) or a parameter set (ringid-parameters/1 JSON)");
 
 namespace ringid {
 
@@ -92,40 +102,6 @@ int Usage(const std::string& line) {
   return kExitUsage;
 }
 
-// Sets the flags of argv[2..] one by one, so that a bad flag is a one-line
-// error with exit status 2 rather than gflags' own exit.
-bool SetFlags(int argc, char** argv, const std::set<std::string>& allowed,
-              std::string* error) {
-  for (int i = 2; i < argc; ++i) {
-    std::string arg = argv[i];
-    if (arg.rfind("--", 0) != 0) {
-      *error = "unexpected argument '" + arg + "'";
-      return false;
-    }
-    arg = arg.substr(2);
-    const size_t eq = arg.find('=');
-    const std::string name = arg.substr(0, eq);
-    std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
-    gflags::CommandLineFlagInfo info;
-    if (!allowed.count(name) || !gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
-      *error = "--" + name + ": unknown flag for '" + argv[1] + "'";
-      return false;
-    }
-    if (eq == std::string::npos) {
-      if (info.type != "bool") {
-        *error = "--" + name + ": needs a value (--" + name + "=...)";
-        return false;
-      }
-      value = "true";
-    }
-    if (gflags::SetCommandLineOption(name.c_str(), value.c_str()).empty()) {
-      *error = "--" + name + ": bad value '" + value + "'";
-      return false;
-    }
-  }
-  return true;
-}
-
 bool ParseEffects(std::vector<const Effect*>* effects, std::string* error) {
   std::stringstream list(FLAGS_effects);
   std::string name;
@@ -133,7 +109,7 @@ bool ParseEffects(std::vector<const Effect*>* effects, std::string* error) {
     if (name.empty()) continue;
     const Effect* e = FindEffect(name);
     if (!e) {
-      *error = "--effects: unknown effect '" + name + "'";
+      *error = "--effects: " + UnknownName("effect", name, FlagValues("effects"));
       return false;
     }
     effects->push_back(e);
@@ -149,47 +125,90 @@ int Write(const std::string& path, const std::string& text) {
   return kExitOk;
 }
 
-// This process's provenance, with the inputs its flags named.
-// A campaign names each report's own dataset file.
-Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
-                   const std::string& dataset = FLAGS_dataset) {
-  return MakeProvenance(argc, argv,
-                        {{"dataset", dataset}, {"parameters", FLAGS_parameters},
-                         {"input", FLAGS_input}},
-                        seed);
+// The input files the flags name, as (flag, path): each goes into the
+// provenance, and no output may overwrite one. A campaign names each report's
+// own dataset file.
+std::vector<std::pair<std::string, std::string>> Inputs(const std::string& dataset = FLAGS_dataset) {
+  return {{"dataset", dataset}, {"parameters", FLAGS_parameters}, {"input", FLAGS_input}};
 }
 
-// --set=NAME=VALUE,...: each a catalogue parameter, its value finite and in
-// its domain (docs/conventions.md §1), applied in order over `p`.
-bool ApplySet(const std::string& list, Parameters* p, std::string* error) {
-  std::stringstream items(list);
-  for (std::string item; std::getline(items, item, ',');) {
+// This process's provenance, with the inputs its flags named.
+Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
+                   const std::string& dataset = FLAGS_dataset) {
+  Provenance p = MakeProvenance(argc, argv, Inputs(dataset), seed);
+  // Checked by every command that fits before it runs.
+  p.derivatives = FromString<Derivatives>(FLAGS_derivatives).value_or(Derivatives::kNumeric);
+  return p;
+}
+
+// A number that is the whole of `text`.
+bool ParseNumber(const std::string& text, double* v) {
+  char* end = nullptr;
+  *v = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && std::isfinite(*v);
+}
+
+// --set=NAME=VALUE,...: each a parameter of the catalogue (the nearest named
+// when it is not one) and a finite number in the parameter's domain
+// (docs/conventions.md §1), the last of a name given twice winning. The one
+// reading of --set for simulate, predict and export.
+bool ParseSet(std::map<Param, double>* set, std::string* error) {
+  std::stringstream list(FLAGS_set);
+  for (std::string item; std::getline(list, item, ',');) {
     if (item.empty()) continue;
     const size_t eq = item.find('=');
-    const auto q = ParseParam(item.substr(0, eq));
-    char* end = nullptr;
-    const double v = eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
-    if (!q || eq == std::string::npos || !end || *end != '\0' || !std::isfinite(v)) {
+    if (eq == std::string::npos) {
       *error = "--set: bad item '" + item + "' (NAME=VALUE)";
       return false;
     }
-    const Domain d = Info(*q).domain;
-    if ((d == Domain::kPositive && !(v > 0)) || (d == Domain::kNonNegative && v < 0)) {
-      *error = "--set: " + item.substr(0, eq) + " must be " +
-               (d == Domain::kPositive ? "positive" : "not negative");
+    const std::string name = item.substr(0, eq);
+    const std::optional<Param> p = ParseParam(name);
+    if (!p) {
+      *error = "--set: " + UnknownName("parameter", name, NamesOf<Param>());
       return false;
     }
-    (*p)[*q] = v;
+    const std::string text = item.substr(eq + 1);
+    double v = 0;
+    if (!ParseNumber(text, &v)) {
+      *error = "--set: " + name + ": bad value '" + text + "' (a finite number)";
+      return false;
+    }
+    const Domain d = Info(*p).domain;
+    if ((d == Domain::kPositive && !(v > 0)) || (d == Domain::kNonNegative && v < 0)) {
+      *error = "--set: " + name + ": bad value '" + text + "' (" +
+               (d == Domain::kPositive ? "a positive number" : "a number not negative") + ")";
+      return false;
+    }
+    (*set)[*p] = v;
   }
   return true;
 }
 
-// The one line for the parameters the model needs and `source` (a parameter
-// set or a .tir) does not give; the first named with where it could come from.
+// The effect of the catalogue that `p` belongs to, or null for a parameter
+// of the baseline.
+const Effect* EffectOf(Param p) {
+  for (const Effect* e : EffectCatalogue()) {
+    const std::vector<Param> own = e->parameters();
+    if (std::find(own.begin(), own.end(), p) != own.end()) return e;
+  }
+  return nullptr;
+}
+
+// The one line for the parameters the model needs and neither `source` (a
+// parameter set, a dataset or a .tir) nor --set gives, `missing` in the
+// model's order: the first named with where it could come from. An effect's
+// parameter comes from --set (the file of a tire need not know the effect); a
+// .tir's, from the key that would give it or, when a .tir cannot hold it,
+// from --set, and the others missing are named too.
 std::string MissingParameters(const std::string& source, const std::vector<Param>& missing) {
-  const std::string name = ParamName(missing[0]);
+  const Param q = missing[0];
+  const std::string name = ParamName(q);
+  if (const Effect* e = EffectOf(q)) {
+    return "--effects: " + std::string(e->name()) + " needs " + name + ": give --set=" + name +
+           "=VALUE";
+  }
   if (!IsTirPath(source)) return source + ": parameters." + name + ": missing (the model needs it)";
-  const std::string key = TirKeyFor(missing[0]);
+  const std::string key = TirKeyFor(q);
   std::string line = source + ": " + name + ": missing (the model needs it; " +
                      (key.empty() ? std::string("a .tir cannot hold it") : "the .tir has no " + key) +
                      "): give --set=" + name + "=VALUE";
@@ -199,33 +218,38 @@ std::string MissingParameters(const std::string& source, const std::vector<Param
   return line;
 }
 
+// The parameters of `model` that `p` does not set, in the model's order.
+std::vector<Param> Missing(const RigidRingModel& model, const Parameters& p) {
+  std::vector<Param> missing;
+  for (Param q : model.parameters()) {
+    if (!p.IsSet(q)) missing.push_back(q);
+  }
+  return missing;
+}
+
 int Predict(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"parameters", "dataset", "effects", "output", "set"}, &error)) {
-    return Usage(error);
-  }
   std::vector<const Effect*> effects;
   if (!ParseEffects(&effects, &error)) return Usage(error);
   if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
     return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
   }
-  if (!FLAGS_output.empty() && !CanWrite(FLAGS_output, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error)) return Usage(error);
   Parameters p;
   LoadError load;
-  if (!FLAGS_parameters.empty()) {
+  if (!FLAGS_parameters.empty()) {  // a .tir by its extension
     if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
   } else {
     Dataset d;
     if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
     p = InitialParameters(d);
   }
-  if (!ApplySet(FLAGS_set, &p, &error)) return Usage(error);
+  for (const auto& [q, v] : set) p[q] = v;
   const RigidRingModel model(effects);
   const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
-  std::vector<Param> missing;
-  for (Param q : model.parameters()) {
-    if (!p.IsSet(q)) missing.push_back(q);
-  }
+  const std::vector<Param> missing = Missing(model, p);
   if (!missing.empty()) return Usage(MissingParameters(source, missing));
   const ModalSolution s = model.Solve(p);
   if (!s.ok) {
@@ -249,18 +273,6 @@ int Predict(int argc, char** argv) {
   return s.ok ? kExitOk : kExitFailure;
 }
 
-const std::set<std::string> kFitFlags = {
-    "dataset", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "derivatives", "effects", "output", "bounds",
-    "fix"};
-
-// A number that is the whole of `text`.
-bool ParseNumber(const std::string& text, double* v) {
-  char* end = nullptr;
-  *v = std::strtod(text.c_str(), &end);
-  return !text.empty() && end == text.c_str() + text.size() && std::isfinite(*v);
-}
-
 // --bounds=NAME:LO:HI,...
 bool ParseBounds(Bounds* bounds, std::string* error) {
   std::stringstream list(FLAGS_bounds);
@@ -277,7 +289,7 @@ bool ParseBounds(Bounds* bounds, std::string* error) {
     }
     const std::optional<Param> p = ParseParam(part[0]);
     if (!p) {
-      *error = "--bounds: unknown parameter '" + part[0] + "'";
+      *error = "--bounds: " + UnknownName("parameter", part[0], NamesOf<Param>());
       return false;
     }
     (*bounds)[*p] = b;
@@ -293,7 +305,7 @@ bool ApplyFix(Dataset* d, std::string* error) {
     if (name.empty()) continue;
     const std::optional<Param> p = ParseParam(name);
     if (!p) {
-      *error = "--fix: unknown parameter '" + name + "'";
+      *error = "--fix: " + UnknownName("parameter", name, NamesOf<Param>());
       return false;
     }
     fixed.push_back(*p);
@@ -304,14 +316,13 @@ bool ApplyFix(Dataset* d, std::string* error) {
   }
   return true;
 }
-const std::set<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
 // --NAME=VALUE of an enum flag; the valid names on error.
 template <class E>
 bool ParseFlag(const char* name, const std::string& value, E* e, std::string* error) {
   const std::optional<E> parsed = FromString<E>(value);
   if (parsed) *e = *parsed;
-  else *error = std::string("--") + name + ": must be " + EnumChoices<E>();
+  else *error = std::string("--") + name + ": " + UnknownName("value", value, NamesOf<E>());
   return parsed.has_value();
 }
 
@@ -342,8 +353,9 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
 bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
                    Dataset* d, std::string* error) {
   if (!ReadFitOptions(o, effects, error)) return false;
-  for (const std::string& out : {FLAGS_output, FLAGS_save_parameters}) {
-    if (!out.empty() && !CanWrite(out, error)) return false;
+  if (!CheckOutputs({{"output", FLAGS_output}, {"save_parameters", FLAGS_save_parameters}},
+                    Inputs(), error)) {
+    return false;
   }
   LoadError load;
   if (!LoadDataset(FLAGS_dataset, d, &load)) { *error = load.OneLine(); return false; }
@@ -356,6 +368,28 @@ struct CampaignItem {
   CampaignRow row;
 };
 using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
+
+// What an interrupted campaign kept: the reports finished whole (each is
+// written as its dataset finishes), and whether the summary was written.
+std::string CampaignKept(const std::vector<std::string>& written,
+                         const std::vector<std::string>& reports, const std::string& summary) {
+  std::string names;
+  int finished = 0;
+  bool summarised = false;
+  for (const std::string& w : written) {
+    if (w == summary) {
+      summarised = true;
+    } else if (std::find(reports.begin(), reports.end(), w) != reports.end()) {
+      names += (finished++ ? ", " : "") + std::filesystem::path(w).filename().string();
+    }
+  }
+  const std::string dir = std::filesystem::path(summary).parent_path().string();
+  const std::string of = " of " + std::to_string(reports.size()) + " report(s)";
+  if (finished == 0) return "none" + of + " finished; nothing written in " + dir;
+  return "kept the " + std::to_string(finished) + of + " finished whole, in " + dir + ": " +
+         names + "; " + std::filesystem::path(summary).filename().string() +
+         (summarised ? " written" : " not written");
+}
 
 // --output_dir: every dataset of --dataset (this shard's share), --jobs at
 // once. Every input is loaded and checked before anything runs, so a bad one
@@ -371,6 +405,14 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   std::vector<std::string> files, reports;
   if (!ListDatasets(FLAGS_dataset, shard, &files, &error)) return Usage(error);
   if (!ReportNames(files, FLAGS_output_dir, &reports, &error)) return Usage(error);
+  for (size_t i = 0; i < reports.size(); ++i) {  // --output_dir=the datasets' own directory
+    for (const std::string& f : files) {
+      if (SameFile(reports[i], f)) {
+        return Usage("--output_dir: " + reports[i] + ", the report of " + files[i] +
+                     ", would overwrite the dataset " + f);
+      }
+    }
+  }
   const std::string summary_path =
       (std::filesystem::path(FLAGS_output_dir) /
        (shard.count == 1 ? std::string("campaign.json")
@@ -394,6 +436,9 @@ int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& mod
   }
   if (!CanWrite(summary_path, &error)) return Usage("--output_dir: " + error);
   const int n = static_cast<int>(files.size());
+  const KeptNote kept([&](const std::vector<std::string>& written) {
+    return CampaignKept(written, reports, summary_path);
+  });
   std::vector<CampaignItem> items(n);
   std::vector<std::string> write_errors(n);
   const auto t0 = std::chrono::steady_clock::now();
@@ -443,10 +488,6 @@ int Finish(int argc, char** argv, const Dataset& d, const Result& r) {
 
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
-  std::set<std::string> allowed = kFitFlags;
-  allowed.insert("save_parameters");
-  allowed.insert(kCampaignFlags.begin(), kCampaignFlags.end());
-  if (!SetFlags(argc, argv, allowed, &error)) return Usage(error);
   IdentifyOptions o;
   std::vector<const Effect*> effects;
   if (!FLAGS_output_dir.empty()) {
@@ -491,7 +532,6 @@ int IdentifyCommand(int argc, char** argv) {
 
 int IdentifiabilityCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
   IdentifiabilityOptions o;
   std::vector<const Effect*> effects;
   Dataset d;
@@ -504,7 +544,6 @@ int IdentifiabilityCommand(int argc, char** argv) {
 
 int CompareCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, kFitFlags, &error)) return Usage(error);
   CompareOptions o;
   std::vector<const Effect*> effects;
   Dataset d;
@@ -586,14 +625,54 @@ std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
   return conditions;
 }
 
+// simulate: every effect of --effects has a size (non-zero, from --set, the
+// parameter file or --shift), and every effect size in --set has its effect
+// in --effects. Either alone would simulate the baseline while the truth file
+// names an effect, or drop the size without a word. (An effect's other
+// parameters, m_a, may be set for any run: scripts/campaign_demo.sh sets it
+// for every case.)
+bool CheckEffectSizes(const std::vector<const Effect*>& effects,
+                      const std::map<Param, double>& set, const Parameters& file,
+                      std::string* error) {
+  for (const auto& [p, v] : set) {
+    const Effect* e = EffectOf(p);
+    if (e && e->size() == p && std::find(effects.begin(), effects.end(), e) == effects.end()) {
+      *error = std::string("--set: ") + ParamName(p) + " is the size of the effect " +
+               e->name() + ", which --effects does not list; add --effects=" + e->name();
+      return false;
+    }
+  }
+  if (FLAGS_shift != 0) {
+    if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) {
+      *error = "--shift: must be in (0, 0.5)";
+      return false;
+    }
+    if (effects.size() != 1) {
+      *error = "--shift: needs exactly one effect in --effects, whose size it sets";
+      return false;
+    }
+    if (set.count(effects[0]->size())) {
+      *error = std::string("--shift: sizes ") + ParamName(effects[0]->size()) +
+               ", which --set gives too; give one of them";
+      return false;
+    }
+    return true;
+  }
+  for (const Effect* e : effects) {
+    const Param size = e->size();
+    const auto it = set.find(size);
+    const double value = it != set.end() ? it->second : file[size];
+    if (value == 0 || !std::isfinite(value)) {
+      *error = std::string("--effects: ") + e->name() + " has no size: give --set=" +
+               ParamName(size) + "=VALUE (not 0) or --shift=FRACTION";
+      return false;
+    }
+  }
+  return true;
+}
+
 int SimulateCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"parameters", "effects", "set", "frequency_noise", "damping_noise",
-                             "shape_noise", "prior_spread", "seed", "output", "truth", "shift",
-                             "speeds", "loads"},
-                &error)) {
-    return Usage(error);
-  }
   std::vector<double> speeds, loads;
   if (!ParseNumberList("speeds", FLAGS_speeds, false, "m/s", &speeds, &error)) return Usage(error);
   if (!gflags::GetCommandLineFlagInfoOrDie("loads").is_default &&
@@ -605,26 +684,24 @@ int SimulateCommand(int argc, char** argv) {
   if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
     return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
   }
-  if (FLAGS_output == FLAGS_truth) return Usage("--truth: must differ from --output");
   for (double v : {FLAGS_frequency_noise, FLAGS_damping_noise, FLAGS_shape_noise, FLAGS_prior_spread}) {
     if (!(v >= 0) || !std::isfinite(v)) return Usage("noise levels and --prior_spread must be finite and not negative");
   }
-  for (const std::string& out : {FLAGS_output, FLAGS_truth}) {
-    if (!CanWrite(out, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, Inputs(), &error)) {
+    return Usage(error);
   }
   Parameters truth;
   LoadError load;
   if (!LoadParameterSet(FLAGS_parameters, &truth, &load)) return Usage(load.OneLine());
-  if (!ApplySet(FLAGS_set, &truth, &error)) return Usage(error);
-  if (FLAGS_shift != 0) {
-    if (!(FLAGS_shift > 0 && FLAGS_shift < 0.5)) return Usage("--shift: must be in (0, 0.5)");
-    if (effects.size() != 1) return Usage("--shift: needs exactly one effect in --effects");
-    truth[effects[0]->size()] = 0;  // set below
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error) || !CheckEffectSizes(effects, set, truth, &error)) {
+    return Usage(error);
   }
+  for (const auto& [p, v] : set) truth[p] = v;
+  if (FLAGS_shift != 0) truth[effects[0]->size()] = 0;  // set below
   const RigidRingModel model(effects);
-  for (Param q : model.parameters()) {
-    if (!truth.IsSet(q)) return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": missing (the model needs it)");
-  }
+  const std::vector<Param> missing = Missing(model, truth);
+  if (!missing.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
   if (FLAGS_shift != 0) {
     const Param p = effects[0]->size();
     truth[p] = ValueForShift(truth, *effects[0], p, FLAGS_shift);
@@ -683,9 +760,6 @@ int SimulateCommand(int argc, char** argv) {
 
 int DiagnoseCommand(int argc, char** argv) {
   std::string error;
-  std::set<std::string> allowed = kFitFlags;
-  allowed.insert(kCampaignFlags.begin(), kCampaignFlags.end());
-  if (!SetFlags(argc, argv, allowed, &error)) return Usage(error);
   DiagnoseOptions o;
   std::vector<const Effect*> effects;
   if (!FLAGS_output_dir.empty()) {
@@ -722,27 +796,25 @@ int DiagnoseCommand(int argc, char** argv) {
 
 int BenchCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"suite", "replicates", "seed", "output", "markdown", "derivatives"},
-                &error)) {
-    return Usage(error);
-  }
   if (FLAGS_replicates < 1) return Usage("--replicates: must be at least 1");
-  for (const std::string& out : {FLAGS_output, FLAGS_markdown}) {
-    if (!out.empty() && !CanWrite(out, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"markdown", FLAGS_markdown}}, {}, &error)) {
+    return Usage(error);
   }
   SuiteOptions o;
   if (!ParseFlag("derivatives", FLAGS_derivatives, &o.derivatives, &error)) return Usage(error);
   o.replicates = FLAGS_replicates;
   o.seed = static_cast<unsigned>(FLAGS_seed);
+  o.source_dir = DataDir();  // from any working directory
   Progress progress(FLAGS_suite + " suite");
   o.on_case = [&](int done, int total) { progress.Set(done, total); };
   const SuiteEntry* suite = nullptr;
   for (const SuiteEntry& s : Suites()) {
     if (FLAGS_suite == s.name) suite = &s;
   }
+  if (FLAGS_suite.empty()) return Usage("bench needs --suite=" + OneOf(FlagValues("suite")));
   if (!suite) {
-    return Usage("--suite: unknown suite '" + FLAGS_suite + "' (" + SuiteNames() +
-                 "; speed: build/benchmarks/ringid_benchmarks)");
+    return Usage("--suite: " + UnknownName("suite", FLAGS_suite, FlagValues("suite")) +
+                 "; speed: build/benchmarks/ringid_benchmarks");
   }
   const SuiteOutput r = suite->run(o, ThisRun(argc, argv, FLAGS_seed));
   if (r.status.invalid_input()) return Usage("--suite: " + r.status.message);
@@ -760,14 +832,14 @@ int BenchCommand(int argc, char** argv) {
 
 int ReportCommand(int argc, char** argv) {
   std::string error;
-  if (!SetFlags(argc, argv, {"input", "output", "figures_dir"}, &error)) return Usage(error);
   if (FLAGS_input.empty() || FLAGS_output.empty()) {
     return Usage("report needs --input=REPORT.json and --output=FILE.html");
   }
-  if (!CanWrite(FLAGS_output, &error)) return Usage(error);
-  std::error_code ec;
-  if (!FLAGS_figures_dir.empty() && !std::filesystem::is_directory(FLAGS_figures_dir, ec)) {
-    return Usage("--figures_dir: " + FLAGS_figures_dir + ": not a directory");
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  // Made only when the page is written, like --output_dir, so that a failed
+  // run leaves nothing behind.
+  if (!FLAGS_figures_dir.empty() && !CanMakeDirectory(FLAGS_figures_dir, &error)) {
+    return Usage("--figures_dir: " + error);
   }
   Json report;
   if (!LoadReport(FLAGS_input, &report, &error)) return Usage(error);
@@ -783,27 +855,39 @@ int ReportCommand(int argc, char** argv) {
     files.emplace_back((std::filesystem::path(FLAGS_figures_dir) / (f.name + ".svg")).string(), f.svg);
   }
   files.emplace_back(FLAGS_output, html);
-  if (!WriteFilesAtomically(files, &error)) return Usage(error);
+  const auto hold = HoldInterruption();  // the figures' directory and the files, or none
+  std::vector<std::string> made;
+  if (!FLAGS_figures_dir.empty() && !MakeDirectory(FLAGS_figures_dir, &made, &error)) {
+    return Usage("--figures_dir: " + error);
+  }
+  if (!WriteFilesAtomically(files, &error)) {
+    RemoveMade(made);  // all or none: the directory too
+    return Usage(error);
+  }
   std::printf("wrote %s (%zu figure(s))\n", FLAGS_output.c_str(), figures.size());
   return kExitOk;
 }
 
-// export: a parameter set (ringid-parameters/1 or a .tir), with --set, as the
-// rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 (docs/tir.md).
-int ExportCommand(int argc, char** argv) {
+// export: a parameter set (ringid-parameters/1 or a .tir), with --set over
+// it, as the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1
+// (docs/tir.md); to --output, else to standard output.
+int ExportCommand(int, char**) {
   std::string error;
-  if (!SetFlags(argc, argv, {"parameters", "set", "format", "output"}, &error)) return Usage(error);
   if (FLAGS_parameters.empty()) {
     return Usage("export needs --parameters=FILE (ringid-parameters/1 or .tir)");
   }
-  if (FLAGS_format != "tir" && FLAGS_format != "json") {
-    return Usage("--format: must be tir or json");
+  const std::vector<std::string> formats = FlagValues("format");
+  if (FLAGS_format.empty()) return Usage("export needs --format=" + OneOf(formats));
+  if (std::find(formats.begin(), formats.end(), FLAGS_format) == formats.end()) {
+    return Usage("--format: " + UnknownName("format", FLAGS_format, formats));
   }
-  if (!FLAGS_output.empty() && !CanWrite(FLAGS_output, &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error)) return Usage(error);
   Parameters p;
   LoadError load;
   if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
-  if (!ApplySet(FLAGS_set, &p, &error)) return Usage(error);
+  for (const auto& [q, v] : set) p[q] = v;
   const std::string source =
       FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();
@@ -822,32 +906,129 @@ int ExportCommand(int argc, char** argv) {
   return rc;
 }
 
+// The flags every fitting command takes, and a campaign's.
+const std::vector<std::string> kFitFlags = {
+    "dataset", "output", "method", "starts", "seed", "weighting", "relative_sigma",
+    "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix"};
+const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
+
+std::vector<std::string> Joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+int SchemaCommand(int, char**) {
+  std::fputs(ReportsMarkdown().c_str(), stdout);
+  return kExitOk;
+}
+
+int ReferenceCommand(int, char**) {
+  std::fputs(ReferenceMarkdown().c_str(), stdout);
+  return kExitOk;
+}
+
+// Every command: what it needs, what it does, the flags it takes (the one list
+// SetFlags and --help read) and what runs it.
+const std::vector<Command>& Commands() {
+  static const std::vector<Command> commands = {
+      {"predict", "--parameters=FILE | --dataset=FILE",
+       "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
+       "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
+       {"parameters", "dataset", "set", "effects", "output"}, Predict},
+      {"identify", "--dataset=FILE",
+       "fit parameters to a dataset, with covariance and identifiability;\n"
+       "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"
+       "one report per dataset, a summary table and DIR/campaign.json\n"
+       "(campaign.I-of-N.json for a --shard)",
+       Joined(Joined(kFitFlags, {"save_parameters"}), kCampaignFlags), IdentifyCommand},
+      {"identifiability", "--dataset=FILE",
+       "what the data determine at the fitted point: rank, classes, Wald and\n"
+       "profile intervals, free combinations, collinear pairs, identifiable\n"
+       "subset, experiment advice",
+       kFitFlags, IdentifiabilityCommand},
+      {"compare", "--dataset=FILE",
+       "Levenberg-Marquardt and the Downhill Simplex from the same --starts:\n"
+       "success rate, final costs, evaluations, time per fit",
+       kFitFlags, CompareCommand},
+      {"simulate", "--parameters=FILE --output=DATASET --truth=FILE",
+       "a dataset measured from a parameter set, optionally with effects (each\n"
+       "sized by --set or --shift), and a separate truth file; one condition per\n"
+       "speed and load, and several give a format-2 dataset",
+       {"parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
+        "damping_noise", "shape_noise", "prior_spread", "seed", "speeds", "loads"},
+       SimulateCommand},
+      {"diagnose", "--dataset=FILE",
+       "the gap between the calibrated baseline and the data: where it lies,\n"
+       "which effect explains it, how far it shrinks; --effects puts effects in\n"
+       "the baseline and the others are tried on top; with --output_dir, a\n"
+       "campaign as for identify",
+       Joined(kFitFlags, kCampaignFlags), DiagnoseCommand},
+      {"bench", "--suite=NAME",
+       "the accuracy and conditioning suites, on the paper's data installed with\n"
+       "ringid, here in " + DataDir() + "/datasets/paper\n"
+       "(speed: build/benchmarks/ringid_benchmarks)",
+       {"suite", "replicates", "seed", "derivatives", "output", "markdown"}, BenchCommand},
+      {"report", "--input=REPORT.json --output=FILE.html",
+       "any JSON report of ringid as one self-contained HTML page: tables and\n"
+       "figures (SVG drawn by gnuplot, package gnuplot-nox)",
+       {"input", "output", "figures_dir"}, ReportCommand},
+      {"export", "--parameters=FILE --format=tir|json",
+       "a parameter set (ringid-parameters/1 or a .tir), with --set over it, as\n"
+       "the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 JSON;\n"
+       "what maps to what and what a .tir cannot hold: docs/tir.md",
+       {"parameters", "set", "format", "output"}, ExportCommand},
+      {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
+       SchemaCommand},
+      {"reference", "",
+       "parameters, degrees of freedom, labels and effects with their units, as\n"
+       "Markdown (docs/reference.md)",
+       {}, ReferenceCommand},
+  };
+  return commands;
+}
+
+std::string UnknownCommand(const std::string& name) {
+  std::vector<std::string> names = {"help"};
+  for (const Command& c : Commands()) names.push_back(c.name);
+  return UnknownName("command", name, names) + "; see 'ringid help'";
+}
+
+// `ringid help [COMMAND]`.
+int HelpCommand(int argc, char** argv) {
+  if (argc <= 2) {
+    std::fputs(Help(Commands()).c_str(), stdout);
+    return kExitOk;
+  }
+  if (argc > 3) return Usage("help takes at most one command (see 'ringid help')");
+  const Command* c = FindCommand(Commands(), argv[2]);
+  if (!c) return Usage(UnknownCommand(argv[2]));
+  std::fputs(CommandHelp(*c).c_str(), stdout);
+  return kExitOk;
+}
+
+// Runs argv[1] with the flags of argv[2..].
+int Run(int argc, char** argv) {
+  const std::string name = argc > 1 ? argv[1] : "help";
+  if (name == "help" || name == "--help" || name == "-h") return HelpCommand(argc, argv);
+  const Command* command = FindCommand(Commands(), name);
+  if (!command) return Usage(UnknownCommand(name));
+  if (WantsHelp(argc, argv)) {
+    std::fputs(CommandHelp(*command).c_str(), stdout);
+    return kExitOk;
+  }
+  std::string error;
+  if (!SetFlags(argc, argv, *command, Commands(), &error)) return Usage(error);
+  return command->run(argc, argv);
+}
+
 }  // namespace
 }  // namespace ringid
 
 int main(int argc, char** argv) {
+  ringid::ExitOnInterrupt();  // first: its thread must exist before any other
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = 3;  // Ceres reports failed evaluations at ERROR; the report says why
   google::InitGoogleLogging(argv[0]);
   gflags::SetUsageMessage("see 'ringid help'");
-  const std::string command = argc > 1 ? argv[1] : "help";
-  if (command == "help" || command == "--help" || command == "-h") {
-    std::fputs(ringid::Help().c_str(), stdout);
-    return 0;
-  }
-  if (command == "predict") return ringid::Predict(argc, argv);
-  if (command == "identify") return ringid::IdentifyCommand(argc, argv);
-  if (command == "identifiability") return ringid::IdentifiabilityCommand(argc, argv);
-  if (command == "compare") return ringid::CompareCommand(argc, argv);
-  if (command == "bench") return ringid::BenchCommand(argc, argv);
-  if (command == "simulate") return ringid::SimulateCommand(argc, argv);
-  if (command == "diagnose") return ringid::DiagnoseCommand(argc, argv);
-  if (command == "report") return ringid::ReportCommand(argc, argv);
-  if (command == "export") return ringid::ExportCommand(argc, argv);
-  if (command == "schema") {
-    if (argc > 2) return ringid::Usage("schema takes no flags");
-    std::fputs(ringid::ReportsMarkdown().c_str(), stdout);
-    return 0;
-  }
-  return ringid::Usage("unknown command '" + command + "' (see 'ringid help')");
+  return ringid::Run(argc, argv);
 }

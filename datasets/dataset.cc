@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/spelling.h"
+
 namespace ringid {
 namespace {
 
@@ -53,7 +55,7 @@ std::string String(const json& j, const std::string& field) {
 
 Param ParamCalled(const std::string& name, const std::string& field) {
   const auto p = ParseParam(name);
-  if (!p) Fail(field, "unknown parameter '" + name + "'");
+  if (!p) Fail(field, UnknownName("parameter", name, NamesOf<Param>()));
   return *p;
 }
 
@@ -72,6 +74,16 @@ std::map<Param, double> Values(const json& j, const std::string& field) {
   return out;
 }
 
+// The labels a dataset may name: every one but the hub's (docs/conventions.md
+// §1), in catalogue order.
+std::vector<std::string> MeasurableLabels() {
+  std::vector<std::string> names;
+  for (const std::string& name : NamesOf<ModeLabel>()) {
+    if (LabelPlane(*ParseLabel(name)) != Plane::kHub) names.push_back(name);
+  }
+  return names;
+}
+
 MeasuredMode Mode(const json& j, const std::string& field) {
   if (!j.is_object()) Fail(field, "must be an object");
   OnlyKeys(j, field,
@@ -81,8 +93,10 @@ MeasuredMode Mode(const json& j, const std::string& field) {
   if (!j.contains("label")) Fail(field + ".label", "missing");
   const std::string label = String(j["label"], field + ".label");
   const auto parsed = ParseLabel(label);
-  if (!parsed || LabelPlane(*parsed) == Plane::kHub) {
-    Fail(field + ".label", "unknown label '" + label + "'");
+  if (!parsed) Fail(field + ".label", UnknownName("label", label, MeasurableLabels()));
+  if (LabelPlane(*parsed) == Plane::kHub) {  // not a typo: nothing to suggest
+    Fail(field + ".label", "'" + label + "' is a mode of the hub, which a dataset does not "
+                          "list (expected " + OneOf(MeasurableLabels()) + ")");
   }
   m.label = *parsed;
   if (j.contains("plane")) {
@@ -120,7 +134,7 @@ MeasuredMode Mode(const json& j, const std::string& field) {
     for (auto it = s.begin(); it != s.end(); ++it) {
       const std::string f = field + ".shape." + it.key();
       const auto dof = ParseDof(it.key());
-      if (!dof) Fail(f, "unknown degree of freedom '" + it.key() + "'");
+      if (!dof) Fail(f, UnknownName("degree of freedom", it.key(), NamesOf<Dof>()));
       const double v = Number(it.value(), f);
       largest = std::max(largest, std::abs(v));
       m.shape.emplace_back(*dof, v);
@@ -391,8 +405,29 @@ void CheckFormat2(const json& j, Dataset* d) {
   }
 }
 
+const char kParameterSetFormat[] = "ringid-parameters/1";
+
+// A file of the other kind, named as what it is rather than by the first key
+// a dataset does not have ("parameters: unknown key"). A parameter set may
+// leave out its format (LoadParameterSet).
+void NotADataset(const json& j) {
+  const bool unmarked_set = !j.contains("format") && j.contains("parameters") &&
+                            !j.contains("modes") && !j.contains("conditions") &&
+                            !j.contains("report");
+  if ((j.contains("format") && j["format"] == kParameterSetFormat) || unmarked_set) {
+    Fail(unmarked_set ? "parameters" : "format",
+         std::string("this is a parameter set (") + kParameterSetFormat +
+             "), not a dataset; use --parameters");
+  }
+  if (!j.contains("format") && j.contains("report") && j["report"].is_string()) {
+    Fail("report", "this is a ringid " + j["report"].get<std::string>() +
+                       " report, not a dataset");
+  }
+}
+
 void Check(const json& j, Dataset* d) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
+  NotADataset(j);
   if (j.contains("format") && j["format"] == kFormat2) {
     CheckFormat2(j, d);
   } else {
@@ -499,8 +534,12 @@ bool ParseChecked(const std::string& text, LoadError* error,
 // "parameters" object is read, each entry a number or {"value": number}.
 void CheckParameterSet(const json& j, Parameters* p) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
-  if (j.contains("format") && j["format"] != "ringid-parameters/1") {
-    Fail("format", "must be \"ringid-parameters/1\"");
+  if (j.contains("format") && (j["format"] == kFormat1 || j["format"] == kFormat2)) {
+    Fail("format", "this is a modal dataset (" + j["format"].get<std::string>() +
+                       "), not a parameter set");
+  }
+  if (j.contains("format") && j["format"] != kParameterSetFormat) {
+    Fail("format", std::string("must be \"") + kParameterSetFormat + "\"");
   }
   if (!j.contains("parameters") || !j["parameters"].is_object()) {
     Fail("parameters", "missing or not an object");

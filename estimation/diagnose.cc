@@ -286,8 +286,8 @@ bool DiagnoseOptions::IsValid(std::string* why) const {
     *why = "detectable_likelihood_ratio must be finite and positive";
     return false;
   }
-  if (!(group_aic >= 0) || !(prior_factor > 1)) {
-    *why = "group_aic must not be negative and prior_factor must exceed 1";
+  if (!(prior_factor > 1)) {
+    *why = "prior_factor must exceed 1";
     return false;
   }
   return fit.IsValid(why);
@@ -382,10 +382,36 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   return f;
 }
 
-// The verdict from the ranking: the supported effect of least AIC, those
-// within o.group_aic of it, and in words why.
+// The group of the verdict `best`: every fitted effect whose chi-square
+// differs from best's by less than the chi-square significant at o's level on
+// max(|difference in parameters|, 1) degrees of freedom (a likelihood-ratio
+// threshold; exact for nested effects), each with its difference and
+// threshold recorded. Returns the others in words ("" when none).
+std::string Group(const EffectFit& best, const DiagnoseOptions& o, DiagnosisReport* r) {
+  std::ostringstream others;
+  char b[160];
+  for (EffectFit& f : r->ranking) {
+    if (!f.ok) continue;
+    const int dof = std::max(std::abs(f.extra_parameters - best.extra_parameters), 1);
+    f.chi2_above_verdict = f.chi2 - best.chi2;
+    f.group_threshold = ChiSquareCritical(o.effect_significance, dof);
+    if (!(std::abs(f.chi2_above_verdict) < f.group_threshold)) continue;
+    r->indistinguishable.push_back(f.effect);
+    if (f.effect == best.effect) continue;
+    std::snprintf(b, sizeof b, "%s%s (chi-square %+.3g against %.3g on %d dof)",
+                  others.tellp() ? ", " : "", f.effect->name(), f.chi2_above_verdict,
+                  f.group_threshold, dof);
+    others << b;
+  }
+  if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
+  return others.str();
+}
+
+// The verdict from the ranking: the supported effect of least AIC, its group
+// (Group), and in words why.
 void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vector<double>& before,
              const DiagnoseOptions& o, DiagnosisReport* r, std::ostringstream* why) {
+  r->level = o.effect_significance;
   const EffectFit* best = nullptr;
   for (const EffectFit& f : r->ranking) {
     if (f.supported && (!best || f.aic < best->aic)) best = &f;
@@ -408,19 +434,14 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
     return;
   }
   r->verdict = best->effect;
-  for (const EffectFit& f : r->ranking) {
-    if (f.supported && f.aic <= best->aic + o.group_aic) r->indistinguishable.push_back(f.effect);
-  }
-  if (r->indistinguishable.size() < 2) r->indistinguishable.clear();
+  const std::string others = Group(*best, o, r);
   *why << best->effect->name() << " removes " << static_cast<int>(std::round(100 * best->shrink))
        << " % of the gap (likelihood ratio " << best->lrt_statistic << " on "
        << best->extra_parameters << " parameter(s), p = " << best->lrt_p << ")";
-  if (!r->indistinguishable.empty()) {
-    *why << "; these data cannot tell it from";
-    for (const Effect* e : r->indistinguishable) {
-      if (e != best->effect) *why << " " << e->name();
-    }
-  }
+  *why << (others.empty() ? "; no other effect" : "; these data cannot tell it from " + others)
+       << (others.empty() ? " fits" : ": each fits")
+       << " within the chi-square significant at level " << o.effect_significance
+       << " of it (degrees of freedom: the difference in parameters, at least 1)";
   if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
   if (r->held_out_before && best->held_out_chi2 && *r->held_out_before > 0) {
     *why << "; on held-out modes (each predicted from a fit without it) the misfit falls "
@@ -530,15 +551,19 @@ std::string DiagnosisReport::FullReport() const {
     o << line;
   }
   for (const std::string& a : absorbed) o << "  absorbed: " << a << "\n";
-  o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2\n";
+  o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2  vs verdict (threshold)\n";
   for (const EffectFit& f : ranking) {
     if (!f.ok) {
       o << "  " << EffectName(f.effect) << ": not fitted: " << f.note << "\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %s%s\n", EffectName(f.effect), f.chi2,
-                  f.lrt_p, f.aic, 100 * f.shrink,
-                  f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-",
+    char versus[48] = "-";
+    if (std::isfinite(f.chi2_above_verdict)) {
+      std::snprintf(versus, sizeof versus, "%+.2f (%.2f)", f.chi2_above_verdict, f.group_threshold);
+    }
+    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %-13s  %-22s%s\n", EffectName(f.effect),
+                  f.chi2, f.lrt_p, f.aic, 100 * f.shrink,
+                  f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-", versus,
                   f.supported ? "  supported" : "");
     o << line;
   }

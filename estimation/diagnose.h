@@ -19,14 +19,17 @@ struct DiagnoseOptions {
   double gap_significance = 0.01;
   // An effect is supported when its likelihood-ratio p-value is below this
   // (six candidates: a Bonferroni-safe level) and it lowers the AIC, whether
-  // or not the omnibus gap test is significant.
+  // or not the omnibus gap test is significant. The verdict's group is
+  // decided at the same level, by a likelihood-ratio threshold: a fitted
+  // effect whose chi-square differs from the verdict's by less than the
+  // chi-square significant at this level, on as many degrees of freedom as
+  // their numbers of parameters differ (at least one), cannot be told apart
+  // from it on these data.
   double effect_significance = 1e-3;
   // An effect too small to name is stated with the smallest size whose
   // signature a re-calibration of the baseline cannot absorb: the size at
   // which the likelihood ratio against the re-calibrated baseline reaches this.
   double detectable_likelihood_ratio = 20.0;
-  // Supported effects within this AIC of the best cannot be told apart.
-  double group_aic = 2.0;
   // A fitted baseline parameter beyond this factor of its initial value
   // has absorbed part of the gap.
   double prior_factor = 2.0;
@@ -92,6 +95,12 @@ struct EffectFit {
   // Per effect parameter: the smallest |value| whose signature a
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).
   std::map<std::string, double> minimal_detectable;
+  // Against the verdict's effect (NaN where there is none): this fit's
+  // chi-square minus the verdict's, and the chi-square significant at the
+  // report's level on max(|difference in parameters|, 1) degrees of freedom.
+  // Below it in magnitude the two are one group.
+  double chi2_above_verdict = kNotAvailable;
+  double group_threshold = kNotAvailable;
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -113,6 +122,8 @@ struct EffectFit {
       g->Visit("bic", &bic);
       g->Visit("held_out_chi2", &held_out_chi2);
       g->Visit("mode_chi2", &mode_chi2);
+      g->Visit("chi2_above_verdict", &chi2_above_verdict);
+      g->Visit("group_threshold", &group_threshold);
     });
   }
 };
@@ -134,6 +145,9 @@ struct DiagnosisReport {
   std::vector<EffectFit> ranking;
   const Effect* verdict = nullptr;  // none
   std::vector<const Effect*> indistinguishable;
+  // The significance level of the effects' likelihood-ratio tests and of the
+  // group (each effect's group_threshold is the chi-square point at it).
+  double level = kNotAvailable;
   std::string explanation;
   std::vector<double> mode_shrink;  // per measured mode, for the verdict
   double seconds = 0;
@@ -158,6 +172,7 @@ struct DiagnosisReport {
     a->Group("verdict", [&](auto* g) {
       g->Visit("effect", &verdict);
       g->Visit("indistinguishable", &indistinguishable);
+      g->Visit("level", &level);
       g->Visit("explanation", &explanation);
     });
     a->Visit("seconds", &seconds);

@@ -239,6 +239,7 @@ bool IdentifiabilityOptions::IsValid(std::string* why) const {
   else if (!(profile_first_step > 0) || !(profile_growth >= 1)) *why = "profile steps must grow from a positive first step";
   else if (!(collinearity_threshold > 1)) *why = "collinearity_threshold must exceed 1";
   else if (!(near_null > 0 && near_null < 1)) *why = "near_null must lie in (0, 1)";
+  else if (!(same_direction > 0 && same_direction < 1)) *why = "same_direction must lie in (0, 1)";
   else if (!(advice_damping_sigma > 0 && advice_shape_sigma > 0 && advice_known_relative_sigma > 0)) *why = "advice sigmas must be positive";
   else if (!(advice_load_factor > 0) || !std::isfinite(advice_load_factor)) *why = "advice_load_factor must be positive";
   else if (std::any_of(advice_speeds_m_s.begin(), advice_speeds_m_s.end(),
@@ -292,10 +293,70 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
   return out;
 }
 
-// Structurally collinear pairs (Brun et al. 2001: index 1/sqrt(lambda_min)
-// of the normalised columns), named as the combination they leave free.
+// The sine of the angle between the unit direction of d and the span of the
+// orthonormal columns of `span` (1 for an empty span).
+double OutsideSpan(const Eigen::MatrixXd& span, const Eigen::VectorXd& d) {
+  const Eigen::VectorXd u = d.normalized();
+  return span.cols() ? (u - span * (span.transpose() * u)).norm() : 1.0;
+}
+
+// The combinations as listed, each once: the structural ones, then collinear
+// pairs, then the data's free and near-free directions. Two directions are
+// one combination when they differ by a structurally free direction (no data
+// can tell them apart) and a multiple: the sine of the angle between their
+// parts outside the structural span is below `same_direction`.
+class CombinationList {
+ public:
+  CombinationList(const Eigen::MatrixXd& structural, double same_direction)
+      : structural_(structural), same_(same_direction) {}
+
+  // Whether d lies in the span of the structurally free directions.
+  bool Structural(const Eigen::VectorXd& d) const {
+    return structural_.cols() > 0 && OutsideSpan(structural_, d) < same_;
+  }
+  // The combination listed as d, or null.
+  Combination* Along(const Eigen::VectorXd& d) {
+    if (Structural(d)) return nullptr;
+    const Eigen::VectorXd p = Seen(d);
+    for (size_t k = 0; k < seen_.size(); ++k) {
+      if (seen_[k].size() && OutsideSpan(seen_[k], p) < same_) return &combinations_[k];
+    }
+    return nullptr;
+  }
+  void Add(const Eigen::VectorXd& d, Combination c) {
+    seen_.push_back(Structural(d) ? Eigen::VectorXd() : Eigen::VectorXd(Seen(d).normalized()));
+    combinations_.push_back(std::move(c));
+  }
+  std::vector<Combination> Release() { return std::move(combinations_); }
+
+ private:
+  // The part of d outside the structural span, the part data can see.
+  Eigen::VectorXd Seen(const Eigen::VectorXd& d) const {
+    return structural_.cols() ? Eigen::VectorXd(d - structural_ * (structural_.transpose() * d)) : d;
+  }
+
+  const Eigen::MatrixXd& structural_;
+  const double same_;
+  std::vector<Eigen::VectorXd> seen_;  // unit; empty for a structural entry
+  std::vector<Combination> combinations_;
+};
+
+// The directions the model cannot see (estimation/structure.h), each with its
+// invariance.
+void StructuralDirections(const Uncertainty& u, const ParameterSetup& setup, CombinationList* list) {
+  for (size_t k = 0; k < u.structural_readable.size(); ++k) {
+    Combination c = Describe(setup, u.structural_readable[k], 0.0);
+    c.meaning = "structurally free: " + u.structural_invariances[k] + ", whatever the data";
+    list->Add(u.structural_readable[k], c);
+  }
+}
+
+// Collinear pairs (Brun et al. 2001: index 1/sqrt(lambda_min) of the
+// normalised columns), named as the combination they leave free. A pair
+// whose combination is structural is listed as that already, not again.
 void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
-                    const IdentifiabilityOptions& o, IdentifiabilityReport* r) {
+                    const IdentifiabilityOptions& o, CombinationList* list,
+                    IdentifiabilityReport* r) {
   const int n = setup.size();
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
@@ -305,10 +366,11 @@ void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
       const double lambda_min = 1 - std::abs(cos);
       const double index = lambda_min > 1e-16 ? 1 / std::sqrt(lambda_min) : kInf;
       if (!(index > o.collinearity_threshold)) continue;
-      r->collinear_pairs.push_back({{setup.name(i), setup.name(j)}, index});
       Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
       d[i] = 1 / ni;
       d[j] = -(cos > 0 ? 1 : -1) / nj;
+      if (list->Structural(d)) continue;
+      r->collinear_pairs.push_back({{setup.name(i), setup.name(j)}, index});
       Combination c = Describe(setup, d, (J * d).norm() / d.norm());
       const std::string a = setup.name(i), b = setup.name(j);
       const bool unit = c.terms.size() == 2 && std::abs(std::abs(c.terms[1].second) - 1) < 0.01;
@@ -319,24 +381,48 @@ void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
       } else {
         c.meaning = "only one combination of " + a + " and " + b + " is determined";
       }
-      r->combinations.push_back(c);
+      if (Combination* listed = list->Along(d)) {
+        listed->meaning += "; so is " + c.text + ", the same up to a structurally free direction";
+      } else {
+        list->Add(d, c);
+      }
     }
   }
 }
 
-// Null and near-null directions of the whole Jacobian.
-void NullDirections(const Eigen::MatrixXd& J, const Uncertainty& u, const ParameterSetup& setup,
-                    const IdentifiabilityOptions& o, std::vector<Combination>* combinations) {
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+// Null and near-null directions of the data Jacobian (structural directions
+// projected out), outside the structural span: the structural directions
+// enter the SVD as rows weighted like the largest singular value, which
+// moves them to the top and leaves every other singular value and vector as
+// it was (J S = 0). One along a listed collinear pair adds its singular value
+// and meaning to that entry instead of a second one.
+void FreeDirections(const Uncertainty& u, const ParameterSetup& setup,
+                    const IdentifiabilityOptions& o, CombinationList* list) {
+  const Eigen::MatrixXd& J = u.jacobian;
+  const Eigen::MatrixXd& S = u.structural_directions;
+  const int n = setup.size(), structural = static_cast<int>(S.cols());
   const double smax = u.singular_values.size() ? u.singular_values[0] : 0;
-  for (int k = 0; k < setup.size(); ++k) {
-    const double s = k < u.singular_values.size() ? u.singular_values[k] : 0.0;
-    const bool null = k >= u.rank;
+  Eigen::MatrixXd A(J.rows() + structural, n);
+  A << J, (smax > 0 ? smax : 1.0) * S.transpose();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+  const int free = std::max(0, n - u.rank - structural);
+  for (int k = 0; k < n; ++k) {
+    const double s = k < svd.singularValues().size() ? svd.singularValues()[k] : 0.0;
+    const bool null = k >= n - free;
     if (!null && !(s < o.near_null * smax)) continue;
-    Combination c = Describe(setup, svd.matrixV().col(k), null ? 0.0 : s);
-    c.meaning = null ? "free: the data do not change along it"
-                     : "nearly free: singular value " + std::to_string(s / smax) + " of the largest";
-    combinations->push_back(c);
+    const Eigen::VectorXd d = svd.matrixV().col(k);
+    if (list->Structural(d)) continue;  // not expected: a guard
+    const std::string meaning =
+        null ? "free: the data do not change along it"
+             : "nearly free: singular value " + std::to_string(s / smax) + " of the largest";
+    if (Combination* listed = list->Along(d)) {
+      listed->meaning += "; " + meaning;
+      listed->singular_value = null ? 0.0 : s;
+      continue;
+    }
+    Combination c = Describe(setup, d, null ? 0.0 : s);
+    c.meaning = meaning;
+    list->Add(d, c);
   }
 }
 
@@ -355,18 +441,29 @@ Eigen::MatrixXd Correlation(const Uncertainty& u) {
 }
 
 // Largest identifiable subset: rank-revealing QR with column pivoting on the
-// column-normalised Jacobian.
-std::vector<std::string> IdentifiableSubset(const Eigen::MatrixXd& J, const ParameterSetup& setup,
+// column-normalised Jacobian, over the coordinates with no component in a
+// free direction, structural or of the data's null space (those not classed
+// no: one decision, in AnalyzeUncertainty). A coordinate with such a
+// component is not determined while the others are free, whatever the
+// pivoting would make of its column (a structural pair's projected column,
+// or noise normalised to length 1).
+std::vector<std::string> IdentifiableSubset(const Uncertainty& u, const ParameterSetup& setup,
                                             double rank_tolerance) {
-  Eigen::MatrixXd Jn = J;
-  for (int i = 0; i < Jn.cols(); ++i) {
-    if (Jn.col(i).norm() > 0) Jn.col(i) /= Jn.col(i).norm();
+  std::vector<int> candidates;
+  for (int i = 0; i < setup.size(); ++i) {
+    if (u.classes[i] != Identifiability::kNo) candidates.push_back(i);
+  }
+  std::vector<std::string> subset;
+  if (candidates.empty()) return subset;
+  Eigen::MatrixXd Jn(u.jacobian.rows(), candidates.size());
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    Jn.col(k) = u.jacobian.col(candidates[k]);
+    if (Jn.col(k).norm() > 0) Jn.col(k) /= Jn.col(k).norm();
   }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Jn);
   qr.setThreshold(rank_tolerance);
-  std::vector<std::string> subset;
   for (int k = 0; k < qr.rank(); ++k) {
-    subset.push_back(setup.name(qr.colsPermutation().indices()[k]));
+    subset.push_back(setup.name(candidates[qr.colsPermutation().indices()[k]]));
   }
   return subset;
 }
@@ -587,10 +684,13 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   r->coordinate_names = r->fit.coordinate_names;
   r->rank_explanation = RankExplanation(u, setup.size());
   r->parameters = Classify(*problem, xhat, r->fit.cost, u, o);
-  CollinearPairs(J, setup, o, r);
-  NullDirections(J, u, setup, o, &r->combinations);
+  CombinationList combinations(u.structural_directions, o.same_direction);
+  StructuralDirections(u, setup, &combinations);
+  CollinearPairs(J, setup, o, &combinations, r);
+  FreeDirections(u, setup, o, &combinations);
+  r->combinations = combinations.Release();
   r->correlation = Correlation(u);
-  r->identifiable_subset = IdentifiableSubset(J, setup, o.fit.uncertainty.rank_tolerance);
+  r->identifiable_subset = IdentifiableSubset(u, setup, o.fit.uncertainty.rank_tolerance);
   r->advice = ExperimentAdvice(*problem, xhat, u, o);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -632,8 +732,10 @@ std::string IdentifiabilityReport::FullReport() const {
   for (const Combination& c : combinations) {
     o << "    " << c.text << "  (" << c.meaning << ")\n";
   }
-  o << "\n  largest identifiable subset (pivoted QR):";
+  o << "\n  largest identifiable subset (pivoted QR over the parameters with no component in a free "
+       "direction):";
   for (const std::string& s : identifiable_subset) o << " " << s;
+  if (identifiable_subset.empty()) o << " none";
   o << "\n";
   if (!advice.empty()) {
     o << "\n  what would help (information gain on the parameter, nats):\n";

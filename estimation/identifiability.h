@@ -33,6 +33,11 @@ struct IdentifiabilityOptions {
   // Directions with singular value below this fraction of the largest are
   // reported as near-null combinations (the null ones always are).
   double near_null = 1e-3;
+  // Each combination is listed once: a direction in the span of the
+  // structurally free directions, or differing from a listed one by such a
+  // direction and a multiple, is not listed again. Within this: the sine of
+  // the angle to that span, or between the parts outside it.
+  double same_direction = 1e-3;
   // Sigmas of the candidate observations the advice ranks.
   double advice_damping_sigma = 0.02;
   double advice_shape_sigma = 0.05;

@@ -1,5 +1,6 @@
 #include "estimation/residuals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -88,6 +89,14 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
     }
   }
   row_begin_.push_back(static_cast<int>(slots_.size()));
+  // The parameters a coordinate moves: the free ones and those tied to them.
+  for (int i = 0; i < kNumParams; ++i) {
+    const auto tie = setup.ties().find(ParamAt(i));
+    const Param moved = tie == setup.ties().end() ? ParamAt(i) : tie->second;
+    if (std::find(setup.free().begin(), setup.free().end(), moved) != setup.free().end()) {
+      derived_.push_back(i);
+    }
+  }
   for (int i = 0; i < setup.num_shared(); ++i) {
     const Param p = setup.free()[i];
     const auto given = dataset.priors.find(p);
@@ -202,7 +211,7 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
       case Slot::kFrequency: {
         const double sigma = FrequencySigma(m);
         r[row] = (mode.frequency_hz - m.frequency_hz) / sigma;
-        for (int p = 0; derive && p < kNumParams; ++p) {
+        for (int p : derive ? derived_ : std::vector<int>{}) {
           dr(row, p) = mode.derivatives->Frequency(p) / sigma;
         }
         ++k;
@@ -211,7 +220,7 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
       case Slot::kDamping: {
         const double sigma = m.damping_sigma.value_or(options_.default_damping_sigma);
         r[row] = (mode.damping_ratio - *m.damping_ratio) / sigma;
-        for (int p = 0; derive && p < kNumParams; ++p) {
+        for (int p : derive ? derived_ : std::vector<int>{}) {
           dr(row, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
         }
         ++k;
@@ -239,7 +248,7 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
         const bool paper = options_.shape_convention == ShapeConvention::kPaper;
         const double alpha = paper ? (um >= 0 ? 1.0 : -1.0) / largest : (uu > 0 ? um / uu : 0);
         const double sigma = m.shape_sigma.value_or(options_.default_shape_sigma);
-        for (int p = 0; derive && p < kNumParams; ++p) {
+        for (int p : derive ? derived_ : std::vector<int>{}) {
           const RealShapeVector du = ComparableShapeDerivative(mode, options_.shape_convention, p);
           double duu = 0, dum = 0;
           for (const auto& [dof, v] : m.shape) {
@@ -284,7 +293,7 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
   const ModalSolution solution =
       model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s, true);
   const int rows = row_begin_[c + 1] - row_begin_[c];
-  RowMatrix dr(rows, kNumParams);
+  RowMatrix dr = RowMatrix::Zero(rows, kNumParams);
   if (!solution.derivatives_undefined.empty()) {
     RowMatrix none;
     return Rows(c, solution, r, none);

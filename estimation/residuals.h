@@ -164,6 +164,7 @@ class ModalResiduals {
   std::vector<Slot> slots_;
   std::vector<PriorTerm> priors_;
   std::vector<int> row_begin_;  // per condition, then the first prior row
+  std::vector<int> derived_;    // catalogue parameters some coordinate moves
   int num_residuals_ = 0;
   mutable std::atomic<long> evaluations_{0};
 };

@@ -13,4 +13,10 @@ double ChiSquareTail(double x, double dof) {
   return boost::math::cdf(boost::math::complement(d, x));
 }
 
+double ChiSquareCritical(double alpha, double dof) {
+  if (!(dof > 0) || !(alpha > 0 && alpha < 1)) return std::nan("");
+  boost::math::chi_squared_distribution<double> d(dof);
+  return boost::math::quantile(boost::math::complement(d, alpha));
+}
+
 }  // namespace ringid

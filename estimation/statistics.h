@@ -15,6 +15,11 @@ inline constexpr double kChiSquare1Dof95 = 3.841458820694124;
 // P(chi-square(dof) >= x); NaN without a degree of freedom.
 double ChiSquareTail(double x, double dof);
 
+// The chi-square that would be significant at level alpha: the x with
+// ChiSquareTail(x, dof) = alpha; NaN without a degree of freedom or for
+// alpha outside (0, 1). ChiSquareCritical(0.05, 1) is kChiSquare1Dof95.
+double ChiSquareCritical(double alpha, double dof);
+
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_STATISTICS_H_

@@ -150,15 +150,21 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
                     std::vector<Mode>* modes, std::string* why) {
   const int n = static_cast<int>(lambda.size());
   const int k = static_cast<int>(dofs.size());
-  std::vector<int> used;  // parameters A depends on
+  // dA is sparse: each parameter moves a few entries of A.
+  struct Entry {
+    int row, col;
+    double value;
+  };
+  std::vector<std::pair<int, std::vector<Entry>>> partials;  // (parameter, its entries)
   for (int p = 0; p < kNumParams; ++p) {
-    bool any = false;
-    for (int i = 0; i < n && !any; ++i) {
-      for (int j = 0; j < n && !any; ++j) any = dA(i, j).v[p] != 0;
+    std::vector<Entry> entries;
+    for (int a = 0; a < n; ++a) {
+      for (int b = 0; b < n; ++b) {
+        if (dA(a, b).v[p] != 0) entries.push_back({a, b, dA(a, b).v[p]});
+      }
     }
-    if (any) used.push_back(p);
+    if (!entries.empty()) partials.emplace_back(p, std::move(entries));
   }
-  Mat D(n, n);
   for (size_t c = 0; c < columns.size(); ++c) {
     const int j = columns[c];
     Mode& mode = (*modes)[c];
@@ -175,17 +181,15 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
     const CVec v = V.col(j);
     int big = 0;
     for (int a = 1; a < k; ++a) {
-      if (std::abs(v[a]) > std::abs(v[big])) big = a;
+      if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
     d->pivot = dofs[big];
     CVec inverse_gap(n);
     for (int o = 0; o < n; ++o) inverse_gap[o] = o == j ? 0.0 : 1.0 / (lambda[j] - lambda[o]);
-    for (int p : used) {
-      for (int a = 0; a < n; ++a) {
-        for (int b = 0; b < n; ++b) D(a, b) = dA(a, b).v[p];
-      }
+    for (const auto& [p, entries] : partials) {
       // g = Y dA v: g_j = d lambda, g_o / (lambda_j - lambda_o) the share of v_o in d v.
-      const CVec g = Y * (D.cast<std::complex<double>>() * v);
+      CVec g = CVec::Zero(n);
+      for (const Entry& e : entries) g += (e.value * v[e.col]) * Y.col(e.row);
       d->eigenvalue[p] = g[j];
       const CVec dv = V.topRows(k) * g.cwiseProduct(inverse_gap);
       // shape = v / v_big: d shape = (dv - shape dv_big) / v_big.
@@ -279,7 +283,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     for (double& e : mode.energy) e /= total;
     int big = 0;
     for (int a = 1; a < k; ++a) {
-      if (std::abs(v[a]) > std::abs(v[big])) big = a;
+      if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
     const std::complex<double> pivot = v[big];
     mode.shape.setZero();
@@ -337,7 +341,7 @@ double ModeDerivatives::DampingRatio(const std::complex<double>& lambda, int p) 
 RealShapeVector Mode::PaperShape() const {
   int big = 0;
   for (int i = 1; i < kNumDofs; ++i) {
-    if (std::abs(shape[i]) > std::abs(shape[big])) big = i;
+    if (std::norm(shape[i]) > std::norm(shape[big])) big = i;
   }
   // dgeev: unit 2-norm over [v; lambda v], largest component real.
   const std::complex<double> largest =

@@ -8,6 +8,7 @@
 #include <array>
 #include <initializer_list>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -52,7 +53,7 @@ class BasicSystem {
     M_.setZero();
     C_.setZero();
     K_.setZero();
-    for (auto& k : K_label_) k.setZero();
+    for (Matrix& k : K_label_) k.setZero();
     active_.fill(false);
     for (int i = 0; i <= I(Dof::kPsiB); ++i) active_[i] = true;
   }
@@ -76,7 +77,9 @@ class BasicSystem {
   // A single, possibly unsymmetric, stiffness term (the trail coupling of S).
   void AddStiffness(std::optional<ModeLabel> owner, Dof row, Dof col, const T& v) {
     K_(I(row), I(col)) += v;
-    if (owner) K_label_[static_cast<int>(*owner)](I(row), I(col)) += v;
+    if constexpr (kLabelled) {
+      if (owner) K_label_[static_cast<int>(*owner)](I(row), I(col)) += v;
+    }
   }
   void AddVelocityCoupling(Dof row, Dof col, const T& v) { C_(I(row), I(col)) += v; }
   // Adds the lag, and its standstill stiffness to K() and to its owner: K()
@@ -101,9 +104,11 @@ class BasicSystem {
 
  private:
   static int I(Dof d) { return static_cast<int>(d); }
+  // Labels are decided on values: the derivatives (jets) need no K_label.
+  static constexpr bool kLabelled = std::is_same_v<T, double>;
 
   Matrix M_, C_, K_;
-  std::array<Matrix, kNumLabels> K_label_;
+  std::array<Matrix, kLabelled ? kNumLabels : 0> K_label_;
   std::array<bool, kNumDofs> active_;
   std::vector<SlipLag> lags_;
   double speed_ = 0;

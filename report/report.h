@@ -55,7 +55,7 @@ struct Provenance {
   std::vector<std::string> command_line;
   std::vector<InputFile> inputs;
   std::optional<long> seed;          // of random starts or noise, where used
-  std::string derivatives = "numeric";  // how Jacobians were taken
+  Derivatives derivatives = Derivatives::kNumeric;  // how Jacobians were taken
 
   template <class Archive>
   void Serialize(Archive* a) {

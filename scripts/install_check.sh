@@ -31,6 +31,8 @@ done
 # The report written through the installed headers reads back in the tool.
 "$prefix/bin/ringid" report --input="$work/report.json" --output="$work/report.html" > /dev/null
 "$work/build-snippet/snippet" datasets/paper/table1.json
-# The installed executable runs too.
+# The installed executable runs too, from any directory, on the data installed
+# with it (PREFIX/share/ringid).
 "$prefix/bin/ringid" help > /dev/null
+(cd "$work" && "$prefix/bin/ringid" bench --suite=paper > /dev/null)
 echo "install check: examples and README snippet built against $prefix and ran"

@@ -10,9 +10,14 @@
 #include <map>
 #include <utility>
 #include <string>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +26,7 @@
 #include "datasets/synthetic.h"
 #include "datasets/tir.h"
 #include "datasets/tir_parameters.h"
+#include "model/spelling.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -558,17 +564,33 @@ TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
       {"predict --parameters=" + tno + " " + SetTheRest(all_but_c_bx, ringid::ExampleCarTire()),
        "c_bx: missing (the model needs it; the .tir has no [STRUCTURAL] DAMP_LONG): give --set=c_bx=VALUE"},
       {"predict --parameters=/nonexistent.tir", "/nonexistent.tir: cannot open file"},
-      {"export --parameters=" + car + " --format=xml", "--format: must be tir or json"},
-      {"export --parameters=" + car, "--format: must be tir or json"},
+      {"export --parameters=" + car + " --format=xml",
+       "--format: unknown format 'xml' (expected tir or json)"},
+      {"export --parameters=" + car + " --format=tri",
+       "--format: unknown format 'tri' (did you mean 'tir'? expected tir or json)"},
+      {"export --parameters=" + car, "export needs --format=tir or json"},
       {"export --format=tir", "export needs --parameters=FILE"},
       {"export --parameters=" + partial + " --format=tir",
        "partial_belt.json: parameters.I_bx: missing (the .tir's [INERTIA] BELT_IXX needs it)"},
-      {"export --parameters=" + car + " --format=tir --set=m_b=-1", "--set: m_b must be positive"},
-      {"export --parameters=" + car + " --format=tir --set=k_nonsense=1", "--set: bad item 'k_nonsense=1'"},
-      {"export --parameters=" + car + " --format=tir --dataset=x.json", "--dataset: unknown flag"},
-      {"predict --parameters=" + car + " --set=s_h=-1", "--set: s_h must be not negative"},
+      {"export --parameters=" + car + " --format=tir --set=m_b=-1",
+       "--set: m_b: bad value '-1' (a positive number)"},
+      {"export --parameters=" + car + " --format=tir --set=k_nonsense=1",
+       "--set: unknown parameter 'k_nonsense' (expected m_b, I_ay,"},
+      {"export --parameters=" + car + " --format=tir --set=k_bxx=1",
+       "--set: unknown parameter 'k_bxx' (did you mean 'k_bx'? expected m_b, I_ay,"},
+      {"export --parameters=" + car + " --format=tir --set=k_bx=abc",
+       "--set: k_bx: bad value 'abc' (a finite number)"},
+      {"export --parameters=" + car + " --format=tir --dataset=x.json",
+       "--dataset: not a flag of 'export' (it is one of predict,"},
+      {"predict --parameters=" + car + " --set=s_h=-1",
+       "--set: s_h: bad value '-1' (a number not negative)"},
+      {"predict --parameters=" + car + " --effects=hub_compliance --set=s_h=1e-7",
+       "--effects: hub_compliance needs m_a: give --set=m_a=VALUE"},
+      {"predict --parameters=" + tno + " --effects=hub_compliance " +
+           SetTheRest(all_but_c_bx, ringid::ExampleCarTire()) + ",c_bx=1",
+       "--effects: hub_compliance needs m_a: give --set=m_a=VALUE"},
       {"simulate --parameters=" + car + " --set=m_b=0 --truth=" + out + ".truth",
-       "--set: m_b must be positive"},
+       "--set: m_b: bad value '0' (a positive number)"},
   };
   for (const auto& [args, words] : cases) {
     std::remove(out.c_str());
@@ -579,9 +601,398 @@ TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
     EXPECT_FALSE(Exists(out)) << args;
     EXPECT_FALSE(Exists(out + ".truth")) << args;
   }
-  const RunResult r = Ringid("export --parameters=" + car + " --format=tir --output=/nonexistent-dir/t.tir");
+  RunResult r = Ringid("export --parameters=" + car + " --format=tir --output=/nonexistent-dir/t.tir");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("/nonexistent-dir/t.tir"), std::string::npos) << r.err;
+  // Outputs are checked up front as for every command: export never
+  // overwrites its input.
+  const std::string copy = dir + "export_input.json";
+  std::ofstream(copy) << ReadFile(car);
+  r = Ringid("export --parameters=" + copy + " --format=json --output=" + copy);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("is the --parameters input, which it would overwrite"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(ReadFile(copy), ReadFile(car));
+}
+
+// A command line that helps (issue 14).
+
+// Each command lists its flags with their defaults and meaning, from the
+// flags' definitions, and the values a named flag takes from the library.
+TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
+  const std::map<std::string, std::vector<std::string>> expected = {
+      {"predict", {"--parameters=TEXT  (default none)", "--effects=LIST", "--set=TEXT"}},
+      {"identify", {"--dataset=TEXT  (default none)", "--starts=N  (default 4)",
+                    "--method=lm|simplex  (default 'lm')",
+                    "--shapes[=BOOL]  (default true; --noshapes for false)",
+                    "--relative_sigma=X", "--save_parameters=TEXT", "--output_dir=TEXT",
+                    "--effects=LIST  (default none)", "LIST is any of"}},
+      {"identifiability", {"--dataset=TEXT", "--derivatives=numeric|analytic  (default 'numeric')"}},
+      {"compare", {"--starts=N  (default 4)"}},
+      {"simulate", {"--set=TEXT", "--shift=X  (default 0)", "--truth=TEXT",
+                    "--speeds=TEXT  (default '0')"}},
+      {"diagnose", {"--effects=LIST", "--jobs=N  (default 1)", "--shard=TEXT  (default '0/1')"}},
+      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling  (default none)",
+                 "--replicates=N  (default 200)"}},
+      {"report", {"--input=TEXT", "--figures_dir=TEXT"}},
+      {"export", {"--parameters=TEXT  (default none)", "--set=TEXT",
+                  "--format=tir|json  (default none)", "--output=TEXT"}},
+      {"schema", {"It takes no flags."}},
+  };
+  for (const auto& [command, lines] : expected) {
+    const RunResult r = Ringid(command + " --help");
+    EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.err, "") << command;
+    EXPECT_EQ(r.out.rfind("usage: ringid " + command, 0), 0u) << r.out;
+    for (const std::string& line : lines) {
+      EXPECT_NE(r.out.find(line), std::string::npos) << command << " --help lacks " << line
+                                                     << ":\n" << r.out;
+    }
+    EXPECT_EQ(Ringid("help " + command).out, r.out) << command;
+    EXPECT_EQ(Ringid(command + " -h").out, r.out) << command;
+  }
+  // Flags of other commands are not listed.
+  EXPECT_EQ(Ringid("identify --help").out.find("--suite"), std::string::npos);
+  // Help wins over the other flags, even bad ones.
+  EXPECT_EQ(Ringid("identify --bogus=1 --help").status, 0);
+  const RunResult all = Ringid("help");
+  EXPECT_EQ(all.status, 0);
+  EXPECT_NE(all.out.find("ringid COMMAND --help"), std::string::npos) << all.out;
+  EXPECT_NE(all.out.find("ringid simulate --parameters=FILE --output=DATASET --truth=FILE"),
+            std::string::npos) << all.out;
+}
+
+TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string out = Scratch("next_argument.json");
+  std::remove(out.c_str());
+  RunResult r = Ringid("identify --dataset " + table1 + " --starts 1 --noshapes --damping" +
+                       " --output " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(out));
+  const auto& inputs = j["provenance"]["inputs"];
+  ASSERT_EQ(inputs.size(), 1u) << j["provenance"].dump();
+  EXPECT_EQ(inputs[0]["path"], table1);
+  EXPECT_EQ(j["starts"], 1);
+  // --noshapes turns the shapes off: the example car tire's 21 modes then
+  // give 42 residuals (frequency and damping) instead of 252, less one fitted
+  // scale per shape.
+  const std::string rolling = Source("datasets/examples/car_tire_rolling.json");
+  int dof[2];
+  for (int shapes = 0; shapes < 2; ++shapes) {
+    r = Ringid("identify --dataset " + rolling + " --starts 1 " +
+               (shapes ? "--shapes" : "--noshapes") + " --output " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    dof[shapes] = nlohmann::json::parse(ReadFile(out))["fit"]["degrees_of_freedom"].get<int>();
+  }
+  EXPECT_EQ(dof[1] - dof[0], 252 - 42 - 21);
+  std::remove(out.c_str());
+  // A boolean never takes the next argument, and --noNAME takes no value.
+  const std::pair<std::string, std::string> cases[] = {
+      {"--shapes false", "unexpected argument 'false' (a boolean takes --shapes=false, or "
+                         "--shapes or --noshapes alone)"},
+      {"--noshapes=true", "--noshapes: takes no value (or write --shapes=false)"},
+      {"--starts", "--starts: needs a value (--starts=VALUE or --starts VALUE)"},
+      {"--starts --shapes", "--starts: needs a value"},
+      {"--starts abc", "--starts: bad value 'abc' (an integer expected)"},
+      {"--nostarts", "--nostarts: unknown flag for 'identify'"},
+      {"--starts 1 2", "unexpected argument '2'\n"},
+      {"x", "unexpected argument 'x'\n"},
+  };
+  for (const auto& [flags, words] : cases) {
+    r = Ringid("identify --dataset " + table1 + " " + flags + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << flags << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << flags;
+  }
+}
+
+TEST(SpellingTest, ATypoIsNearAndAnotherWordIsNot) {
+  EXPECT_EQ(ringid::EditDistance("dataset", "datset"), 1);
+  EXPECT_EQ(ringid::EditDistance("label", "lable"), 1);  // two neighbours swapped
+  EXPECT_EQ(ringid::EditDistance("", "abc"), 3);
+  const std::vector<std::string> flags = {"dataset", "output", "starts", "seed"};
+  EXPECT_EQ(ringid::NearestName("datset", flags), "dataset");
+  EXPECT_EQ(ringid::NearestName("sed", flags), "seed");
+  EXPECT_EQ(ringid::NearestName("frobnicate", flags), std::nullopt);
+  EXPECT_EQ(ringid::NearestName("zb", {"x_b", "z_b"}), "z_b");
+  EXPECT_EQ(ringid::NearestName("s", {"seed"}), std::nullopt);
+  EXPECT_EQ(ringid::UnknownName("flag", "x", {"a", "b", "c"}), "unknown flag 'x' (expected a, b or c)");
+  EXPECT_EQ(ringid::UnknownName("flag", "sedd", flags, false), "unknown flag 'sedd' (did you mean 'seed'?)");
+}
+
+// A misspelled name, wherever it is given, is answered with the nearest
+// valid one and the valid ones.
+TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string bad_label = Scratch("bad_label.json");
+  std::ofstream(bad_label) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
+                              R"("modes":[{"label":"rotation_inphase","frequency_hz":30}]})";
+  const std::string out = Scratch("misspelled.json");
+  std::remove(out.c_str());
+  const std::pair<std::string, std::string> cases[] = {
+      {"identify --dataset=" + bad_label,
+       bad_label + ": modes[0].label: unknown label 'rotation_inphase' (did you mean "
+                   "'rotation_in_phase'? expected rotation_in_phase, rotation_anti_phase, "
+                   "vertical, longitudinal, camber, yaw or lateral)"},
+      {"identify --datset=" + table1,
+       "--datset: unknown flag for 'identify' (did you mean --dataset?); see 'ringid identify "
+       "--help'"},
+      {"identify --noshape --dataset=" + table1, "(did you mean --noshapes?)"},
+      {"identify --suite=paper --dataset=" + table1,
+       "--suite: not a flag of 'identify' (it is one of bench)"},
+      {"identfy --dataset=" + table1, "unknown command 'identfy' (did you mean 'identify'?"},
+      {"identify --fix=t_0x --dataset=" + table1,
+       "--fix: unknown parameter 't_0x' (did you mean 't_0'? expected m_b, I_ay,"},
+      {"identify --bounds=k_bxx:1:2 --dataset=" + table1,
+       "--bounds: unknown parameter 'k_bxx' (did you mean 'k_bx'?"},
+      {"diagnose --effects=hub_complaince --dataset=" + table1,
+       "--effects: unknown effect 'hub_complaince' (did you mean 'hub_compliance'? expected "
+       "anisotropic_sidewall, hub_compliance,"},
+      {"compare --method=lmm --dataset=" + table1,
+       "--method: unknown value 'lmm' (did you mean 'lm'? expected lm or simplex)"},
+      {"bench --suite=papr", "--suite: unknown suite 'papr' (did you mean 'paper'?"},
+  };
+  for (const auto& [command, words] : cases) {
+    const RunResult r = Ringid(command + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << command << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << command;
+  }
+  const RunResult r = Ringid("help simulat");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
+                   "predict, identify, identifiability, compare, simulate, diagnose, bench, "
+                   "report, export, schema or reference); see 'ringid help'\n");
+}
+
+TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
+  const std::string set = Source("datasets/paper/parameters.json");
+  for (const std::string command : {"identify", "predict", "diagnose"}) {
+    const RunResult r = Ringid(command + " --dataset=" + set);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, "ringid: " + set + ": format: this is a parameter set "
+                     "(ringid-parameters/1), not a dataset; use --parameters\n") << command;
+  }
+}
+
+// simulate: an effect needs its size and a size its effect; each defect is
+// one line naming the flag and what is missing, and nothing is written.
+TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
+  const std::string out = Scratch("sized.json"), truth = Scratch("sized_truth.json");
+  const std::pair<std::string, std::string> cases[] = {
+      {"--effects=lug_coupling",
+       "ringid: --effects: lug_coupling has no size: give --set=k_xy=VALUE (not 0) or "
+       "--shift=FRACTION\n"},
+      {"--effects=lug_coupling --set=k_xy=0",
+       "ringid: --effects: lug_coupling has no size: give --set=k_xy=VALUE (not 0) or "
+       "--shift=FRACTION\n"},
+      {"--set=s_h=1e-7",
+       "ringid: --set: s_h is the size of the effect hub_compliance, which --effects does "
+       "not list; add --effects=hub_compliance\n"},
+      {"--effects=hub_compliance --set=s_hh=1e-7",
+       "ringid: --set: unknown parameter 's_hh' (did you mean 's_h'? expected m_b, I_ay,"},
+      {"--effects=hub_compliance --set=s_h=1e-7",
+       "ringid: --effects: hub_compliance needs m_a: give --set=m_a=VALUE\n"},
+      {"--effects=lug_coupling --set=k_xy=abc",
+       "ringid: --set: k_xy: bad value 'abc' (a finite number)\n"},
+      {"--effects=lug_coupling --set=k_xy=1e4 --shift=0.05",
+       "ringid: --shift: sizes k_xy, which --set gives too; give one of them\n"},
+      {"--shift=0.05", "ringid: --shift: needs exactly one effect in --effects"},
+  };
+  for (const auto& [flags, line] : cases) {
+    std::remove(out.c_str());
+    std::remove(truth.c_str());
+    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+                               " " + flags + " --output=" + out + " --truth=" + truth);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+    EXPECT_EQ(r.err.rfind(line, 0), 0u) << flags << ": " << r.err;
+    EXPECT_FALSE(Exists(out)) << flags;
+    EXPECT_FALSE(Exists(truth)) << flags;
+  }
+  // Sized, they run; an effect's other parameter may be set without it.
+  for (const std::string flags : {"--effects=lug_coupling --shift=0.05", "--set=m_a=15",
+                                  "--effects=hub_compliance --set=s_h=2e-7,m_a=15"}) {
+    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+                               " " + flags + " --output=" + out + " --truth=" + truth);
+    EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+  }
+}
+
+// Every output is checked before any work, exit 2 and nothing written: a
+// directory given as a file, one file named twice (however spelled), an
+// output that would overwrite an input, and a --figures_dir that cannot be
+// made. --figures_dir is made when missing, as --output_dir is.
+TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string dir = Scratch("outputs");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/a_directory");
+  const std::string copy = dir + "/table1.json";
+  std::filesystem::copy_file(table1, copy);
+  const std::string same = dir + "/same.json";
+  const std::string file = dir + "/a_file";
+  std::ofstream(file) << "x";
+  const std::string report = Scratch("outputs_identify.json");
+  RunResult r = Ringid("identify --starts=1 --dataset=" + table1 + " --output=" + report);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::pair<std::string, std::string> cases[] = {
+      {"compare --starts=1 --dataset=" + table1 + " --output=" + dir + "/a_directory",
+       "ringid: --output: " + dir + "/a_directory: is a directory, not a file\n"},
+      {"identify --dataset=" + table1 + " --output=" + same + " --save_parameters=" + same,
+       "ringid: --save_parameters: " + same + " is also --output; give each output its own "
+       "file\n"},
+      {"identify --dataset=" + table1 + " --output=" + same + " --save_parameters=" + dir +
+           "/a_directory/../same.json",
+       "ringid: --save_parameters: " + dir + "/a_directory/../same.json is also --output"},
+      {"identify --dataset=" + copy + " --output=" + dir + "/./table1.json",
+       "ringid: --output: " + dir + "/./table1.json is the --dataset input, which it would "
+       "overwrite\n"},
+      {"simulate --parameters=" + Source("datasets/paper/parameters.json") + " --output=" + same +
+           " --truth=" + same,
+       "ringid: --truth: " + same + " is also --output"},
+      {"bench --suite=paper --output=" + same + " --markdown=" + same,
+       "ringid: --markdown: " + same + " is also --output"},
+      {"identify --dataset=" + dir + " --output_dir=" + dir,
+       "ringid: --output_dir: " + dir + "/table1.json, the report of " + dir +
+           "/table1.json, would overwrite the dataset"},
+      {"report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" + file +
+           "/figures",
+       "ringid: --figures_dir: " + file + "/figures: " + file + " is not a directory\n"},
+      {"report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" + file,
+       "ringid: --figures_dir: " + file + ": not a directory\n"},
+  };
+  for (const auto& [command, line] : cases) {
+    r = Ringid(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err.rfind(line, 0), 0u) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+    EXPECT_EQ(r.out, "") << command << ": the run went ahead";
+  }
+  EXPECT_FALSE(Exists(same));
+  EXPECT_FALSE(Exists(dir + "/page.html"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir + "/a_directory"));
+  EXPECT_EQ(ReadFile(copy), ReadFile(table1));
+
+  RINGID_REQUIRE_TOOL(ringid::testing::HaveProgram("gnuplot"), "gnuplot");
+  const std::string figures = dir + "/new/figures";
+  r = Ringid("report --input=" + report + " --output=" + dir + "/page.html --figures_dir=" +
+             figures);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(Exists(dir + "/page.html"));
+  EXPECT_FALSE(std::filesystem::is_empty(figures));
+}
+
+// ringid `args`, started in the source tree and not waited for; stdout
+// discarded, stderr to `err`.
+pid_t Start(const std::string& args, const std::string& err) {
+  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
+                            args + " > /dev/null 2> " + err;
+  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+  return pid;
+}
+
+// The exit status of `pid`, -1 if a signal killed it.
+int Finish(pid_t pid) {
+  int raw = 0;
+  EXPECT_EQ(::waitpid(pid, &raw, 0), pid);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Ctrl-C or SIGTERM in the middle of a run: one line saying what was kept
+// (nothing: reports are written whole at the end), exit 128 + the signal.
+TEST(CliTest, AnInterruptedRunSaysWhatItKept) {
+  const std::string dir = Scratch("interrupt");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::pair<int, std::string> signals[] = {{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}};
+  for (const auto& [signo, name] : signals) {
+    const std::string err = Scratch("interrupt_" + name + ".txt");
+    const pid_t pid = Start("bench --suite=synthetic --output=" + dir + "/bench.json --markdown=" +
+                                dir + "/bench.md",
+                            err);
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    ::kill(pid, signo);
+    EXPECT_EQ(Finish(pid), 128 + signo) << name;
+    EXPECT_EQ(ReadFile(err), "ringid: interrupted (" + name +
+                                 "): nothing written (a report is written whole when its run "
+                                 "ends)\n");
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << name << ": a file was left behind";
+  }
+}
+
+// An interrupted campaign keeps the reports it finished, each whole, and
+// says which; its summary is not written.
+TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
+  const std::string dir = Scratch("interrupted_campaign");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/data");
+  for (const char* name : {"a", "b", "c"}) {
+    std::filesystem::copy_file(Source("datasets/paper/table1.json"),
+                               dir + "/data/" + name + ".json");
+  }
+  const std::string err = Scratch("interrupted_campaign.txt");
+  const pid_t pid = Start("identify --starts=400 --dataset=" + dir + "/data --output_dir=" + dir +
+                              "/out",
+                          err);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
+  while (!Exists(dir + "/out/a.json") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGINT);
+  ASSERT_EQ(Finish(pid), 130) << ReadFile(err);
+  std::vector<std::string> kept;
+  for (const auto& f : std::filesystem::directory_iterator(dir + "/out")) {
+    kept.push_back(f.path().filename().string());
+    EXPECT_NO_THROW(nlohmann::json::parse(ReadFile(f.path().string()))) << f.path();
+  }
+  std::sort(kept.begin(), kept.end());
+  ASSERT_GE(kept.size(), 1u);
+  ASSERT_LE(kept.size(), 2u) << "the campaign finished before the signal";
+  EXPECT_EQ(kept[0], "a.json");
+  std::string names;
+  for (const std::string& k : kept) names += (names.empty() ? "" : ", ") + k;
+  EXPECT_EQ(ReadFile(err), "ringid: interrupted (SIGINT): kept the " +
+                               std::to_string(kept.size()) + " of 3 report(s) finished whole, in " +
+                               dir + "/out: " + names + "; campaign.json not written\n");
+}
+
+// The paper's data are installed with the package and found from any
+// directory: by the build tree's binary in its source tree, and by an
+// installed binary beside itself (PREFIX/share/ringid), whatever the prefix.
+TEST(CliTest, TheSuitesRunFromAnyDirectoryBuiltOrInstalled) {
+  const std::string elsewhere = Scratch("elsewhere");
+  std::filesystem::create_directories(elsewhere);
+  RunResult r = Ringid("bench --suite=paper", elsewhere);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Table 3 reproduced"), std::string::npos) << r.out;
+
+  const std::string prefix = Scratch("prefix");
+  std::filesystem::remove_all(prefix);
+  const std::string install = std::string(RINGID_CMAKE) + " --install " + RINGID_BUILD_DIR +
+                              " --prefix " + prefix + " > /dev/null";
+  ASSERT_EQ(std::system(install.c_str()), 0) << install;
+  for (const char* f : {"datasets/paper/table1.json", "datasets/paper/parameters.json",
+                        "datasets/examples/car_tire.json"}) {
+    EXPECT_TRUE(Exists(prefix + "/share/ringid/" + f)) << f;
+  }
+  const std::string installed = prefix + "/bin/ringid";
+  const std::string out = Scratch("installed_bench.txt");
+  const std::string run = "cd " + elsewhere + " && " + installed + " bench --suite=paper > " + out;
+  ASSERT_EQ(std::system(run.c_str()), 0) << run;
+  EXPECT_NE(ReadFile(out).find("Table 3 reproduced"), std::string::npos);
+  // The installed binary reads the installed data, not the source tree's.
+  const std::string help = "cd " + elsewhere + " && " + installed + " bench --help > " + out;
+  ASSERT_EQ(std::system(help.c_str()), 0) << help;
+  EXPECT_NE(ReadFile(out).find(prefix + "/share/ringid/datasets/paper"), std::string::npos)
+      << ReadFile(out);
+  std::filesystem::remove_all(prefix);
 }
 
 }  // namespace

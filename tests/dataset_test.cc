@@ -397,6 +397,57 @@ TEST(DatasetTest, FormatOneRefusesFormatTwoKeysAndUnknownFormats) {
       << ErrorOf(j);
 }
 
+// A typo in a label, a parameter or a degree of freedom is answered with the
+// nearest valid name and the valid ones; a hub label is not one a dataset may
+// name, so it is neither suggested nor listed.
+TEST(DatasetTest, AMisspelledNameSuggestsTheNearestValidOne) {
+  json j = Valid();
+  j["modes"][0]["label"] = "rotation_inphase";
+  EXPECT_EQ(ErrorOf(j), "bad.json: modes[0].label: unknown label 'rotation_inphase' (did you "
+                        "mean 'rotation_in_phase'? expected rotation_in_phase, "
+                        "rotation_anti_phase, vertical, longitudinal, camber, yaw or lateral)");
+  j = Valid();
+  j["modes"][0]["label"] = "hub_vertical";
+  EXPECT_EQ(ErrorOf(j), "bad.json: modes[0].label: 'hub_vertical' is a mode of the hub, which a "
+                        "dataset does not list (expected rotation_in_phase, rotation_anti_phase, "
+                        "vertical, longitudinal, camber, yaw or lateral)");
+  j = Valid();
+  j["known"] = {{"m_bb", 2.37}};
+  EXPECT_NE(ErrorOf(j).find("known.m_bb: unknown parameter 'm_bb' (did you mean 'm_b'? "
+                            "expected m_b, I_ay,"),
+            std::string::npos)
+      << ErrorOf(j);
+  j = Valid();
+  j["modes"][0]["shape"] = {{"zb", 1.0}};
+  EXPECT_NE(ErrorOf(j).find("modes[0].shape.zb: unknown degree of freedom 'zb' (did you mean "
+                            "'z_b'?"),
+            std::string::npos)
+      << ErrorOf(j);
+}
+
+// A parameter set or a report given where a dataset belongs is named as what
+// it is, not by the first key a dataset lacks ("parameters: unknown key").
+TEST(DatasetTest, AParameterSetOrAReportIsNamedAsWhatItIs) {
+  Dataset d;
+  LoadError e;
+  const std::string set = testing::SourcePath("datasets/paper/parameters.json");
+  EXPECT_FALSE(LoadDataset(set, &d, &e));
+  EXPECT_EQ(e.OneLine(), set + ": format: this is a parameter set (ringid-parameters/1), not a "
+                               "dataset; use --parameters");
+  EXPECT_FALSE(ParseDataset(R"({"parameters": {"m_b": 2}})", "x.json", &d, &e));
+  EXPECT_EQ(e.OneLine(), "x.json: parameters: this is a parameter set (ringid-parameters/1), "
+                         "not a dataset; use --parameters");
+  EXPECT_FALSE(ParseDataset(R"({"report": "identify", "schema_version": 2})", "r.json", &d, &e));
+  EXPECT_EQ(e.OneLine(), "r.json: report: this is a ringid identify report, not a dataset");
+  // And the other way round.
+  Parameters p;
+  EXPECT_FALSE(LoadParameterSet(testing::SourcePath("datasets/paper/table1.json"), &p, &e));
+  EXPECT_NE(e.OneLine().find("format: this is a modal dataset (ringid-modal-dataset/1), not a "
+                             "parameter set"),
+            std::string::npos)
+      << e.OneLine();
+}
+
 TEST(DatasetTest, MissingFileIsAnError) {
   Dataset d;
   LoadError e;

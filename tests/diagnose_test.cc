@@ -1,5 +1,6 @@
 // The gap diagnosis on withheld-effect data, whose truth it never sees.
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include "validation/suites.h"
 #include "datasets/synthetic.h"
 #include "estimation/diagnose.h"
+#include "estimation/statistics.h"
 #include "model/effects.h"
 #include "tests/test_support.h"
 
@@ -163,6 +165,84 @@ TEST(DiagnoseTest, ThePapersData) {
   const std::vector<std::string> g = EffectNames(r.indistinguishable);
   EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;
   EXPECT_NE(std::find(g.begin(), g.end(), "anisotropic_sidewall"), g.end()) << r.explanation;
+}
+
+// The paper's tire with an anisotropic sidewall (dk_bz, and dk_bpsi = 2000
+// N m/rad), seed 2, diagnosed against the standing baseline.
+DiagnosisReport DiagnoseSidewall(double dk_bz) {
+  Parameters truth = PaperIdentified();
+  truth[Param::m_a] = 15;
+  truth[Param::dk_bz] = dk_bz;
+  truth[Param::dk_bpsi] = 2000;
+  std::mt19937_64 rng(2);
+  Dataset d;
+  d.name = "sidewall";
+  SetEngineerPriors(truth, 0.1, &rng, &d);
+  std::string why;
+  EXPECT_TRUE(Simulate(RigidRingModel({FindEffect("anisotropic_sidewall")}), truth, SimulateOptions{},
+                       &rng, &d, &why))
+      << why;
+  DiagnoseOptions o;
+  o.held_out = false;
+  DiagnosisReport r;
+  Diagnose(RigidRingModel(), d, o, &r);
+  EXPECT_TRUE(r.status.ok()) << r.status.message;
+  return r;
+}
+
+const EffectFit* FitOf(const DiagnosisReport& r, const char* effect) {
+  for (const EffectFit& f : r.ranking) {
+    if (f.effect == FindEffect(effect)) return &f;
+  }
+  return nullptr;
+}
+
+// At standstill a contact yaw stiffness enters S[psi, psi] exactly as the
+// sidewall's dk_bpsi does (docs/model.md), so contact_yaw_stiffness is
+// anisotropic_sidewall with dk_bz = 0: nested, one parameter fewer, and the
+// likelihood-ratio test between them is the textbook one, p = erfc(sqrt(d /
+// 2)) for a chi-square difference d on one degree of freedom. Where the data
+// cannot reject the smaller at the report's level it is in the verdict's
+// group, where they can it is not. (The rule before, within 2 AIC, left it
+// out at d = 7.1, p = 0.008.)
+TEST(DiagnoseTest, AnEffectTheDataCannotRejectAgainstTheVerdictAtTheReportsLevelIsInItsGroup) {
+  const double level = DiagnoseOptions().effect_significance;
+  for (double dk_bz : {2e5, 6e5}) {
+    const DiagnosisReport r = DiagnoseSidewall(dk_bz);
+    ASSERT_STREQ(EffectName(r.verdict), "anisotropic_sidewall") << r.explanation;
+    const EffectFit* side = FitOf(r, "anisotropic_sidewall");
+    const EffectFit* yaw = FitOf(r, "contact_yaw_stiffness");
+    ASSERT_TRUE(side && yaw && side->ok && yaw->ok);
+    ASSERT_EQ(side->extra_parameters - yaw->extra_parameters, 1);
+    const double d = yaw->chi2 - side->chi2;
+    ASSERT_GE(d, -1e-6) << "nested: the larger fits at least as well";
+    const double p = std::erfc(std::sqrt(std::max(d, 0.0) / 2));
+    const std::vector<std::string> group = EffectNames(r.indistinguishable);
+    const bool grouped = std::find(group.begin(), group.end(), "contact_yaw_stiffness") != group.end();
+    EXPECT_EQ(grouped, p >= level) << "dk_bz " << dk_bz << ": chi-square difference " << d
+                                   << ", p = " << p << "; " << r.explanation;
+    // The report records the level and, per effect, its difference and the
+    // threshold: on one degree of freedom the x with erfc(sqrt(x / 2)) =
+    // level (10.83 at 0.001).
+    EXPECT_EQ(r.level, level);
+    EXPECT_NEAR(yaw->chi2_above_verdict, d, 1e-9);
+    EXPECT_NEAR(std::erfc(std::sqrt(yaw->group_threshold / 2)), level, 1e-9 * level);
+    EXPECT_NE(r.explanation.find("significant at level 0.001"), std::string::npos) << r.explanation;
+  }
+}
+
+// The chi-square point at a level against closed forms: on two degrees of
+// freedom P(chi-square >= x) = exp(-x / 2); on one, the 95 % point is the
+// normal's squared.
+TEST(DiagnoseTest, TheGroupThresholdIsTheChiSquarePointAtTheLevel) {
+  for (double alpha : {0.05, 1e-3, 1e-6}) {
+    EXPECT_NEAR(ChiSquareCritical(alpha, 2), -2 * std::log(alpha), 1e-9) << alpha;
+    EXPECT_NEAR(std::erfc(std::sqrt(ChiSquareCritical(alpha, 1) / 2)), alpha, 1e-9 * alpha) << alpha;
+  }
+  EXPECT_NEAR(ChiSquareCritical(0.05, 1), kNormal95 * kNormal95, 1e-12);
+  EXPECT_NEAR(ChiSquareCritical(0.05, 1), kChiSquare1Dof95, 1e-12);
+  EXPECT_TRUE(std::isnan(ChiSquareCritical(0.05, 0)));
+  EXPECT_TRUE(std::isnan(ChiSquareCritical(0, 1)));
 }
 
 TEST(DiagnoseTest, QuickValidationSuite) {

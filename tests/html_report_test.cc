@@ -582,9 +582,11 @@ TEST(HtmlReportTest, FiguresDirHoldsEachFigureAsAFile) {
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find(">rotation in phase<"), std::string::npos);
+  // A directory that cannot be made (its parent is a file) is refused up
+  // front; one that is missing is made (CliTest.EveryOutputIsCheckedBeforeAnyWork).
   const RunResult bad =
       Ringid("report --input=" + m.report_path + " --output=" + Scratch("g.html") +
-             " --figures_dir=/nonexistent-dir");
+             " --figures_dir=" + Scratch("f.html") + "/figures");
   EXPECT_EQ(bad.status, 2);
   EXPECT_FALSE(Exists(Scratch("g.html")));
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/reports.h"
+#include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
 #include "report/schema.h"
 #include "report/report.h"
@@ -54,6 +55,17 @@ TEST(ReportTest, IdentifyWithShapesAndDampingRoundTripsByteForByte) {
       Made("identify --starts=1 --shape_convention=paper --dataset=" +
                Source("datasets/paper/inertia_recovery.json"),
            "identify-shapes.json"));
+}
+
+// The provenance says how the Jacobians were taken, as the command asked.
+TEST(ReportTest, ProvenanceRecordsTheDerivativeMode) {
+  for (const char* mode : {"numeric", "analytic"}) {
+    const Json j = Json::parse(ReadFile(Made(std::string("identify --starts=1 --derivatives=") +
+                                                 mode + " --dataset=" +
+                                                 Source("datasets/paper/table1.json"),
+                                             std::string("identify-") + mode + ".json")));
+    EXPECT_EQ(j["provenance"]["derivatives"], mode);
+  }
 }
 
 TEST(ReportTest, PredictRoundTripsByteForByte) {
@@ -235,6 +247,11 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
   EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";
+}
+
+TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
+  EXPECT_EQ(ReadFile(Source("docs/reference.md")), ringid::ReferenceMarkdown())
+      << "run: build/ringid reference > docs/reference.md";
 }
 
 // The fields docs/conventions.md §6 promises other people's scripts, written

@@ -19,9 +19,10 @@ SuiteOptions Options() {
   return o;
 }
 
-TEST(SuitesTest, SyntheticIntervalsCoverTheTruthAtTheirLevel) {
+void ExpectSyntheticCoverage(Derivatives derivatives) {
   SuiteOptions o = Options();
   o.replicates = 60;  // 3 tires x 60 x 10 parameters = 1800 intervals
+  o.derivatives = derivatives;
   SyntheticSuite r;
   const Status s = RunSyntheticSuite(o, &r);
   ASSERT_TRUE(s.ok()) << s.message;
@@ -34,6 +35,14 @@ TEST(SuitesTest, SyntheticIntervalsCoverTheTruthAtTheirLevel) {
     EXPECT_NEAR(tire.median_error_over_std, 0.674, 0.15) << tire.tire;
   }
   testing::ExpectRoundTrip(BenchSyntheticReport{{}, r});
+}
+
+TEST(SuitesTest, SyntheticIntervalsCoverTheTruthAtTheirLevel) {
+  ExpectSyntheticCoverage(Derivatives::kNumeric);
+}
+
+TEST(SuitesTest, SyntheticIntervalsCoverTheTruthWithAnalyticDerivatives) {
+  ExpectSyntheticCoverage(Derivatives::kAnalytic);
 }
 
 TEST(SuitesTest, RollingTireIsIdentifiedStandingAndOnTheDrum) {

@@ -238,11 +238,12 @@ std::string Scratch(const std::string& name) {
   return dir + name;
 }
 
-RunResult Ringid(const std::string& args) {
-  const std::string err = Scratch("stderr.txt");
-  const std::string cmd = std::string(RINGID_BINARY) + " " + args + " > /dev/null 2> " + err;
+RunResult Ringid(const std::string& args, const std::string& cwd) {
+  const std::string err = Scratch("stderr.txt"), out = Scratch("stdout.txt");
+  const std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") +
+                          std::string(RINGID_BINARY) + " " + args + " > " + out + " 2> " + err;
   const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(err)};
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(err), ReadFile(out)};
 }
 
 bool Exists(const std::string& path) {

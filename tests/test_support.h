@@ -35,12 +35,13 @@ struct MalformedDataset {
 };
 std::vector<MalformedDataset> MalformedDatasets();
 
-// The ringid executable, run with `args` (stdout discarded).
+// The ringid executable, run with `args` (in directory `cwd` if given).
 struct RunResult {
   int status;       // exit status, -1 when killed
   std::string err;  // what it wrote on stderr
+  std::string out;  // and on stdout
 };
-RunResult Ringid(const std::string& args);
+RunResult Ringid(const std::string& args, const std::string& cwd = "");
 // A scratch path private to this test process: ctest runs tests in parallel.
 std::string Scratch(const std::string& name);
 bool Exists(const std::string& path);

@@ -32,6 +32,11 @@ FactRows SummaryFacts(const DiagnoseReport& report) {
           {"verdict", TextCell(EffectName(r.verdict))},
           {"explanation", TextCell(r.explanation)},
           {"indistinguishable from", ListCell(EffectNames(r.indistinguishable))},
+          {"how the group is decided",
+           TextCell("every fitted effect whose χ² differs from the verdict's by less than the χ² "
+                    "significant at the level below, on as many degrees of freedom as their numbers "
+                    "of parameters differ (at least 1): a likelihood-ratio threshold")},
+          {"significance level (effects and group)", NumberCell(r.level)},
           {"gap before: χ²", NumberCell(r.chi2_before)},
           {"gap before: degrees of freedom", NumberCell(r.dof, "%.0f")},
           {"gap before: χ² in excess of its dof", NumberCell(r.gap_before)},
@@ -112,6 +117,8 @@ Row EffectRow(const EffectFit& fit) {
           NumberCell(shown(fit.aic)),
           NumberCell(shown(fit.bic)),
           YesNoCell(fit.supported),
+          NumberCell(shown(fit.chi2_above_verdict)),
+          NumberCell(shown(fit.group_threshold)),
           ValuesCell(fit)};
 }
 
@@ -120,7 +127,8 @@ void EffectsSection(const DiagnosisReport& report, Page* page) {
   for (const EffectFit& fit : report.ranking) rows.push_back(EffectRow(fit));
   page->Heading("Effects, best first");
   page->Table({"effect", "fitted", "gap after", "shrink (%)", "likelihood ratio", "p",
-               "extra parameters", "AIC", "BIC", "supported", "values"},
+               "extra parameters", "AIC", "BIC", "supported", "χ² above the verdict's",
+               "group threshold", "values"},
               rows);
 }
 

@@ -24,7 +24,9 @@ void SummarySection(const DatasetBody<IdentifiabilityReport>& body, Page* page) 
                  {"weighted residuals", NumberCell(r.num_residuals, "%.0f")},
                  {"condition number", NumberCell(r.condition_number)},
                  {"rank explanation", TextCell(r.rank_explanation)},
-                 {"largest identifiable subset", ListCell(r.identifiable_subset)},
+                 {"largest identifiable subset (pivoted QR over the parameters with no component "
+                  "in a free direction)",
+                  r.identifiable_subset.empty() ? TextCell("none") : ListCell(r.identifiable_subset)},
                  {"seconds", NumberCell(r.seconds)}});
 }
 

@@ -28,7 +28,7 @@ void ProvenanceSection(const Provenance& p, Page* page) {
   page->Facts({{"ringid version", TextCell(p.ringid_version)},
                {"command line", TextCell(command)},
                {"seed", NumberCell(p.seed ? std::optional<double>(*p.seed) : std::nullopt, "%.0f")},
-               {"derivatives", TextCell(p.derivatives)}});
+               {"derivatives", TextCell(ToString(p.derivatives))}});
   std::vector<Row> rows;
   for (const InputFile& f : p.inputs) {
     rows.push_back({TextCell(f.role), TextCell(f.path), TextCell(f.sha256.empty() ? "–" : f.sha256)});
