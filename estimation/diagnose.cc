@@ -177,6 +177,8 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
     const Eigen::VectorXd j = J.col(c);
     const double outside = (j - U * (U.transpose() * j)).norm();
     const Param p = setup.free()[c];
+    // A parameter that cannot be 0 (the hub mass m_a) sizes nothing.
+    if (Info(p).domain == Domain::kPositive) continue;
     out[ParamName(p)] = outside > 0 ? std::sqrt(detect) / outside * TypicalScale(p) : INFINITY;
   }
   return out;

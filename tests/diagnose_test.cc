@@ -153,6 +153,19 @@ TEST(DiagnoseTest, ThePapersData) {
   Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
+  // A detectable size is stated for the parameters that size an effect (0 is
+  // the baseline), never for the hub mass m_a, free here, which sizes nothing
+  // (docs/conventions.md §4).
+  for (const EffectFit& f : r.ranking) {
+    ASSERT_TRUE(f.effect);
+    for (const auto& [name, size] : f.minimal_detectable) {
+      const auto p = ParseParam(name);
+      ASSERT_TRUE(p.has_value()) << name;
+      const auto& mine = f.effect->parameters();
+      EXPECT_NE(std::find(mine.begin(), mine.end(), *p), mine.end()) << name;
+      EXPECT_NE(*p, Param::m_a) << EffectName(f.effect);
+    }
+  }
   // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
   // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits: a yaw
   // stiffness is needed. At standstill contact yaw stiffness and an untied
