@@ -30,15 +30,6 @@ const char* GroupText(Group g) {
   return "";
 }
 
-const char* PlaneText(Plane p) {
-  switch (p) {
-    case Plane::kInPlane: return "in_plane";
-    case Plane::kOutOfPlane: return "out_of_plane";
-    case Plane::kHub: return "hub (model output only)";
-  }
-  return "";
-}
-
 std::string Number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
@@ -85,11 +76,12 @@ std::string ReferenceMarkdown() {
   o << "\n## Mode labels\n\n"
        "A dataset's `label`; `plane` must agree. The home degree of freedom is where the mode's\n"
        "motion is largest in a typical tire; labels themselves come from strain energy\n"
-       "(README, model.md section 9).\n\n"
+       "(README, model.md section 9). The hub labels come from the hub_compliance effect and\n"
+       "appear in model output only; a dataset that names them is refused.\n\n"
        "| label | plane | home degree of freedom |\n| --- | --- | --- |\n";
   for (int l = 0; l < kNumLabels; ++l) {
     const ModeLabel label = static_cast<ModeLabel>(l);
-    o << "| `" << LabelName(label) << "` | " << PlaneText(LabelPlane(label)) << " | `"
+    o << "| `" << LabelName(label) << "` | " << ToString(LabelPlane(label)) << " | `"
       << DofName(LabelHome(label)) << "` |\n";
   }
   o << "\n## Effects\n\n"

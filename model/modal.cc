@@ -183,7 +183,6 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
     for (int a = 1; a < k; ++a) {
       if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
-    d->pivot = dofs[big];
     CVec inverse_gap(n);
     for (int o = 0; o < n; ++o) inverse_gap[o] = o == j ? 0.0 : 1.0 / (lambda[j] - lambda[o]);
     for (const auto& [p, entries] : partials) {

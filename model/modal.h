@@ -29,7 +29,6 @@ using RealShapeVector = Eigen::Matrix<double, kNumDofs, 1>;
 struct ModeDerivatives {
   Eigen::Matrix<std::complex<double>, 1, kNumParams> eigenvalue;
   Eigen::Matrix<std::complex<double>, kNumDofs, kNumParams> shape;
-  int pivot = 0;  // the component Mode::shape is scaled by
 
   double Frequency(int p) const;  // d frequency_hz / d p
   double DampingRatio(const std::complex<double>& lambda, int p) const;
