@@ -7,7 +7,9 @@
 #include <optional>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include "model/assignment.h"
 
@@ -19,12 +21,14 @@ namespace {
 
 constexpr int kMaxLags = 2;
 constexpr int kMaxState = 2 * kNumDofs + kMaxLags;
+// Real matrices on the stack (Eigen leaves them uninitialised); complex ones
+// on the heap, since std::complex zero-initialises a fixed-size array.
 using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxState,
                           kMaxState>;
-using CMat = Eigen::Matrix<std::complex<double>, Eigen::Dynamic,
-                           Eigen::Dynamic, 0, kMaxState, kMaxState>;
-using CVec = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0,
-                           kMaxState, 1>;
+using CMat = Eigen::MatrixXcd;
+using CVec = Eigen::VectorXcd;
+// Over the degrees of freedom of one block: small enough to zero-initialise.
+using DofVec = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kNumDofs, 1>;
 
 int Root(std::array<int, kNumDofs>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -32,14 +36,17 @@ int Root(std::array<int, kNumDofs>& parent, int i) {
 }
 
 // w^T K_block v over the degrees of freedom `dofs`.
-double Bilinear(const CVec& w, const MechanicalSystem::Matrix& K,
-                const std::vector<int>& dofs, const CVec& v) {
+std::complex<double> Bilinear(const DofVec& w, const MechanicalSystem::Matrix& K,
+                const std::vector<int>& dofs, const DofVec& v) {
   std::complex<double> sum = 0;
   const int k = static_cast<int>(dofs.size());
   for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b) sum += w[a] * K(dofs[a], dofs[b]) * v[b];
+    for (int b = 0; b < k; ++b) {
+      const double kab = K(dofs[a], dofs[b]);
+      if (kab != 0) sum += w[a] * (kab * v[b]);  // a label's stiffness is sparse
+    }
   }
-  return std::abs(sum);
+  return sum;
 }
 
 int Index(const std::vector<int>& dofs, Dof d) {
@@ -81,21 +88,18 @@ using MatOf = typename MatrixOf<T>::type;
 
 // Eq. (13): A = [[0, I], [-M^-1 K, -M^-1 C]] over the block; rolling,
 // docs/rolling.md eq. (R8) appends the slip states zeta, whose force
-// replaces the standing stiffness (K / sigma) f d^T that K holds. Also
-// returns M^-1 and the balancing frequency w (rad/s). Written once for double
-// and ParameterJet (the derivatives).
+// replaces the standing stiffness (K / sigma) f d^T that K holds. M is
+// diagonal by construction (BasicSystem::AddMass). Also returns the balancing
+// frequency w (rad/s). Written once for double and ParameterJet (the
+// derivatives).
 template <class T>
 MatOf<T> StateMatrix(const BasicSystem<T>& s, const std::vector<int>& dofs,
-                     const std::vector<int>& lags, MatOf<T>* Minv_out, double* w_out) {
+                     const std::vector<int>& lags, double* w_out) {
   const int k = static_cast<int>(dofs.size());
   const int m = static_cast<int>(lags.size());
-  MatOf<T> M(k, k), C(k, k), K(k, k);
+  MatOf<T> K(k, k);
   for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b) {
-      M(a, b) = s.M()(dofs[a], dofs[b]);
-      C(a, b) = s.C()(dofs[a], dofs[b]);
-      K(a, b) = s.K()(dofs[a], dofs[b]);
-    }
+    for (int b = 0; b < k; ++b) K(a, b) = s.K()(dofs[a], dofs[b]);
   }
   MatOf<T> A = MatOf<T>::Zero(2 * k + m, 2 * k + m);
   MatOf<T> F = MatOf<T>::Zero(k, m);
@@ -127,19 +131,64 @@ MatOf<T> StateMatrix(const BasicSystem<T>& s, const std::vector<int>& dofs,
   // about 3e-10 in frequency against LAPACK. A similarity: eigenvalues and
   // the displacement rows of eigenvectors are unchanged (docs/model.md §8).
   double w2 = 0;
-  for (int a = 0; a < k; ++a) w2 = std::max(w2, Value(K(a, a)) / Value(M(a, a)));
+  for (int a = 0; a < k; ++a) w2 = std::max(w2, Value(K(a, a)) / Value(s.M()(dofs[a], dofs[a])));
   const double w = w2 > 0 && std::isfinite(w2) ? std::exp2(std::round(0.5 * std::log2(w2))) : 1;
   for (int j = 0; j < m; ++j) {
     for (int b = 0; b < k; ++b) A(2 * k + j, k + b) *= T(w);
   }
-  const MatOf<T> Minv = M.inverse();
-  for (int a = 0; a < k; ++a) A(a, k + a) = T(w);
-  A.block(k, 0, k, k) = -Minv * K / T(w);
-  A.block(k, k, k, k) = -Minv * C;
-  if (m > 0) A.block(k, 2 * k, k, m) = Minv * F / T(w);
-  *Minv_out = Minv;
+  for (int a = 0; a < k; ++a) {
+    const T inverse_mass = T(1) / s.M()(dofs[a], dofs[a]);
+    A(a, k + a) = T(w);
+    for (int b = 0; b < k; ++b) {
+      A(k + a, b) = -K(a, b) * inverse_mass / T(w);
+      A(k + a, k + b) = -s.C()(dofs[a], dofs[b]) * inverse_mass;
+    }
+    for (int j = 0; j < m; ++j) A(k + a, 2 * k + j) = F(a, j) * inverse_mass / T(w);
+  }
   *w_out = w;
   return A;
+}
+
+// A w with w^T B = 0 for B = lambda^2 M + lambda C + K over the block,
+// singular of rank k - 1 at an eigenvalue: the largest row of the adjugate
+// ((adj B) B = det B I = 0) up to 3 x 3, else the singular vector of B^T
+// with the least singular value.
+DofVec LeftNullVector(const MechanicalSystem& s, const std::vector<int>& dofs,
+                      const std::complex<double>& lambda) {
+  const int k = static_cast<int>(dofs.size());
+  const auto B = [&](int a, int b) {
+    const int i = dofs[a], j = dofs[b];
+    return (lambda * s.M()(i, j) + s.C()(i, j)) * lambda + s.K()(i, j);
+  };
+  DofVec w(k);
+  if (k == 1) {
+    w[0] = 1;
+  } else if (k == 2) {
+    const Eigen::Vector2cd r0(B(1, 1), -B(0, 1)), r1(-B(1, 0), B(0, 0));
+    w = r0.squaredNorm() >= r1.squaredNorm() ? r0 : r1;
+  } else if (k == 3) {
+    Eigen::Matrix3cd b;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) b(i, j) = B(i, j);
+    }
+    double largest = -1;
+    for (int i = 0; i < 3; ++i) {
+      // Eigen's cross product of complex vectors is conjugated.
+      const Eigen::Vector3cd row = b.col((i + 1) % 3).cross(b.col((i + 2) % 3)).conjugate();
+      if (row.squaredNorm() > largest) {
+        largest = row.squaredNorm();
+        w = row;
+      }
+    }
+  } else {
+    CMat b(k, k);
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; j < k; ++j) b(i, j) = B(i, j);
+    }
+    const Eigen::JacobiSVD<CMat> svd(b.transpose(), Eigen::ComputeFullV);
+    w = svd.matrixV().col(k - 1);
+  }
+  return w;
 }
 
 // The derivatives of every oscillating mode of the block (docs/model.md
@@ -211,9 +260,8 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     out->error = "more slip lags than the state vector holds";
     return false;
   }
-  Mat Minv;
   double w = 1;
-  const Mat A = StateMatrix(s, dofs, lags, &Minv, &w);
+  const Mat A = StateMatrix(s, dofs, lags, &w);
   if (!A.allFinite()) {
     out->error = "state matrix is not finite";
     return false;
@@ -223,16 +271,26 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     out->error = "eigen-solution did not converge";
     return false;
   }
-  const CVec lambda = es.eigenvalues();
-  const CMat V = es.eigenvectors();
-  if (!lambda.allFinite() || !V.allFinite()) {
+  // A P = P D with D block diagonal: a 2x2 block [[u, v], [-v, u]] at
+  // columns j, j+1 is the pair u +- i v with eigenvectors P_j +- i P_j+1.
+  const Mat D = es.pseudoEigenvalueMatrix();
+  const Mat& P = es.pseudoEigenvectors();
+  if (!D.allFinite() || !P.allFinite()) {
     out->error = "eigen-solution is not finite";
     return false;
   }
-  // Rows of V^-1 are the left eigenvectors, scaled so that Y V = I.
-  Eigen::PartialPivLU<CMat> vlu(V);
-  const CMat Y = vlu.inverse();
-  const bool have_left = Y.allFinite();
+  const int n = 2 * k + m;
+  // Left eigenvectors (rows of V^-1) where the modes need them: at speed,
+  // for the energy shares, and for derivatives.
+  CVec lambda;
+  CMat V, Y;
+  bool have_left = false;
+  if (jets || m > 0) {
+    lambda = es.eigenvalues();
+    V = es.eigenvectors();
+    Y = Eigen::PartialPivLU<CMat>(V).inverse();
+    have_left = Y.allFinite();
+  }
 
   std::vector<ModeLabel> labels;
   for (int l = 0; l < kNumLabels; ++l) {
@@ -243,58 +301,71 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     }
   }
 
-  // Unlabelled couplings (k_xy) count in the total, not for any label.
-  MechanicalSystem::Matrix rest = s.K();
-  for (ModeLabel l : labels) rest -= s.K_label(l);
-  const CMat Minv_T = Minv.transpose().cast<std::complex<double>>();
 
   std::vector<Mode> modes;
   std::vector<int> columns;  // of each mode in V
-  for (int j = 0; j < 2 * k + m; ++j) {
-    const std::complex<double> lam = lambda[j];
+  modes.reserve(k + m);
+  columns.reserve(k + m);
+  for (int j = 0; j < n; ++j) {
+    const bool pair = j + 1 < n && D(j + 1, j) != 0;
+    const std::complex<double> lam(D(j, j), pair ? std::abs(D(j, j + 1)) : 0.0);
     const double tiny = 1e-10 * std::max(1.0, std::abs(lam));
     // A rigid-body root (a free spin) is a double zero, which rounding
     // splits into a real or an imaginary pair near sqrt(eps) w: zero either way.
     const bool zero = std::abs(lam) <= 1e-6 * w;
     if (zero || std::abs(lam.imag()) <= tiny) {
       out->real_roots.push_back(zero ? 0.0 : lam.real());
+      if (pair) out->real_roots.push_back(zero ? 0.0 : lam.real());
+      j += pair;
       continue;
     }
-    if (!(lam.imag() > tiny)) continue;
     Mode mode;
     mode.eigenvalue = lam;
     mode.frequency_hz = lam.imag() / (2 * M_PI);
     mode.damping_ratio = -lam.real() / std::abs(lam);
-    CVec v = V.col(j).head(k);
-    // For w^T (lambda^2 M + lambda C + K) = 0: w = M^-T y2 (see docs/model.md
-    // section 9).
-    CVec w = have_left ? CVec(Minv_T * Y.row(j).segment(k, k).transpose())
-                       : CVec(v.conjugate());
-    mode.energy.fill(0);
-    double labelled = 0;
-    for (ModeLabel l : labels) {
-      const double e = Bilinear(w, s.K_label(l), dofs, v);
-      mode.energy[static_cast<int>(l)] = e;
-      labelled += e;
+    const double sign = D(j, j + 1) > 0 ? 1 : -1;
+    DofVec v(k);
+    for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
+    // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
+    // standstill the left null vector of that k x k matrix, at speed
+    // w = M^-T y2 from the left eigenvector y of the state matrix.
+    const int col = jets || m > 0 ? (lambda[j].imag() > 0 ? j : j + 1) : j;
+    DofVec w_left;
+    if (m > 0) {
+      w_left = v.conjugate();
+      if (have_left) {
+        for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
+      }
+    } else {
+      w_left = LeftNullVector(s, dofs, lam);
     }
-    double total = labelled + Bilinear(w, rest, dofs, v);
+    mode.energy.fill(0);
+    // Unlabelled couplings (k_xy) count in the total, not for any label.
+    std::complex<double> rest = Bilinear(w_left, s.K(), dofs, v);
+    double total = 0;
+    for (ModeLabel l : labels) {
+      const std::complex<double> e = Bilinear(w_left, s.K_label(l), dofs, v);
+      mode.energy[static_cast<int>(l)] = std::abs(e);
+      total += std::abs(e);
+      rest -= e;
+    }
+    total += std::abs(rest);
     if (!(total > 0) || !std::isfinite(total)) total = 1;
     for (double& e : mode.energy) e /= total;
     int big = 0;
     for (int a = 1; a < k; ++a) {
       if (std::norm(v[a]) > std::norm(v[big])) big = a;
     }
-    const std::complex<double> pivot = v[big];
+    const std::complex<double> inverse_pivot = 1.0 / v[big];
     mode.shape.setZero();
-    for (int a = 0; a < k; ++a) mode.shape[dofs[a]] = v[a] / pivot;
+    for (int a = 0; a < k; ++a) mode.shape[dofs[a]] = v[a] * inverse_pivot;
     modes.push_back(mode);
-    columns.push_back(j);
+    columns.push_back(col);
+    ++j;
   }
   if (jets && have_left && out->derivatives_undefined.empty()) {
-    MatOf<ParameterJet> unused;
     double same_w;
-    const MatOf<ParameterJet> dA =
-        StateMatrix(*jets, dofs, BlockLags(*jets, dofs), &unused, &same_w);
+    const MatOf<ParameterJet> dA = StateMatrix(*jets, dofs, BlockLags(*jets, dofs), &same_w);
     if (!AddDerivatives(dA, lambda, V, Y, dofs, columns, &modes, &out->derivatives_undefined)) {
       for (Mode& mode : modes) mode.derivatives.reset();
     }
@@ -318,7 +389,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     }
     modes[i].label = labels[pick[i]];
     used[pick[i]] = true;
-    out->modes.push_back(modes[i]);
+    out->modes.push_back(std::move(modes[i]));
   }
   for (size_t l = 0; l < labels.size(); ++l) {
     if (!used[l]) out->vanished.push_back(labels[l]);
@@ -359,6 +430,7 @@ const Mode* ModalSolution::Find(ModeLabel label) const {
 
 ModalSolution SolveModes(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets) {
   ModalSolution out;
+  out.modes.reserve(kNumLabels);
   std::vector<int> active;
   for (int i = 0; i < kNumDofs; ++i) {
     if (s.active(static_cast<Dof>(i))) active.push_back(i);

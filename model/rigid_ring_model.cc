@@ -141,10 +141,10 @@ ModalSolution RigidRingModel::StandingCache::Get(
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& [key, solution] : entries_) {
-      if (std::memcmp(&key, &p, sizeof(Parameters)) == 0) return solution;
+      if (std::memcmp(&key, &p, sizeof(Parameters)) == 0) return *solution;
     }
   }
-  ModalSolution solution = solve();
+  auto solution = std::make_shared<const ModalSolution>(solve());
   std::lock_guard<std::mutex> lock(mutex_);
   if (static_cast<int>(entries_.size()) < kCapacity) {
     entries_.emplace_back(p, solution);
@@ -152,7 +152,7 @@ ModalSolution RigidRingModel::StandingCache::Get(
     entries_[next_] = {p, solution};
     next_ = (next_ + 1) % kCapacity;
   }
-  return solution;
+  return *solution;
 }
 
 bool RigidRingModel::Has(const Effect* effect) const {

@@ -72,7 +72,7 @@ class RigidRingModel final : public ModalModel {
    private:
     static constexpr int kCapacity = 64;
     mutable std::mutex mutex_;
-    mutable std::vector<std::pair<Parameters, ModalSolution>> entries_;
+    mutable std::vector<std::pair<Parameters, std::shared_ptr<const ModalSolution>>> entries_;
     mutable int next_ = 0;
   };
 
