@@ -6,7 +6,7 @@
 namespace ringid {
 namespace internal {
 
-std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score) {
+std::vector<int> AssignMaxScore(const Eigen::Ref<const Eigen::MatrixXd>& score) {
   const int rows = static_cast<int>(score.rows());
   const int cols = static_cast<int>(score.cols());
   std::vector<int> result(rows, -1);

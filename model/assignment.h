@@ -13,7 +13,7 @@ namespace internal {
 
 // Returns, for each row, the column assigned to it so that no column is used
 // twice and the sum of scores is largest. Needs rows <= cols <= 16.
-std::vector<int> AssignMaxScore(const Eigen::MatrixXd& score);
+std::vector<int> AssignMaxScore(const Eigen::Ref<const Eigen::MatrixXd>& score);
 
 }  // namespace internal
 

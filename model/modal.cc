@@ -293,6 +293,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   }
 
   std::vector<ModeLabel> labels;
+  labels.reserve(k);
   for (int l = 0; l < kNumLabels; ++l) {
     const auto label = static_cast<ModeLabel>(l);
     const int home = static_cast<int>(LabelHome(label));
@@ -300,7 +301,16 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
       labels.push_back(label);
     }
   }
-
+  // Where M, C and K are symmetric over the block, left and right vectors
+  // of lambda^2 M + lambda C + K coincide.
+  bool symmetric = true;
+  for (int a = 0; a < k && symmetric; ++a) {
+    for (int b = 0; b < a && symmetric; ++b) {
+      const int i = dofs[a], j = dofs[b];
+      symmetric = s.M()(i, j) == s.M()(j, i) && s.C()(i, j) == s.C()(j, i) &&
+                  s.K()(i, j) == s.K()(j, i);
+    }
+  }
 
   std::vector<Mode> modes;
   std::vector<int> columns;  // of each mode in V
@@ -327,7 +337,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     DofVec v(k);
     for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
     // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
-    // standstill the left null vector of that k x k matrix, at speed
+    // standstill v if symmetric, else the left null vector, at speed
     // w = M^-T y2 from the left eigenvector y of the state matrix.
     const int col = jets || m > 0 ? (lambda[j].imag() > 0 ? j : j + 1) : j;
     DofVec w_left;
@@ -337,7 +347,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
         for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
       }
     } else {
-      w_left = LeftNullVector(s, dofs, lam);
+      w_left = symmetric ? v : LeftNullVector(s, dofs, lam);
     }
     mode.energy.fill(0);
     // Unlabelled couplings (k_xy) count in the total, not for any label.
@@ -373,7 +383,8 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     out->derivatives_undefined = "the eigenvectors of a block are not independent";
   }
   // One-to-one labels: maximise the product of energy shares.
-  Eigen::MatrixXd score(modes.size(), labels.size());
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kNumLabels, kNumLabels> score(
+      modes.size(), labels.size());
   for (size_t i = 0; i < modes.size(); ++i) {
     for (size_t l = 0; l < labels.size(); ++l) {
       const double e = modes[i].energy[static_cast<int>(labels[l])];
@@ -381,7 +392,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     }
   }
   const std::vector<int> pick = AssignMaxScore(score);
-  std::vector<bool> used(labels.size(), false);
+  std::array<bool, kNumLabels> used{};
   for (size_t i = 0; i < modes.size(); ++i) {
     if (pick[i] < 0) {
       out->error = "could not label the modes of a block";
