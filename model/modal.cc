@@ -234,15 +234,22 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
     }
     CVec inverse_gap(n);
     for (int o = 0; o < n; ++o) inverse_gap[o] = o == j ? 0.0 : 1.0 / (lambda[j] - lambda[o]);
-    for (const auto& [p, entries] : partials) {
-      // g = Y dA v: g_j = d lambda, g_o / (lambda_j - lambda_o) the share of v_o in d v.
-      CVec g = CVec::Zero(n);
-      for (const Entry& e : entries) g += (e.value * v[e.col]) * Y.col(e.row);
-      d->eigenvalue[p] = g[j];
-      const CVec dv = V.topRows(k) * g.cwiseProduct(inverse_gap);
-      // shape = v / v_big: d shape = (dv - shape dv_big) / v_big.
+    // Column q of R is dA_q v, of G = Y R: G_jq = d lambda, G_oq / (lambda_j -
+    // lambda_o) the share of v_o in d v.
+    const int np = static_cast<int>(partials.size());
+    CMat R = CMat::Zero(n, np);
+    for (int q = 0; q < np; ++q) {
+      for (const Entry& e : partials[q].second) R(e.row, q) += e.value * v[e.col];
+    }
+    const CMat G = Y * R;
+    const CMat dV = V.topRows(k) * (inverse_gap.asDiagonal() * G);
+    // shape = v / v_big: d shape = (dv - shape dv_big) / v_big.
+    const std::complex<double> inverse_big = 1.0 / v[big];
+    for (int q = 0; q < np; ++q) {
+      const int p = partials[q].first;
+      d->eigenvalue[p] = G(j, q);
       for (int a = 0; a < k; ++a) {
-        d->shape(dofs[a], p) = (dv[a] - v[a] / v[big] * dv[big]) / v[big];
+        d->shape(dofs[a], p) = (dV(a, q) - v[a] * inverse_big * dV(big, q)) * inverse_big;
       }
     }
     mode.derivatives = std::move(d);
@@ -286,8 +293,21 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   CMat V, Y;
   bool have_left = false;
   if (jets || m > 0) {
-    lambda = es.eigenvalues();
-    V = es.eigenvectors();
+    lambda.resize(n);
+    V.resize(n, n);
+    for (int j = 0; j < n; ++j) {
+      if (j + 1 < n && D(j + 1, j) != 0) {
+        const std::complex<double> i(0, 1);
+        lambda[j] = {D(j, j), D(j, j + 1)};
+        lambda[j + 1] = std::conj(lambda[j]);
+        V.col(j) = P.col(j) + i * P.col(j + 1);
+        V.col(j + 1) = P.col(j) - i * P.col(j + 1);
+        ++j;
+      } else {
+        lambda[j] = D(j, j);
+        V.col(j) = P.col(j);
+      }
+    }
     Y = Eigen::PartialPivLU<CMat>(V).inverse();
     have_left = Y.allFinite();
   }
@@ -339,7 +359,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
     // standstill v if symmetric, else the left null vector, at speed
     // w = M^-T y2 from the left eigenvector y of the state matrix.
-    const int col = jets || m > 0 ? (lambda[j].imag() > 0 ? j : j + 1) : j;
+    const int col = sign > 0 ? j : j + 1;  // of v in V
     DofVec w_left;
     if (m > 0) {
       w_left = v.conjugate();
