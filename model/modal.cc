@@ -389,7 +389,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     const std::complex<double> inverse_pivot = 1.0 / v[big];
     mode.shape.setZero();
     for (int a = 0; a < k; ++a) mode.shape[dofs[a]] = v[a] * inverse_pivot;
-    modes.push_back(mode);
+    modes.push_back(std::move(mode));
     columns.push_back(col);
     ++j;
   }
