@@ -813,8 +813,7 @@ int BenchCommand(int argc, char** argv) {
   }
   if (FLAGS_suite.empty()) return Usage("bench needs --suite=" + OneOf(FlagValues("suite")));
   if (!suite) {
-    return Usage("--suite: " + UnknownName("suite", FLAGS_suite, FlagValues("suite")) +
-                 "; speed: build/benchmarks/ringid_benchmarks");
+    return Usage("--suite: " + UnknownName("suite", FLAGS_suite, FlagValues("suite")));
   }
   const SuiteOutput r = suite->run(o, ThisRun(argc, argv, FLAGS_seed));
   if (r.status.invalid_input()) return Usage("--suite: " + r.status.message);
@@ -964,9 +963,9 @@ const std::vector<Command>& Commands() {
        "campaign as for identify",
        Joined(kFitFlags, kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
-       "the accuracy and conditioning suites, on the paper's data installed with\n"
-       "ringid, here in " + DataDir() + "/datasets/paper\n"
-       "(speed: build/benchmarks/ringid_benchmarks)",
+       "the accuracy, conditioning and speed suites, on the paper's data installed\n"
+       "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"
+       "and analytic derivatives side by side, whatever --derivatives says",
        {"suite", "replicates", "seed", "derivatives", "output", "markdown"}, BenchCommand},
       {"report", "--input=REPORT.json --output=FILE.html",
        "any JSON report of ringid as one self-contained HTML page: tables and\n"

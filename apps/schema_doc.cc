@@ -33,7 +33,8 @@ std::string ReportsMarkdown() {
          Section<BenchSyntheticReport>("ringid bench --suite=synthetic --output=FILE") +
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +
          Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE") +
-         Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE");
+         Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE") +
+         Section<BenchSpeedReport>("ringid bench --suite=speed --output=FILE");
 }
 
 }  // namespace ringid

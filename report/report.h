@@ -27,13 +27,15 @@ inline constexpr int kReportSchemaVersion = 3;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign,
-  kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling,  // validation/
+  // validation/
+  kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling, kBenchSpeed,
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 11> kNames = {
+  static constexpr std::array<const char*, 12> kNames = {
       "identify", "predict", "identifiability", "compare", "diagnose", "campaign",
-      "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis", "bench_rolling"};
+      "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis", "bench_rolling",
+      "bench_speed"};
 };
 
 struct InputFile {

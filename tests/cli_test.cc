@@ -633,7 +633,7 @@ TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
       {"simulate", {"--set=TEXT", "--shift=X  (default 0)", "--truth=TEXT",
                     "--speeds=TEXT  (default '0')"}},
       {"diagnose", {"--effects=LIST", "--jobs=N  (default 1)", "--shard=TEXT  (default '0/1')"}},
-      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling  (default none)",
+      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling|speed  (default none)",
                  "--replicates=N  (default 200)"}},
       {"report", {"--input=TEXT", "--figures_dir=TEXT"}},
       {"export", {"--parameters=TEXT  (default none)", "--set=TEXT",

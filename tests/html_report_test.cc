@@ -246,6 +246,24 @@ Made BenchDiagnosis() {
   return Render(path);
 }
 
+// The speed suite, timed briefly in process (the command times each case for
+// about half a second) and written as the suite writes it; made once.
+Made BenchSpeed() {
+  static const Made made = [] {
+    ringid::SuiteOptions o;
+    o.source_dir = RINGID_SOURCE_DIR;
+    o.speed_batches = 3;
+    o.speed_seconds_per_case = 0.01;
+    ringid::SpeedSuite suite;
+    const ringid::Status s = ringid::RunSpeedSuite(o, &suite);
+    EXPECT_TRUE(s.ok()) << s.message;
+    const std::string path = Scratch("bench_speed.json");
+    std::ofstream(path) << ringid::ReportText(ringid::BenchSpeedReport{{}, suite});
+    return Render(path);
+  }();
+  return made;
+}
+
 // `made`'s report changed by `change`, written beside it and rendered.
 Made Changed(const Made& made, const std::string& name, const std::function<void(json*)>& change) {
   json report = made.report;
@@ -570,6 +588,21 @@ TEST(HtmlReportTest, BenchDiagnosisDrawsTheConfusionCounts) {
   }
 }
 
+TEST(HtmlReportTest, BenchSpeedDrawsNumericAndAnalyticTimes) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = BenchSpeed();
+  ExpectWellFormed(m.html, 1);
+  const std::string svg = Figures(m.html);
+  for (const auto& [name, row] : m.report["rows"].items()) {
+    EXPECT_TRUE(row["numeric_seconds"].is_number()) << name;
+    EXPECT_NE(svg.find(">" + Shown(name) + "<"), std::string::npos) << name;
+    EXPECT_NE(m.html.find(">" + name + "<"), std::string::npos) << name;  // the table's row
+  }
+  EXPECT_NE(svg.find(">numeric<"), std::string::npos);
+  EXPECT_NE(svg.find(">analytic<"), std::string::npos);
+  EXPECT_NE(m.html.find("Targets (issue 13)"), std::string::npos);
+}
+
 TEST(HtmlReportTest, FiguresDirHoldsEachFigureAsAFile) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyPaper();
@@ -801,7 +834,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
                       Kind{"bench_diagnosis", BenchDiagnosis},
-                      Kind{"bench_rolling", [] { return Bench("rolling"); }}),
+                      Kind{"bench_rolling", [] { return Bench("rolling"); }},
+                      Kind{"bench_speed", BenchSpeed}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for

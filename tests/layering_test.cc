@@ -21,7 +21,8 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"report", {"model", "datasets", "estimation"}},
     {"validation", {"model", "datasets", "estimation", "report"}},
     {"apps", {"model", "datasets", "estimation", "report", "validation"}},
-    {"benchmarks", {"model", "datasets", "estimation", "report"}},
+    // validation/: the speed cases shared with `ringid bench --suite=speed`.
+    {"benchmarks", {"model", "datasets", "estimation", "report", "validation"}},
     {"examples", {"model", "datasets", "estimation", "report"}},
 };
 

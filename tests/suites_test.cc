@@ -1,11 +1,13 @@
 // The quick selection of the benchmark suites, with assertions on accuracy
 // and coverage (never on time).
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "validation/speed_cases.h"
 #include "validation/suites.h"
 #include "tests/round_trip.h"
 #include "tests/test_support.h"
@@ -140,6 +142,141 @@ TEST(SuitesTest, PaperSuiteReproducesTable3AndFitsTable1) {
   EXPECT_LT(r.identify[0].relative_error_in_plane_eq19, 1e-8);
   EXPECT_LT(r.identify[0].relative_error_out_of_plane_eq20, 1e-8);
   testing::ExpectRoundTrip(BenchPaperReport{{}, r});
+}
+
+// The speed suite, timed briefly: every case, both modes where they apply, and
+// ratios and verdicts that follow from the times. Never a time threshold: the
+// targets are the suite's to report, not the tests' to assert.
+TEST(SuitesTest, SpeedSuiteTimesEveryCaseNumericAndAnalyticSideBySide) {
+  SuiteOptions o = Options();
+  o.speed_batches = 3;
+  o.speed_seconds_per_case = 0.02;
+  int progress = 0;
+  o.on_case = [&](int done, int total) {
+    EXPECT_EQ(done, progress + 1);
+    EXPECT_GE(total, done);
+    progress = done;
+  };
+  SpeedSuite r;
+  const Status s = RunSpeedSuite(o, &r);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_GT(progress, 0);
+  EXPECT_EQ(r.batches, 3);
+  EXPECT_GT(r.seconds, 0);
+  const size_t cases = EnumNames<SpeedCase>::kNames.size();
+  ASSERT_EQ(r.rows.size(), cases);
+  for (size_t i = 0; i < cases; ++i) {
+    const SpeedRow& row = r.rows[i];
+    const SpeedCase c = static_cast<SpeedCase>(i);
+    ASSERT_EQ(row.name, c) << i;  // every case, once, in order
+    ASSERT_TRUE(row.numeric_seconds) << ToString(c);
+    EXPECT_GT(*row.numeric_seconds, 0) << ToString(c);
+    const bool analytic = c != SpeedCase::kBareEigenSolve && c != SpeedCase::kModelEvaluationRolling;
+    ASSERT_EQ(row.analytic_seconds.has_value(), analytic) << ToString(c);
+    if (analytic) EXPECT_GT(*row.analytic_seconds, 0) << ToString(c);
+    const bool target = c == SpeedCase::kModelEvaluation || c == SpeedCase::kIdentifyInPlane ||
+                        c == SpeedCase::kJointFitThreeConditions;
+    EXPECT_EQ(!row.target.empty(), target) << ToString(c);
+    EXPECT_EQ(row.met.has_value(), target) << ToString(c);
+    EXPECT_EQ(row.met, r.Met(c)) << ToString(c);
+  }
+  const auto row = [&](SpeedCase c) { return *r.Find(c); };
+  const SpeedRow evaluation = row(SpeedCase::kModelEvaluation);
+  const SpeedRow bare = row(SpeedCase::kBareEigenSolve);
+  const SpeedRow standing = row(SpeedCase::kJointFitStanding);
+  const SpeedRow three = row(SpeedCase::kJointFitThreeConditions);
+  ASSERT_TRUE(r.EvaluationOverBareSolve());
+  EXPECT_EQ(*r.EvaluationOverBareSolve(), *evaluation.numeric_seconds / *bare.numeric_seconds);
+  EXPECT_EQ(*r.DerivativesOverEvaluation(),
+            *evaluation.analytic_seconds / *evaluation.numeric_seconds);
+  EXPECT_EQ(*r.JointFitOverStanding(Derivatives::kNumeric),
+            *three.numeric_seconds / *standing.numeric_seconds);
+  EXPECT_EQ(*r.JointFitOverStanding(Derivatives::kAnalytic),
+            *three.analytic_seconds / *standing.analytic_seconds);
+  EXPECT_EQ(*evaluation.met, *r.EvaluationOverBareSolve() <= r.evaluation_over_bare_solve_max);
+  EXPECT_EQ(*row(SpeedCase::kIdentifyInPlane).met,
+            *row(SpeedCase::kIdentifyInPlane).analytic_seconds <= r.identify_in_plane_max_seconds);
+  EXPECT_EQ(*three.met,
+            *r.JointFitOverStanding(Derivatives::kAnalytic) <= r.joint_fit_over_standing_max);
+  const std::string md = r.Markdown();
+  for (const SpeedRow& x : r.rows) {
+    EXPECT_NE(md.find(std::string("| ") + SpeedCaseText(x.name) + " |"), std::string::npos)
+        << ToString(x.name);
+  }
+  testing::ExpectRoundTrip(BenchSpeedReport{{}, r});
+}
+
+// The ratios are derived: a report whose times were changed under them does
+// not read.
+TEST(SuitesTest, SpeedRatiosFollowTheTimes) {
+  SpeedSuite r;
+  const auto add = [&](SpeedCase c, std::optional<double> numeric, std::optional<double> analytic) {
+    r.rows.push_back({c, numeric, analytic, "", std::nullopt});
+  };
+  add(SpeedCase::kModelEvaluation, 12e-6, 36e-6);
+  add(SpeedCase::kBareEigenSolve, 10e-6, std::nullopt);
+  add(SpeedCase::kIdentifyInPlane, 1.2e-3, 0.9e-3);
+  add(SpeedCase::kJointFitStanding, 5e-3, 1e-3);
+  add(SpeedCase::kJointFitThreeConditions, 30e-3, 4e-3);
+  EXPECT_DOUBLE_EQ(*r.EvaluationOverBareSolve(), 1.2);
+  EXPECT_DOUBLE_EQ(*r.DerivativesOverEvaluation(), 3);
+  EXPECT_DOUBLE_EQ(*r.JointFitOverStanding(Derivatives::kNumeric), 6);
+  EXPECT_DOUBLE_EQ(*r.JointFitOverStanding(Derivatives::kAnalytic), 4);
+  EXPECT_EQ(r.Met(SpeedCase::kIdentifyInPlane), true);
+  EXPECT_EQ(r.Met(SpeedCase::kJointFitThreeConditions), true);  // 4x is within 4x
+  EXPECT_EQ(r.Met(SpeedCase::kJointFitStanding), std::nullopt);  // no target
+  r.rows[2].analytic_seconds = 1.1e-3;
+  EXPECT_EQ(r.Met(SpeedCase::kIdentifyInPlane), false);
+  r.rows[1].numeric_seconds = std::nullopt;  // a missing time: no ratio, no verdict
+  EXPECT_EQ(r.EvaluationOverBareSolve(), std::nullopt);
+  EXPECT_EQ(r.Met(SpeedCase::kModelEvaluation), std::nullopt);
+  r.rows[1].numeric_seconds = 10e-6;
+  testing::ExpectRoundTrip(BenchSpeedReport{{}, r});
+  Json tampered = Json::parse(ReportText(BenchSpeedReport{{}, r}));
+  tampered["rows"]["bare_eigen_solve"]["numeric_seconds"] = 5e-6;  // the ratio still says 1.2
+  BenchSpeedReport read;
+  std::string error;
+  EXPECT_FALSE(ReadReport(tampered, &read, &error));
+  EXPECT_NE(error.find("ratios.evaluation_over_bare_solve"), std::string::npos) << error;
+}
+
+TEST(SuitesTest, SpeedSuiteRefusesBadTiming) {
+  SpeedSuite r;
+  SuiteOptions o = Options();
+  o.speed_batches = 0;
+  EXPECT_TRUE(RunSpeedSuite(o, &r).invalid_input());
+  o = Options();
+  for (double seconds : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
+    o.speed_seconds_per_case = seconds;
+    EXPECT_TRUE(RunSpeedSuite(o, &r).invalid_input()) << seconds;
+  }
+}
+
+// The cases the Google Benchmark and the speed suite share.
+TEST(SuitesTest, SpeedCasesAreTheProblemsTheyName) {
+  Dataset in_plane, both;
+  ASSERT_TRUE(SpeedTable1(RINGID_SOURCE_DIR, true, &in_plane).ok());
+  ASSERT_TRUE(SpeedTable1(RINGID_SOURCE_DIR, false, &both).ok());
+  EXPECT_EQ(both.modes.size(), 7u);
+  EXPECT_EQ(in_plane.modes.size(), 4u);
+  for (const MeasuredMode& m : in_plane.modes) EXPECT_EQ(LabelPlane(m.label), Plane::kInPlane);
+  for (const auto& [p, v] : in_plane.initial) {
+    EXPECT_NE(Info(p).group, Group::kOutOfPlane) << ToString(p);  // held, not fitted
+  }
+  Parameters paper;
+  ASSERT_TRUE(SpeedPaperParameters(RINGID_SOURCE_DIR, &paper).ok());
+  const std::vector<SpeedBlock> blocks = BareEigenBlocks(paper);
+  ASSERT_EQ(blocks.size(), 3u);
+  EXPECT_EQ(blocks[0].rows(), 6);  // x_b, theta_a, theta_b and their velocities
+  EXPECT_EQ(blocks[1].rows(), 2);  // z_b
+  EXPECT_EQ(blocks[2].rows(), 6);  // y_b, gamma_b, psi_b
+  Dataset three;
+  ASSERT_TRUE(SpeedCarTire({0, 6, 12}, &three).ok());
+  EXPECT_EQ(three.conditions.size(), 3u);
+  EXPECT_EQ(three.initial.size(), 14u);
+  EXPECT_EQ(three.ties.size(), 4u);
+  Dataset missing;
+  EXPECT_TRUE(SpeedTable1("/nonexistent", false, &missing).invalid_input());
 }
 
 TEST(SuitesTest, ScaledTiresKeepTheirDampingRatios) {

@@ -1,6 +1,7 @@
 // The suites' Markdown tables, drawn from their typed reports.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "validation/suites.h"
@@ -16,6 +17,16 @@ std::string Format(const char* format, double v) {
 }
 
 std::string Percent(double fraction) { return Format("%.1f %%", 100 * fraction); }
+
+// A time per call in the unit that reads best: µs below 0.1 ms, ms below 1 s.
+std::string Seconds(std::optional<double> s) {
+  if (!s) return "-";
+  if (*s < 1e-4) return Format("%#.3g µs", 1e6 * *s);
+  if (*s < 1) return Format("%#.3g ms", 1e3 * *s);
+  return Format("%#.3g s", *s);
+}
+
+std::string Times(std::optional<double> ratio) { return ratio ? Format("%.2f×", *ratio) : "-"; }
 
 }  // namespace
 
@@ -132,6 +143,39 @@ std::string RollingSuite::Markdown() const {
          "). Each parameter's own coverage is reported; outside that range: " +
          (outside.empty() ? std::string("none") : outside) + ". " +
          (Pass() ? "PASS" : "FAIL") + ".\n";
+}
+
+std::string SpeedSuite::Markdown() const {
+  std::string md =
+      "Median time per call over " + std::to_string(batches) + " batches, each case and mode "
+      "about " + Format("%g", seconds_per_case) +
+      " s in all, on this machine and build. numeric: central-difference Jacobians (an "
+      "evaluation: without derivatives); analytic: exact Jacobians (an evaluation: with every "
+      "mode's derivatives). Both always, whatever --derivatives says.\n\n"
+      "| case | numeric | analytic | numeric / analytic | target | met |\n"
+      "| --- | --- | --- | --- | --- | --- |\n";
+  for (const SpeedRow& r : rows) {
+    std::optional<double> speedup;
+    if (r.numeric_seconds && r.analytic_seconds && *r.analytic_seconds > 0) {
+      speedup = *r.numeric_seconds / *r.analytic_seconds;
+    }
+    // Whether it is met, with the figure the target bounds.
+    std::string met = "-";
+    std::optional<double> value;
+    double limit = 0;
+    if (r.met && Target(r.name, &value, &limit)) {
+      met = std::string(*r.met ? "yes" : "NO") + " (" +
+            (r.name == SpeedCase::kIdentifyInPlane ? Seconds(value) : Times(value)) + ")";
+    }
+    md += "| " + std::string(SpeedCaseText(r.name)) + " | " + Seconds(r.numeric_seconds) +
+          " | " + Seconds(r.analytic_seconds) + " | " + Times(speedup) + " | " +
+          (r.target.empty() ? "-" : r.target) + " | " + met + " |\n";
+  }
+  return md + "\nThe evaluation with derivatives takes " + Times(DerivativesOverEvaluation()) +
+         " the evaluation alone; the three-condition joint fit takes " +
+         Times(JointFitOverStanding(Derivatives::kNumeric)) +
+         " the standing one with numeric derivatives. " + Format("%.1f s", seconds) +
+         " in all.\n";
 }
 
 }  // namespace ringid

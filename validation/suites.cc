@@ -391,6 +391,9 @@ const std::vector<SuiteEntry>& Suites() {
       {"rolling", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchRollingReport>(RunRollingSuite, o, p);
        }},
+      {"speed", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchSpeedReport>(RunSpeedSuite, o, p);
+       }},
   };
   return suites;
 }

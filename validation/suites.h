@@ -4,6 +4,7 @@
 #ifndef RINGID_VALIDATION_SUITES_H_
 #define RINGID_VALIDATION_SUITES_H_
 
+#include <array>
 #include <functional>
 #include <map>
 #include <optional>
@@ -27,8 +28,12 @@ struct SuiteOptions {
   unsigned seed = 1;
   // rolling: the conditions measured, m/s (0: standing; the others on a drum).
   std::vector<double> speeds = {0, 6, 12};
-  // How every fit of the suite makes its Jacobians.
+  // How every fit of the suite makes its Jacobians (speed: both, always).
   Derivatives derivatives = Derivatives::kNumeric;
+  // speed: each case and mode is timed in `speed_batches` batches (the median
+  // per call is reported), together at least `speed_seconds_per_case` long.
+  int speed_batches = 7;
+  double speed_seconds_per_case = 0.5;
   // Called with (done, total) as the suite's cases finish.
   std::function<void(int, int)> on_case;
 };
@@ -283,17 +288,105 @@ struct RollingSuite {
   }
 };
 
+// --- speed: issue 13's speed figures measured in process, numeric and
+// analytic derivatives side by side, on the cases of validation/speed_cases.h
+// (the Google Benchmark's). Always both modes: --derivatives does not apply.
+enum class SpeedCase {
+  kModelEvaluation,         // numeric: the evaluation alone; analytic: with every mode's derivatives
+  kBareEigenSolve,          // Eigen's EigenSolver on the same blocks (numeric column)
+  kModelEvaluationRolling,  // the car tire at 6 m/s (numeric column)
+  kIdentifyInPlane,
+  kIdentifyBothPlanes,
+  kJointFitStanding,
+  kJointFitDrum6,
+  kJointFitThreeConditions,
+};
+template <>
+struct EnumNames<SpeedCase> {
+  static constexpr std::array<const char*, 8> kNames = {
+      "model_evaluation", "bare_eigen_solve", "model_evaluation_rolling",
+      "identify_in_plane", "identify_both_planes", "joint_fit_standing", "joint_fit_drum_6",
+      "joint_fit_standing_drum_6_drum_12"};
+};
+// What a case times, in words.
+const char* SpeedCaseText(SpeedCase c);
+
+struct SpeedRow {
+  SpeedCase name = SpeedCase::kModelEvaluation;
+  // Median seconds per call over the batches; null where the mode does not apply.
+  std::optional<double> numeric_seconds;
+  std::optional<double> analytic_seconds;
+  std::string target;       // issue 13's, in words; "" where it sets none
+  std::optional<bool> met;  // null where there is no target
+  template <class Archive>  // keyed by name
+  void Serialize(Archive* a) {
+    a->Derived("what", std::string(SpeedCaseText(name)));
+    a->Visit("numeric_seconds", &numeric_seconds);
+    a->Visit("analytic_seconds", &analytic_seconds);
+    a->Visit("target", &target);
+    a->Visit("met", &met);
+  }
+};
+
+struct SpeedSuite {
+  std::vector<SpeedRow> rows;
+  int batches = 0;              // per case and mode
+  double seconds_per_case = 0;  // aimed at per case and mode, all batches together
+  double seconds = 0;           // the whole suite, wall clock
+  // Issue 13's targets.
+  double evaluation_over_bare_solve_max = 1.2;     // numeric column
+  double identify_in_plane_max_seconds = 1e-3;     // analytic
+  double joint_fit_over_standing_max = 4;          // analytic, three conditions
+
+  const SpeedRow* Find(SpeedCase c) const;
+  // The labelled evaluation over the bare solve (both numeric columns).
+  std::optional<double> EvaluationOverBareSolve() const;
+  // The evaluation with derivatives over the one without.
+  std::optional<double> DerivativesOverEvaluation() const;
+  // The three-condition joint fit over the standing one, in one mode.
+  std::optional<double> JointFitOverStanding(Derivatives d) const;
+  // The figure case c's target bounds (a ratio, or seconds) and its limit;
+  // false where c has none.
+  bool Target(SpeedCase c, std::optional<double>* value, double* limit) const;
+  // Whether case c meets its target, from the rows and the targets above;
+  // null where it has none or a time is missing.
+  std::optional<bool> Met(SpeedCase c) const;
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->VisitKeyed("rows", &rows, &SpeedRow::name);
+    a->Group("timing", [&](auto* g) {
+      g->Visit("batches", &batches);
+      g->Visit("seconds_per_case", &seconds_per_case);
+      g->Visit("seconds", &seconds);
+    });
+    a->Group("targets", [&](auto* g) {
+      g->Visit("evaluation_over_bare_solve_max", &evaluation_over_bare_solve_max);
+      g->Visit("identify_in_plane_analytic_max_seconds", &identify_in_plane_max_seconds);
+      g->Visit("joint_fit_over_standing_analytic_max", &joint_fit_over_standing_max);
+    });
+    a->Group("ratios", [&](auto* g) {
+      g->Derived("evaluation_over_bare_solve", EvaluationOverBareSolve());
+      g->Derived("derivatives_over_evaluation", DerivativesOverEvaluation());
+      g->Derived("joint_fit_over_standing_numeric", JointFitOverStanding(Derivatives::kNumeric));
+      g->Derived("joint_fit_over_standing_analytic", JointFitOverStanding(Derivatives::kAnalytic));
+    });
+  }
+};
+
 using BenchPaperReport = Report<ReportKind::kBenchPaper, PaperSuite>;
 using BenchSyntheticReport = Report<ReportKind::kBenchSynthetic, SyntheticSuite>;
 using BenchConditioningReport = Report<ReportKind::kBenchConditioning, ConditioningSuite>;
 using BenchDiagnosisReport = Report<ReportKind::kBenchDiagnosis, DiagnosisSuite>;
 using BenchRollingReport = Report<ReportKind::kBenchRolling, RollingSuite>;
+using BenchSpeedReport = Report<ReportKind::kBenchSpeed, SpeedSuite>;
 
 Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite);
 Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite);
 Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite);
 Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite);
 Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite);
+Status RunSpeedSuite(const SuiteOptions& o, SpeedSuite* suite);
 
 // A suite by name, run into its report's JSON text and Markdown table.
 struct SuiteOutput {

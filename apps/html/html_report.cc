@@ -46,6 +46,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},
     {ReportKind::kBenchDiagnosis, Typed<BenchDiagnosisReport, html::BenchDiagnosisPage>},
     {ReportKind::kBenchRolling, Typed<BenchRollingReport, html::BenchRollingPage>},
+    {ReportKind::kBenchSpeed, Typed<BenchSpeedReport, html::BenchSpeedPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

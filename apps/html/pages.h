@@ -20,6 +20,7 @@ void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
 void BenchConditioningPage(const BenchConditioningReport& report, Page* page);
 void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page);
 void BenchRollingPage(const BenchRollingReport& report, Page* page);
+void BenchSpeedPage(const BenchSpeedReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);
