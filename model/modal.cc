@@ -149,45 +149,68 @@ MatOf<T> StateMatrix(const BasicSystem<T>& s, const std::vector<int>& dofs,
   return A;
 }
 
-// A w with w^T B = 0 for B = lambda^2 M + lambda C + K over the block,
-// singular of rank k - 1 at an eigenvalue: the largest row of the adjugate
-// ((adj B) B = det B I = 0) up to 3 x 3, else the singular vector of B^T
-// with the least singular value.
-DofVec LeftNullVector(const MechanicalSystem& s, const std::vector<int>& dofs,
-                      const std::complex<double>& lambda) {
+// A null vector of B = lambda^2 M + lambda C + K over the block, of rank
+// k - 1 at an eigenvalue: left (w^T B = 0) or right (B v = 0). Up to 3 x 3
+// the largest row or column of the adjugate ((adj B) B = B adj B = det B I =
+// 0), else the singular vector with the least singular value. Empty where
+// the adjugate vanishes (rank k - 2: a repeated eigenvalue).
+DofVec NullVector(const MechanicalSystem& s, const std::vector<int>& dofs,
+                  const std::complex<double>& lambda, bool left) {
   const int k = static_cast<int>(dofs.size());
+  const std::complex<double> lambda2 = lambda * lambda;
+  const double abs_lambda = std::abs(lambda), abs_lambda2 = std::norm(lambda);
   const auto B = [&](int a, int b) {
-    const int i = dofs[a], j = dofs[b];
-    return (lambda * s.M()(i, j) + s.C()(i, j)) * lambda + s.K()(i, j);
-  };
+    const int i = left ? dofs[a] : dofs[b], j = left ? dofs[b] : dofs[a];
+    const double m = s.M()(i, j), c = s.C()(i, j), kk = s.K()(i, j);
+    return std::complex<double>(lambda2.real() * m + lambda.real() * c + kk,
+                                lambda2.imag() * m + lambda.imag() * c);
+  };  // B^T for the right vector: B v = 0 is v^T B^T = 0
   DofVec w(k);
   if (k == 1) {
     w[0] = 1;
-  } else if (k == 2) {
-    const Eigen::Vector2cd r0(B(1, 1), -B(0, 1)), r1(-B(1, 0), B(0, 0));
-    w = r0.squaredNorm() >= r1.squaredNorm() ? r0 : r1;
-  } else if (k == 3) {
-    Eigen::Matrix3cd b;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) b(i, j) = B(i, j);
-    }
-    double largest = -1;
-    for (int i = 0; i < 3; ++i) {
-      // Eigen's cross product of complex vectors is conjugated.
-      const Eigen::Vector3cd row = b.col((i + 1) % 3).cross(b.col((i + 2) % 3)).conjugate();
-      if (row.squaredNorm() > largest) {
-        largest = row.squaredNorm();
-        w = row;
+    return w;
+  }
+  if (k <= 3) {
+    std::complex<double> b[3][3];
+    double size = 0;  // of the pencil's terms, entry by entry
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; j < k; ++j) {
+        b[i][j] = B(i, j);
+        const int r = dofs[i], c = dofs[j];
+        size += abs_lambda2 * std::abs(s.M()(r, c)) + abs_lambda * std::abs(s.C()(r, c)) +
+                std::abs(s.K()(r, c));
       }
     }
-  } else {
-    CMat b(k, k);
-    for (int i = 0; i < k; ++i) {
-      for (int j = 0; j < k; ++j) b(i, j) = B(i, j);
+    double largest = -1;
+    if (k == 2) {
+      const bool first = std::norm(b[1][1]) + std::norm(b[0][1]) >= std::norm(b[1][0]) + std::norm(b[0][0]);
+      w[0] = first ? b[1][1] : -b[1][0];
+      w[1] = first ? -b[0][1] : b[0][0];
+      largest = w.squaredNorm();
+    } else {
+      // w^T b = 0: w is the cross product of two columns of b.
+      for (int i = 0; i < 3; ++i) {
+        const int p = (i + 1) % 3, q = (i + 2) % 3;
+        const std::complex<double> c0 = b[1][p] * b[2][q] - b[2][p] * b[1][q];
+        const std::complex<double> c1 = b[2][p] * b[0][q] - b[0][p] * b[2][q];
+        const std::complex<double> c2 = b[0][p] * b[1][q] - b[1][p] * b[0][q];
+        const double norm = std::norm(c0) + std::norm(c1) + std::norm(c2);
+        if (norm > largest) {
+          largest = norm;
+          w[0] = c0, w[1] = c1, w[2] = c2;
+        }
+      }
     }
-    const Eigen::JacobiSVD<CMat> svd(b.transpose(), Eigen::ComputeFullV);
-    w = svd.matrixV().col(k - 1);
+    // A cofactor is a minor of order k - 1; where all are rounding, so is w.
+    const double floor = 1e-10 * std::pow(size, k - 1);
+    return largest > floor * floor ? w : DofVec();
   }
+  CMat b(k, k);
+  for (int i = 0; i < k; ++i) {
+    for (int j = 0; j < k; ++j) b(i, j) = B(i, j);
+  }
+  const Eigen::JacobiSVD<CMat> svd(b.transpose(), Eigen::ComputeFullV);
+  w = svd.matrixV().col(k - 1);
   return w;
 }
 
@@ -259,7 +282,8 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
 
 // Solves one block of coupled degrees of freedom and appends its modes.
 bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets,
-                const std::vector<int>& dofs, ModalSolution* out) {
+                const std::vector<int>& dofs, ModalSolution* out,
+                bool vectors_from_solver = false) {
   const int k = static_cast<int>(dofs.size());
   const std::vector<int> lags = BlockLags(s, dofs);
   const int m = static_cast<int>(lags.size());
@@ -273,38 +297,47 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     out->error = "state matrix is not finite";
     return false;
   }
-  Eigen::EigenSolver<Mat> es(A, /*computeEigenvectors=*/true);
+  // Standing, without derivatives, up to three degrees of freedom (the
+  // paper's blocks): the eigenvalues alone, and each mode's displacements
+  // the null vector of its pencil (docs/model.md §9), cheaper than Eigen's
+  // eigenvectors; where the null vector is not defined, Eigen's.
+  const bool values_only = !jets && m == 0 && k <= 3 && !vectors_from_solver;
+  Eigen::EigenSolver<Mat> es(A, /*computeEigenvectors=*/!values_only);
   if (es.info() != Eigen::Success) {
     out->error = "eigen-solution did not converge";
     return false;
   }
-  // A P = P D with D block diagonal: a 2x2 block [[u, v], [-v, u]] at
-  // columns j, j+1 is the pair u +- i v with eigenvectors P_j +- i P_j+1.
-  const Mat D = es.pseudoEigenvalueMatrix();
-  const Mat& P = es.pseudoEigenvectors();
-  if (!D.allFinite() || !P.allFinite()) {
+  // A P = P D: a pair u +- i v (v > 0, the first) has the eigenvectors
+  // P_j +- i P_j+1; a pair whose v is rounding is two real roots
+  // (EigenSolver::pseudoEigenvalueMatrix).
+  const auto& ev = es.eigenvalues();
+  static const Mat kNone;
+  const Mat& P = values_only ? kNone : es.pseudoEigenvectors();
+  if (!ev.allFinite() || !P.allFinite()) {
     out->error = "eigen-solution is not finite";
     return false;
   }
   const int n = 2 * k + m;
+  const auto is_pair = [&](int j) {
+    return j + 1 < n &&
+           !(std::abs(ev[j].imag()) <= 2 * std::numeric_limits<double>::epsilon() * std::abs(ev[j].real()));
+  };
   // Left eigenvectors (rows of V^-1) where the modes need them: at speed,
   // for the energy shares, and for derivatives.
   CVec lambda;
   CMat V, Y;
   bool have_left = false;
   if (jets || m > 0) {
-    lambda.resize(n);
+    lambda = ev;
     V.resize(n, n);
     for (int j = 0; j < n; ++j) {
-      if (j + 1 < n && D(j + 1, j) != 0) {
+      if (is_pair(j)) {
         const std::complex<double> i(0, 1);
-        lambda[j] = {D(j, j), D(j, j + 1)};
-        lambda[j + 1] = std::conj(lambda[j]);
         V.col(j) = P.col(j) + i * P.col(j + 1);
         V.col(j + 1) = P.col(j) - i * P.col(j + 1);
         ++j;
       } else {
-        lambda[j] = D(j, j);
+        lambda[j] = ev[j].real();
         V.col(j) = P.col(j);
       }
     }
@@ -336,9 +369,10 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   std::vector<int> columns;  // of each mode in V
   modes.reserve(k + m);
   columns.reserve(k + m);
+  const size_t real_roots_before = out->real_roots.size();
   for (int j = 0; j < n; ++j) {
-    const bool pair = j + 1 < n && D(j + 1, j) != 0;
-    const std::complex<double> lam(D(j, j), pair ? std::abs(D(j, j + 1)) : 0.0);
+    const bool pair = is_pair(j);
+    const std::complex<double> lam(ev[j].real(), pair ? std::abs(ev[j].imag()) : 0.0);
     const double tiny = 1e-10 * std::max(1.0, std::abs(lam));
     // A rigid-body root (a free spin) is a double zero, which rounding
     // splits into a real or an imaginary pair near sqrt(eps) w: zero either way.
@@ -353,13 +387,21 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     mode.eigenvalue = lam;
     mode.frequency_hz = lam.imag() / (2 * M_PI);
     mode.damping_ratio = -lam.real() / std::abs(lam);
-    const double sign = D(j, j + 1) > 0 ? 1 : -1;
+    const int col = ev[j].imag() > 0 ? j : j + 1;  // of v in V
     DofVec v(k);
-    for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
+    if (values_only) {
+      v = NullVector(s, dofs, lam, /*left=*/false);
+      if (v.size() == 0) {  // a repeated eigenvalue: Eigen's vectors
+        out->real_roots.resize(real_roots_before);
+        return SolveBlock(s, jets, dofs, out, /*vectors_from_solver=*/true);
+      }
+    } else {
+      const double sign = col == j ? 1 : -1;
+      for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
+    }
     // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
     // standstill v if symmetric, else the left null vector, at speed
     // w = M^-T y2 from the left eigenvector y of the state matrix.
-    const int col = sign > 0 ? j : j + 1;  // of v in V
     DofVec w_left;
     if (m > 0) {
       w_left = v.conjugate();
@@ -367,7 +409,8 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
         for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
       }
     } else {
-      w_left = symmetric ? v : LeftNullVector(s, dofs, lam);
+      w_left = symmetric ? v : NullVector(s, dofs, lam, /*left=*/true);
+      if (w_left.size() == 0) w_left = v;
     }
     mode.energy.fill(0);
     // Unlabelled couplings (k_xy) count in the total, not for any label.

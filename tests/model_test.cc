@@ -287,6 +287,82 @@ TEST(ModelTest, EnergySharesUseTheLeftEigenvectorsOfEveryBlock) {
   }
 }
 
+// Without derivatives, a standing block of up to three degrees of freedom
+// takes its shapes from the adjugate of its pencil, not from Eigen's
+// eigenvectors (docs/model.md §9): both must give the same shape, and each
+// shape must be a null vector of lambda^2 M + lambda C + K.
+TEST(ModelTest, ShapesFromThePencilAgreeWithTheStateMatrixEigenvectors) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> factor(0.5, 2.0);
+  const RigidRingModel model;
+  for (int trial = 0; trial < 20; ++trial) {
+    Parameters p = PaperIdentified();
+    if (trial > 0) {
+      for (int i = 0; i < kNumParams; ++i) p[static_cast<Param>(i)] *= factor(rng);
+    }
+    const MechanicalSystem s = model.Assemble(p);
+    const ModalSolution values_only = model.Solve(p);
+    const ModalSolution with_vectors = model.Solve(p, 0.0, /*derivatives=*/true);
+    ASSERT_TRUE(values_only.ok && with_vectors.ok) << values_only.error << with_vectors.error;
+    ASSERT_EQ(values_only.modes.size(), with_vectors.modes.size());
+    for (size_t i = 0; i < values_only.modes.size(); ++i) {
+      const Mode& a = values_only.modes[i];
+      const Mode& b = with_vectors.modes[i];
+      SCOPED_TRACE(std::string(LabelName(a.label)) + " trial " + std::to_string(trial));
+      EXPECT_EQ(a.label, b.label);
+      EXPECT_LT(std::abs(a.eigenvalue - b.eigenvalue), 1e-12 * std::abs(b.eigenvalue));
+      EXPECT_LT((a.shape - b.shape).norm(), 1e-9);
+      const std::complex<double> l = a.eigenvalue;
+      ShapeVector r = (l * l * s.M().cast<std::complex<double>>() +
+                       l * s.C().cast<std::complex<double>>() +
+                       s.K().cast<std::complex<double>>()) * a.shape;
+      for (int d = 0; d < kNumDofs; ++d) {
+        if (!s.active(static_cast<Dof>(d))) r[d] = 0;  // the hub's reactions
+      }
+      const double size = (std::norm(l) * s.M().cwiseAbs() + std::abs(l) * s.C().cwiseAbs() +
+                           s.K().cwiseAbs()).norm();
+      EXPECT_LT(r.norm(), 1e-12 * size);
+    }
+  }
+}
+
+// Equal oscillators on y_b, gamma_b and psi_b joined by one spring over all
+// three: K = a I + b u u^T has the eigenvalue a twice, with two vectors, and
+// the adjugate of the pencil there vanishes. The shapes come from Eigen's
+// eigenvectors instead, and are still null vectors of the pencil.
+TEST(ModelTest, ARepeatedEigenvalueWithTwoVectorsTakesEigensVectors) {
+  MechanicalSystem s;
+  const double a = 4e5, b = 1e5;
+  for (int i = 0; i < kNumDofs; ++i) {
+    const Dof dof = static_cast<Dof>(i);
+    if (!s.active(dof)) continue;
+    s.AddMass(dof, 1.0);
+    const bool out_of_plane = dof == Dof::kYb || dof == Dof::kGammaB || dof == Dof::kPsiB;
+    s.AddSpring(std::nullopt, out_of_plane ? a : a * (1 + 0.1 * i), {{dof, 1}});
+  }
+  s.AddSpring(std::nullopt, b, {{Dof::kYb, 1}, {Dof::kGammaB, 1}, {Dof::kPsiB, 1}});
+  const ModalSolution solution = SolveModes(s);
+  ASSERT_TRUE(solution.ok) << solution.error;
+  int repeated = 0, single = 0;
+  for (const Mode& mode : solution.modes) {
+    const double w = 2 * M_PI * mode.frequency_hz;
+    if (std::abs(mode.shape[static_cast<int>(Dof::kYb)]) == 0 &&
+        std::abs(mode.shape[static_cast<int>(Dof::kGammaB)]) == 0 &&
+        std::abs(mode.shape[static_cast<int>(Dof::kPsiB)]) == 0) {
+      continue;  // another block
+    }
+    ASSERT_TRUE(mode.shape.allFinite());
+    const bool is_repeated = std::abs(w * w - a) < 1e-6 * a;
+    repeated += is_repeated;
+    single += std::abs(w * w - (a + 3 * b)) < 1e-6 * a;
+    const ShapeVector r = (s.K().cast<std::complex<double>>() -
+                           w * w * s.M().cast<std::complex<double>>()) * mode.shape;
+    EXPECT_LT(r.norm(), 1e-8 * a * mode.shape.norm());
+  }
+  EXPECT_EQ(repeated, 2);
+  EXPECT_EQ(single, 1);
+}
+
 TEST(ModelTest, BadParametersGiveAnErrorNotAMode) {
   Parameters p = PaperIdentified();
   p[Param::m_b] = 0;
