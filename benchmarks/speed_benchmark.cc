@@ -77,6 +77,21 @@ void BM_BareEigenSolve(benchmark::State& state) {
 }
 BENCHMARK(BM_BareEigenSolve)->Unit(benchmark::kMicrosecond);
 
+// The same without eigenvectors: the model takes its standing shapes from
+// the pencil's null vectors (docs/model.md §9), so the part of an evaluation
+// that is not Eigen's is the evaluation less this.
+void BM_BareEigenValues(benchmark::State& state) {
+  using Mat = SpeedBlock;
+  const std::vector<Mat> blocks = BareEigenBlocks(PaperParameters());
+  for (auto _ : state) {
+    for (const Mat& A : blocks) {
+      Eigen::EigenSolver<Mat> es(A, false);
+      benchmark::DoNotOptimize(es.eigenvalues());
+    }
+  }
+}
+BENCHMARK(BM_BareEigenValues)->Unit(benchmark::kMicrosecond);
+
 // One model evaluation with the derivatives of every mode (analytic Jacobians).
 void BM_ModelEvaluationWithDerivatives(benchmark::State& state) {
   Parameters p = PaperParameters();

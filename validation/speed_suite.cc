@@ -91,15 +91,15 @@ Batch Evaluations(Parameters p, double speed, bool derivatives) {
   };
 }
 
-// Eigen's EigenSolver, with eigenvectors, on each of `blocks` (as
-// BM_BareEigenSolve).
-Batch BareSolves(std::vector<SpeedBlock> blocks) {
-  return [blocks = std::move(blocks)](long n) {
+// Eigen's EigenSolver, with eigenvectors or without, on each of `blocks`
+// (as BM_BareEigenSolve and BM_BareEigenValues).
+Batch BareSolves(std::vector<SpeedBlock> blocks, bool vectors) {
+  return [blocks = std::move(blocks), vectors](long n) {
     for (long k = 0; k < n; ++k) {
       for (const SpeedBlock& A : blocks) {
-        Eigen::EigenSolver<SpeedBlock> es(A, true);
+        Eigen::EigenSolver<SpeedBlock> es(A, vectors);
         if (es.info() != Eigen::Success) return false;
-        g_sink = es.pseudoEigenvectors()(0, 0);
+        g_sink = vectors ? es.pseudoEigenvectors()(0, 0) : es.eigenvalues()[0].real();
       }
     }
     return true;
@@ -139,6 +139,8 @@ const char* SpeedCaseText(SpeedCase c) {
              "every mode's derivatives)";
     case SpeedCase::kBareEigenSolve:
       return "Eigen's EigenSolver alone, the same three balanced blocks";
+    case SpeedCase::kBareEigenValues:
+      return "the same, eigenvalues only";
     case SpeedCase::kModelEvaluationRolling:
       return "model evaluation, example car tire at 6 m/s";
     case SpeedCase::kIdentifyInPlane:
@@ -185,13 +187,15 @@ Status RunSpeedSuite(const SuiteOptions& o, SpeedSuite* suite) {
   // The evaluation and the bare solve of the same blocks, in the same rounds.
   if (Status s = TimeSideBySide("model evaluation",
                                 {Evaluations(paper, 0, false), Evaluations(paper, 0, true),
-                                 BareSolves(BareEigenBlocks(paper))},
+                                 BareSolves(BareEigenBlocks(paper), true),
+                                 BareSolves(BareEigenBlocks(paper), false)},
                                 o, &t);
       !s.ok()) {
     return s;
   }
   row(SpeedCase::kModelEvaluation, t[0], t[1]);
   row(SpeedCase::kBareEigenSolve, t[2], std::nullopt);
+  row(SpeedCase::kBareEigenValues, t[3], std::nullopt);
   finished();
   if (Status s = TimeSideBySide("rolling model evaluation",
                                 {Evaluations(ExampleCarTire(), 6, false)}, o, &t);
@@ -271,6 +275,13 @@ std::optional<double> Ratio(std::optional<double> a, std::optional<double> b) {
 std::optional<double> SpeedSuite::EvaluationOverBareSolve() const {
   const SpeedRow* evaluation = Find(SpeedCase::kModelEvaluation);
   const SpeedRow* bare = Find(SpeedCase::kBareEigenSolve);
+  if (!evaluation || !bare) return std::nullopt;
+  return Ratio(evaluation->numeric_seconds, bare->numeric_seconds);
+}
+
+std::optional<double> SpeedSuite::EvaluationOverBareEigenvalues() const {
+  const SpeedRow* evaluation = Find(SpeedCase::kModelEvaluation);
+  const SpeedRow* bare = Find(SpeedCase::kBareEigenValues);
   if (!evaluation || !bare) return std::nullopt;
   return Ratio(evaluation->numeric_seconds, bare->numeric_seconds);
 }

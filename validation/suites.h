@@ -294,6 +294,7 @@ struct RollingSuite {
 enum class SpeedCase {
   kModelEvaluation,         // numeric: the evaluation alone; analytic: with every mode's derivatives
   kBareEigenSolve,          // Eigen's EigenSolver on the same blocks (numeric column)
+  kBareEigenValues,         // the same, eigenvalues only (numeric column)
   kModelEvaluationRolling,  // the car tire at 6 m/s (numeric column)
   kIdentifyInPlane,
   kIdentifyBothPlanes,
@@ -303,8 +304,8 @@ enum class SpeedCase {
 };
 template <>
 struct EnumNames<SpeedCase> {
-  static constexpr std::array<const char*, 8> kNames = {
-      "model_evaluation", "bare_eigen_solve", "model_evaluation_rolling",
+  static constexpr std::array<const char*, 9> kNames = {
+      "model_evaluation", "bare_eigen_solve", "bare_eigen_values", "model_evaluation_rolling",
       "identify_in_plane", "identify_both_planes", "joint_fit_standing", "joint_fit_drum_6",
       "joint_fit_standing_drum_6_drum_12"};
 };
@@ -341,6 +342,9 @@ struct SpeedSuite {
   const SpeedRow* Find(SpeedCase c) const;
   // The labelled evaluation over the bare solve (both numeric columns).
   std::optional<double> EvaluationOverBareSolve() const;
+  // The same over the eigenvalues alone: the model's shapes and labels
+  // against none (no target).
+  std::optional<double> EvaluationOverBareEigenvalues() const;
   // The evaluation with derivatives over the one without.
   std::optional<double> DerivativesOverEvaluation() const;
   // The three-condition joint fit over the standing one, in one mode.
@@ -367,6 +371,7 @@ struct SpeedSuite {
     });
     a->Group("ratios", [&](auto* g) {
       g->Derived("evaluation_over_bare_solve", EvaluationOverBareSolve());
+      g->Derived("evaluation_over_bare_eigenvalues", EvaluationOverBareEigenvalues());
       g->Derived("derivatives_over_evaluation", DerivativesOverEvaluation());
       g->Derived("joint_fit_over_standing_numeric", JointFitOverStanding(Derivatives::kNumeric));
       g->Derived("joint_fit_over_standing_analytic", JointFitOverStanding(Derivatives::kAnalytic));

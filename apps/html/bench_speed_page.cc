@@ -119,6 +119,7 @@ void BenchSpeedPage(const BenchSpeedReport& report, Page* page) {
   page->Summary(
       {{"targets met", TextCell(std::to_string(met) + " of " + std::to_string(targets))},
        {"model evaluation / bare solve", TimesCell(suite.EvaluationOverBareSolve())},
+       {"model evaluation / bare eigenvalues", TimesCell(suite.EvaluationOverBareEigenvalues())},
        {"evaluation with derivatives / without", TimesCell(suite.DerivativesOverEvaluation())},
        {"joint fit, three conditions / standing, numeric",
         TimesCell(suite.JointFitOverStanding(Derivatives::kNumeric))},
