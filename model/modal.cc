@@ -30,6 +30,10 @@ using CVec = Eigen::VectorXcd;
 // Over the degrees of freedom of one block: small enough to zero-initialise.
 using DofVec = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kNumDofs, 1>;
 
+// |z| without std::abs's guard against overflow (hypot): the moduli here
+// (eigenvalues, strain energies) are far from it.
+double Modulus(const std::complex<double>& z) { return std::sqrt(std::norm(z)); }
+
 int Root(std::array<int, kNumDofs>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -158,7 +162,7 @@ DofVec NullVector(const MechanicalSystem& s, const std::vector<int>& dofs,
                   const std::complex<double>& lambda, bool left) {
   const int k = static_cast<int>(dofs.size());
   const std::complex<double> lambda2 = lambda * lambda;
-  const double abs_lambda = std::abs(lambda), abs_lambda2 = std::norm(lambda);
+  const double abs_lambda = Modulus(lambda), abs_lambda2 = std::norm(lambda);
   const auto B = [&](int a, int b) {
     const int i = left ? dofs[a] : dofs[b], j = left ? dofs[b] : dofs[a];
     const double m = s.M()(i, j), c = s.C()(i, j), kk = s.K()(i, j);
@@ -202,7 +206,7 @@ DofVec NullVector(const MechanicalSystem& s, const std::vector<int>& dofs,
       }
     }
     // A cofactor is a minor of order k - 1; where all are rounding, so is w.
-    const double floor = 1e-10 * std::pow(size, k - 1);
+    const double floor = 1e-10 * (k == 2 ? size : size * size);
     return largest > floor * floor ? w : DofVec();
   }
   CMat b(k, k);
@@ -302,22 +306,40 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   // the null vector of its pencil (docs/model.md §9), cheaper than Eigen's
   // eigenvectors; where the null vector is not defined, Eigen's.
   const bool values_only = !jets && m == 0 && k <= 3 && !vectors_from_solver;
-  Eigen::EigenSolver<Mat> es(A, /*computeEigenvectors=*/!values_only);
-  if (es.info() != Eigen::Success) {
-    out->error = "eigen-solution did not converge";
-    return false;
-  }
+  const int n = 2 * k + m;
   // A P = P D: a pair u +- i v (v > 0, the first) has the eigenvectors
   // P_j +- i P_j+1; a pair whose v is rounding is two real roots
   // (EigenSolver::pseudoEigenvalueMatrix).
-  const auto& ev = es.eigenvalues();
+  Eigen::EigenSolver<Mat> es;
+  Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMaxState, 1> ev(n);
+  if (values_only && k == 1) {
+    // One degree of freedom: m lambda^2 + c lambda + k = 0 in closed form,
+    // Eigen's order (the root with Im > 0 first); real roots without
+    // cancellation.
+    const int d = dofs[0];
+    const double mass = s.M()(d, d), c = s.C()(d, d), kk = s.K()(d, d);
+    const double disc = c * c - 4 * mass * kk;
+    if (disc < 0) {
+      const double re = -c / (2 * mass), im = std::sqrt(-disc) / (2 * mass);
+      ev << std::complex<double>(re, im), std::complex<double>(re, -im);
+    } else {
+      const double q = -0.5 * (c + std::copysign(std::sqrt(disc), c));
+      ev << q / mass, q != 0 ? kk / q : 0.0;
+    }
+  } else {
+    es.compute(A, /*computeEigenvectors=*/!values_only);
+    if (es.info() != Eigen::Success) {
+      out->error = "eigen-solution did not converge";
+      return false;
+    }
+    ev = es.eigenvalues();
+  }
   static const Mat kNone;
   const Mat& P = values_only ? kNone : es.pseudoEigenvectors();
   if (!ev.allFinite() || !P.allFinite()) {
     out->error = "eigen-solution is not finite";
     return false;
   }
-  const int n = 2 * k + m;
   const auto is_pair = [&](int j) {
     return j + 1 < n &&
            !(std::abs(ev[j].imag()) <= 2 * std::numeric_limits<double>::epsilon() * std::abs(ev[j].real()));
@@ -373,10 +395,11 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   for (int j = 0; j < n; ++j) {
     const bool pair = is_pair(j);
     const std::complex<double> lam(ev[j].real(), pair ? std::abs(ev[j].imag()) : 0.0);
-    const double tiny = 1e-10 * std::max(1.0, std::abs(lam));
+    const double modulus = Modulus(lam);
+    const double tiny = 1e-10 * std::max(1.0, modulus);
     // A rigid-body root (a free spin) is a double zero, which rounding
     // splits into a real or an imaginary pair near sqrt(eps) w: zero either way.
-    const bool zero = std::abs(lam) <= 1e-6 * w;
+    const bool zero = modulus <= 1e-6 * w;
     if (zero || std::abs(lam.imag()) <= tiny) {
       out->real_roots.push_back(zero ? 0.0 : lam.real());
       if (pair) out->real_roots.push_back(zero ? 0.0 : lam.real());
@@ -386,7 +409,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     Mode mode;
     mode.eigenvalue = lam;
     mode.frequency_hz = lam.imag() / (2 * M_PI);
-    mode.damping_ratio = -lam.real() / std::abs(lam);
+    mode.damping_ratio = -lam.real() / modulus;
     const int col = ev[j].imag() > 0 ? j : j + 1;  // of v in V
     DofVec v(k);
     if (values_only) {
@@ -418,11 +441,11 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
     double total = 0;
     for (ModeLabel l : labels) {
       const std::complex<double> e = Bilinear(w_left, s.K_label(l), dofs, v);
-      mode.energy[static_cast<int>(l)] = std::abs(e);
-      total += std::abs(e);
+      mode.energy[static_cast<int>(l)] = Modulus(e);
+      total += Modulus(e);
       rest -= e;
     }
-    total += std::abs(rest);
+    total += Modulus(rest);
     if (!(total > 0) || !std::isfinite(total)) total = 1;
     for (double& e : mode.energy) e /= total;
     int big = 0;
@@ -506,6 +529,7 @@ ModalSolution SolveModes(const MechanicalSystem& s, const BasicSystem<ParameterJ
   ModalSolution out;
   out.modes.reserve(kNumLabels);
   std::vector<int> active;
+  active.reserve(kNumDofs);
   for (int i = 0; i < kNumDofs; ++i) {
     if (s.active(static_cast<Dof>(i))) active.push_back(i);
   }
@@ -549,6 +573,7 @@ ModalSolution SolveModes(const MechanicalSystem& s, const BasicSystem<ParameterJ
   for (int r : active) {
     if (Root(parent, r) != r) continue;
     std::vector<int> dofs;
+    dofs.reserve(active.size());
     for (int a : active) {
       if (Root(parent, a) == r) dofs.push_back(a);
     }

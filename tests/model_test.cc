@@ -44,6 +44,24 @@ TEST(ModelTest, DecoupledVerticalModeMatchesClosedForm) {
   EXPECT_NEAR(v->damping_ratio, zeta, 1e-12);
 }
 
+// Overdamped, the vertical pair is two real roots (-c +- sqrt(c^2 - 4 m k)) / 2m,
+// and its label vanishes.
+TEST(ModelTest, OverdampedVerticalModeVanishesIntoItsTwoRealRoots) {
+  Parameters p = PaperIdentified();
+  const double m = p[Param::m_b], k = p[Param::k_bz] + p[Param::k_cz];
+  p[Param::c_bz] = 3 * std::sqrt(k * m);  // damping ratio 1.5
+  const double c = p[Param::c_bz], root = std::sqrt(c * c - 4 * m * k);
+  for (const bool derivatives : {false, true}) {  // closed form; Eigen's solver
+    const ModalSolution s = RigidRingModel().Solve(p, 0.0, derivatives);
+    ASSERT_TRUE(s.ok) << s.error;
+    EXPECT_EQ(s.Find(ModeLabel::kVertical), nullptr);
+    EXPECT_EQ(s.vanished, std::vector<ModeLabel>{ModeLabel::kVertical});
+    ASSERT_EQ(s.real_roots.size(), 2u);
+    EXPECT_NEAR(s.real_roots[0], (-c - root) / (2 * m), 1e-12 * c / m);
+    EXPECT_NEAR(s.real_roots[1], (-c + root) / (2 * m), 1e-12 * c / m);
+  }
+}
+
 TEST(ModelTest, ReproducesTable3) {
   // Table 3, 'Calculation' row, with the task's tolerances.
   const struct { ModeLabel label; double hz, tol; } table3[] = {
