@@ -78,7 +78,7 @@ void BM_BareEigenSolve(benchmark::State& state) {
 BENCHMARK(BM_BareEigenSolve)->Unit(benchmark::kMicrosecond);
 
 // The same without eigenvectors: the model takes its standing shapes from
-// the pencil's null vectors (docs/model.md §9), so the part of an evaluation
+// the pencil's null vectors (docs/model.md §8), so the part of an evaluation
 // that is not Eigen's is the evaluation less this.
 void BM_BareEigenValues(benchmark::State& state) {
   using Mat = SpeedBlock;

@@ -303,7 +303,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   }
   // Standing, without derivatives, up to three degrees of freedom (the
   // paper's blocks): the eigenvalues alone, and each mode's displacements
-  // the null vector of its pencil (docs/model.md §9), cheaper than Eigen's
+  // the null vector of its pencil (docs/model.md §8), cheaper than Eigen's
   // eigenvectors; where the null vector is not defined, Eigen's.
   const bool values_only = !jets && m == 0 && k <= 3 && !vectors_from_solver;
   const int n = 2 * k + m;
@@ -345,11 +345,11 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
            !(std::abs(ev[j].imag()) <= 2 * std::numeric_limits<double>::epsilon() * std::abs(ev[j].real()));
   };
   // Left eigenvectors (rows of V^-1) where the modes need them: at speed,
-  // for the energy shares, and for derivatives.
+  // for the energy shares, for derivatives, and at a repeated eigenvalue.
   CVec lambda;
   CMat V, Y;
   bool have_left = false;
-  if (jets || m > 0) {
+  if (jets || m > 0 || vectors_from_solver) {
     lambda = ev;
     V.resize(n, n);
     for (int j = 0; j < n; ++j) {
@@ -423,17 +423,16 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
       for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
     }
     // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
-    // standstill v if symmetric, else the left null vector, at speed
-    // w = M^-T y2 from the left eigenvector y of the state matrix.
+    // standstill v if symmetric, else the left null vector; at speed, or
+    // where that is not defined (a repeated eigenvalue), w = M^-T y2 from
+    // the left eigenvector y of the state matrix.
     DofVec w_left;
-    if (m > 0) {
-      w_left = v.conjugate();
-      if (have_left) {
-        for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
-      }
-    } else {
-      w_left = symmetric ? v : NullVector(s, dofs, lam, /*left=*/true);
-      if (w_left.size() == 0) w_left = v;
+    if (m == 0) w_left = symmetric ? v : NullVector(s, dofs, lam, /*left=*/true);
+    if (w_left.size() == 0 && have_left) {
+      w_left.resize(k);
+      for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
+    } else if (w_left.size() == 0) {
+      w_left = m > 0 ? DofVec(v.conjugate()) : v;
     }
     mode.energy.fill(0);
     // Unlabelled couplings (k_xy) count in the total, not for any label.
