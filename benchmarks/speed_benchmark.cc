@@ -8,8 +8,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <Eigen/Eigenvalues>
-
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
@@ -53,9 +51,7 @@ void BM_ModelEvaluation(benchmark::State& state) {
   const RigidRingModel model;
   int i = 0;
   for (auto _ : state) {
-    // A new point each time, as in a fit: the model's standstill cache
-    // (64 points) never answers.
-    p[Param::k_bx] *= 1 + (++i % 128 == 0 ? -127e-15 : 1e-15);
+    NextSpeedPoint(&p, &i);  // a new point each time, as in a fit
     ModalSolution s = model.Solve(p);
     benchmark::DoNotOptimize(s);
   }
@@ -64,32 +60,17 @@ BENCHMARK(BM_ModelEvaluation)->Unit(benchmark::kMicrosecond);
 
 // The floor: Eigen's EigenSolver, with eigenvectors, on the state matrices of
 // the paper's three blocks (x_b, theta_a, theta_b; z_b; y_b, gamma_b, psi_b),
-// in the matrix type the model uses (on the stack, up to 22 x 22).
-void BM_BareEigenSolve(benchmark::State& state) {
-  using Mat = SpeedBlock;
-  const std::vector<Mat> blocks = BareEigenBlocks(PaperParameters());
-  for (auto _ : state) {
-    for (const Mat& A : blocks) {
-      Eigen::EigenSolver<Mat> es(A, true);
-      benchmark::DoNotOptimize(es.pseudoEigenvectors());
-    }
-  }
-}
-BENCHMARK(BM_BareEigenSolve)->Unit(benchmark::kMicrosecond);
-
-// The same without eigenvectors: the model takes its standing shapes from
-// the pencil's null vectors (docs/model.md §8), so the part of an evaluation
+// in the matrix type the model uses (on the stack, up to 22 x 22); and the
+// same without eigenvectors: the model takes its standing shapes from the
+// pencil's null vectors (docs/model.md §8), so the part of an evaluation
 // that is not Eigen's is the evaluation less this.
-void BM_BareEigenValues(benchmark::State& state) {
-  using Mat = SpeedBlock;
-  const std::vector<Mat> blocks = BareEigenBlocks(PaperParameters());
-  for (auto _ : state) {
-    for (const Mat& A : blocks) {
-      Eigen::EigenSolver<Mat> es(A, false);
-      benchmark::DoNotOptimize(es.eigenvalues());
-    }
-  }
+void BareEigen(benchmark::State& state, bool vectors) {
+  const std::vector<SpeedBlock> blocks = BareEigenBlocks(PaperParameters());
+  for (auto _ : state) benchmark::DoNotOptimize(BareEigenSolve(blocks, vectors));
 }
+void BM_BareEigenSolve(benchmark::State& state) { BareEigen(state, true); }
+void BM_BareEigenValues(benchmark::State& state) { BareEigen(state, false); }
+BENCHMARK(BM_BareEigenSolve)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BareEigenValues)->Unit(benchmark::kMicrosecond);
 
 // One model evaluation with the derivatives of every mode (analytic Jacobians).
@@ -98,7 +79,7 @@ void BM_ModelEvaluationWithDerivatives(benchmark::State& state) {
   const RigidRingModel model;
   int i = 0;
   for (auto _ : state) {
-    p[Param::k_bx] *= 1 + (++i % 128 == 0 ? -127e-15 : 1e-15);
+    NextSpeedPoint(&p, &i);
     ModalSolution s = model.Solve(p, 0.0, true);
     benchmark::DoNotOptimize(s);
   }
@@ -133,7 +114,7 @@ void BM_ModelEvaluationRolling(benchmark::State& state) {
   const RigidRingModel model;
   int i = 0;
   for (auto _ : state) {
-    p[Param::k_bx] *= 1 + (++i % 128 == 0 ? -127e-15 : 1e-15);
+    NextSpeedPoint(&p, &i);
     ModalSolution s = model.Solve(p, 6.0);
     benchmark::DoNotOptimize(s);
   }

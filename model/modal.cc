@@ -136,7 +136,7 @@ MatOf<T> StateMatrix(const BasicSystem<T>& s, const std::vector<int>& dofs,
   // the displacement rows of eigenvectors are unchanged (docs/model.md §8).
   double w2 = 0;
   for (int a = 0; a < k; ++a) w2 = std::max(w2, Value(K(a, a)) / Value(s.M()(dofs[a], dofs[a])));
-  const double w = w2 > 0 && std::isfinite(w2) ? std::exp2(std::round(0.5 * std::log2(w2))) : 1;
+  const double w = BalancingFrequency(w2);
   for (int j = 0; j < m; ++j) {
     for (int b = 0; b < k; ++b) A(2 * k + j, k + b) *= T(w);
   }
@@ -494,6 +494,11 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
 }
 
 }  // namespace
+
+double BalancingFrequency(double largest_k_over_m) {
+  const double x = largest_k_over_m;
+  return x > 0 && std::isfinite(x) ? std::exp2(std::round(0.5 * std::log2(x))) : 1;
+}
 
 double ModeDerivatives::Frequency(int p) const { return eigenvalue[p].imag() / (2 * M_PI); }
 

@@ -73,6 +73,11 @@ struct ModalSolution {
   const Mode* Find(ModeLabel label) const;
 };
 
+// The unit of the balanced velocity states (docs/model.md §8): the power of
+// two nearest sqrt(largest_k_over_m), the largest K_aa / M_aa of a block; 1
+// where that is not positive and finite.
+double BalancingFrequency(double largest_k_over_m);
+
 // Solves each block of coupled active degrees of freedom, and labels its modes
 // by the one-to-one assignment that maximises the product of energy shares.
 // At speed, the slip states of system.lags() join the state vector

@@ -434,6 +434,17 @@ TEST(ModelTest, ARepeatedEigenvalueWithTwoVectorsTakesEigensVectors) {
   }
 }
 
+// The balanced velocity unit is the power of two nearest sqrt(K/M): exact in
+// binary, so balancing rounds nothing.
+TEST(ModelTest, BalancingFrequencyIsThePowerOfTwoNearestTheNaturalFrequency) {
+  EXPECT_EQ(BalancingFrequency(2000.0 * 2000.0), 2048.0);
+  EXPECT_EQ(BalancingFrequency(1400.0 * 1400.0), 1024.0);  // log2 1400 = 10.45
+  EXPECT_EQ(BalancingFrequency(1500.0 * 1500.0), 2048.0);  // log2 1500 = 10.55
+  EXPECT_EQ(BalancingFrequency(0.0), 1.0);
+  EXPECT_EQ(BalancingFrequency(std::numeric_limits<double>::infinity()), 1.0);
+  EXPECT_EQ(BalancingFrequency(std::nan("")), 1.0);
+}
+
 TEST(ModelTest, BadParametersGiveAnErrorNotAMode) {
   Parameters p = PaperIdentified();
   p[Param::m_b] = 0;

@@ -6,7 +6,10 @@
 
 #include <Eigen/LU>
 
+#include <Eigen/Eigenvalues>
+
 #include "datasets/synthetic.h"
+#include "model/modal.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -65,11 +68,10 @@ std::vector<SpeedBlock> BareEigenBlocks(const Parameters& p) {
         K(a, b) = s.K()(static_cast<int>(dofs[a]), static_cast<int>(dofs[b]));
       }
     }
-    // Balanced as the model balances it (model/modal.cc): velocities in
-    // units of w, the power of two nearest the largest sqrt(K_aa / M_aa).
+    // Balanced as the model balances it: velocities in units of w.
     double w2 = 0;
     for (int a = 0; a < k; ++a) w2 = std::max(w2, K(a, a) / M(a, a));
-    const double w = std::exp2(std::round(0.5 * std::log2(w2)));
+    const double w = BalancingFrequency(w2);
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * k, 2 * k);
     A.topRightCorner(k, k).setIdentity() *= w;
     A.bottomLeftCorner(k, k) = -M.inverse() * K / w;
@@ -77,6 +79,20 @@ std::vector<SpeedBlock> BareEigenBlocks(const Parameters& p) {
     blocks.push_back(A);
   }
   return blocks;
+}
+
+double BareEigenSolve(const std::vector<SpeedBlock>& blocks, bool vectors) {
+  double sink = 0;
+  for (const SpeedBlock& A : blocks) {
+    Eigen::EigenSolver<SpeedBlock> es(A, vectors);
+    if (es.info() != Eigen::Success) return std::nan("");
+    sink += vectors ? es.pseudoEigenvectors()(0, 0) : es.eigenvalues()[0].real();
+  }
+  return sink;
+}
+
+void NextSpeedPoint(Parameters* p, int* i) {
+  (*p)[Param::k_bx] *= 1 + (++*i % 128 == 0 ? -127e-15 : 1e-15);
 }
 
 Status SpeedCarTire(const std::vector<double>& speeds, Dataset* d) {

@@ -35,6 +35,16 @@ using SpeedBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 22, 
 // against: Eigen's EigenSolver on these, with eigenvectors.
 std::vector<SpeedBlock> BareEigenBlocks(const Parameters& p);
 
+// Eigen's EigenSolver on each of `blocks`, with eigenvectors or without; a
+// value that depends on the result (NaN where a solve failed), so that the
+// work cannot be optimised away.
+double BareEigenSolve(const std::vector<SpeedBlock>& blocks, bool vectors);
+
+// The next point of a timed run of model evaluations, new every call as in a
+// fit: k_bx moves by 1e-15 relative, 128 points in a cycle (`i` counts), so
+// the model's standstill cache (64 points) never answers.
+void NextSpeedPoint(Parameters* p, int* i);
+
 // The example car tire (ExampleCarTire) measured at `speeds` (m/s, one
 // condition each: "v0", "v6", ...), default noise, seed 7; its sidewall and
 // contact free (the rolling suite's 14 parameters, its four ties), started

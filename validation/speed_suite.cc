@@ -11,8 +11,6 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
 #include "model/rigid_ring_model.h"
@@ -75,14 +73,13 @@ Status TimeSideBySide(const char* what, const std::vector<Batch>& modes, const S
   return Status::Success();
 }
 
-// Model evaluations at `speed` from `p`, a new point each call as in a fit:
-// k_bx moves by 1e-15 relative, 128 points in a cycle, so the model's
-// standstill cache (64 points) never answers (as BM_ModelEvaluation).
+// Model evaluations at `speed` from `p`, a new point each call as in a fit
+// (NextSpeedPoint, as BM_ModelEvaluation).
 Batch Evaluations(Parameters p, double speed, bool derivatives) {
   auto model = std::make_shared<const RigidRingModel>();
   return [model, p = std::move(p), speed, derivatives, i = 0](long n) mutable {
     for (long k = 0; k < n; ++k) {
-      p[Param::k_bx] *= 1 + (++i % 128 == 0 ? -127e-15 : 1e-15);
+      NextSpeedPoint(&p, &i);
       const ModalSolution s = model->Solve(p, speed, derivatives);
       if (!s.ok || s.modes.empty()) return false;
       g_sink = s.modes[0].frequency_hz;
@@ -96,11 +93,8 @@ Batch Evaluations(Parameters p, double speed, bool derivatives) {
 Batch BareSolves(std::vector<SpeedBlock> blocks, bool vectors) {
   return [blocks = std::move(blocks), vectors](long n) {
     for (long k = 0; k < n; ++k) {
-      for (const SpeedBlock& A : blocks) {
-        Eigen::EigenSolver<SpeedBlock> es(A, vectors);
-        if (es.info() != Eigen::Success) return false;
-        g_sink = vectors ? es.pseudoEigenvectors()(0, 0) : es.eigenvalues()[0].real();
-      }
+      g_sink = BareEigenSolve(blocks, vectors);
+      if (std::isnan(g_sink)) return false;
     }
     return true;
   };
