@@ -51,7 +51,7 @@ DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identif
 DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "how to fit: Levenberg-Marquardt or the Downhill Simplex");
-DEFINE_int32(starts, ringid::IdentifyOptions().starts, "number of starts: the dataset's initial point and starts-1 random ones");
+DEFINE_int32(starts, ringid::IdentifyOptions().starts, "number of starts: the dataset's initial point, the point matching the measured frequencies, and points scattered log-uniformly around that");
 DEFINE_int32(seed, static_cast<int>(ringid::IdentifyOptions().seed),
              "seed of the random starts, and of the noise in simulate and bench");
 DEFINE_string(weighting, ringid::ToString(ringid::ResidualOptions().frequency_weighting),

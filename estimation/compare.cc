@@ -79,7 +79,7 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
     return;
   }
   const Box box = BoundsAround(setup, x0, o.fit.bound_factor, o.fit.bounds);
-  const auto starts = DrawStarts(setup, x0, box, o.fit.starts, o.fit.start_spread, o.fit.seed,
+  const auto starts = PlanStarts(residuals, x0, box, o.fit.starts, o.fit.start_factor, o.fit.seed,
                                  [&](const Eigen::VectorXd& x) { return std::isfinite(CostAt(residuals, x)); });
   r->starts = static_cast<int>(starts.size());
   r->initial_cost = CostAt(residuals, x0);
@@ -92,8 +92,8 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
   for (Method method : {Method::kLevenbergMarquardt, Method::kSimplex}) {
     MethodRun run;
     run.method = method;
-    for (const Eigen::VectorXd& start : starts) {
-      const LocalFit fit = FitLocally(residuals, method, start, box,
+    for (const internal::Start& start : starts) {
+      const LocalFit fit = FitLocally(residuals, method, start.x, box,
                                       o.fit.max_iterations, o.fit.simplex);
       run.final_costs.push_back(fit.cost);
       run.evaluations.push_back(fit.evaluations);

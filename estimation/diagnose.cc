@@ -104,6 +104,10 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
   return total;
 }
 
+// An effect fit may end this much (in cost) above the baseline's optimum and
+// still count as having reached it: the stopping rule's own resolution.
+constexpr double kEffectFitSlack = 0.05;
+
 // Cost of `dataset` under `model` at its initial values (+inf if unsolvable).
 double InitialCost(const ModalModel& model, const Dataset& dataset, const ResidualOptions& options) {
   Status status;
@@ -111,41 +115,46 @@ double InitialCost(const ModalModel& model, const Dataset& dataset, const Residu
   return problem ? CostAt(problem->residuals(), problem->start()) : INFINITY;
 }
 
-// An effect refitted from two points: the calibrated baseline (warm) and the
-// dataset's own initial values (cold; the baseline may have bent itself to
-// absorb part of the effect, a basin LM does not leave). From each, its
-// parameters start at 0 and at the best point of a scan over
-// +-{0.1, 0.3, 1, 3, 10} typical scales: from 0 alone a non-smooth effect
-// such as a hub released at s_h = 0 is not found.
+// An effect fitted on top of the calibrated baseline (`warm`): from its
+// optimum with the effect at 0, and from the best points of a scan of the
+// effect's parameters over +-{0.1, 0.3, 1, 3, 10} typical scales (from 0
+// alone a non-smooth effect such as a hub released at s_h = 0 is not found).
+// The effect at 0 is the baseline, so a fit that ends above the baseline's
+// cost has failed: the next seed of the scan is tried, up to kEffectSeeds.
+constexpr int kEffectSeeds = 4;
 IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
-                          const Dataset& warm, const Dataset& cold,
-                          const DiagnoseOptions& o) {
+                          const Dataset& warm, double baseline_cost, const DiagnoseOptions& o) {
   IdentifyOptions one = o.fit;
   one.starts = 1;
-  IdentifySummary best;
-  for (const Dataset* from : {&warm, &cold}) {
-    std::vector<std::pair<double, Dataset>> seeds;
-    for (Param p : effect.parameters()) {
-      if (from->known.count(p)) continue;
-      for (double g : {0.1, 0.3, 1.0, 3.0, 10.0}) {
-        for (double sign : {1.0, -1.0}) {
-          if (sign < 0 && Info(p).domain != Domain::kReal) continue;
-          Dataset d = *from;
-          d.initial[p] = sign * g * TypicalScale(p);
-          seeds.emplace_back(InitialCost(model, d, o.fit.residuals), d);
-        }
+  std::vector<std::pair<double, Dataset>> seeds;
+  for (Param p : effect.parameters()) {
+    if (warm.known.count(p)) continue;
+    for (double g : {0.1, 0.3, 1.0, 3.0, 10.0}) {
+      for (double sign : {1.0, -1.0}) {
+        if (sign < 0 && Info(p).domain != Domain::kReal) continue;
+        Dataset d = warm;
+        d.initial[p] = sign * g * TypicalScale(p);
+        seeds.emplace_back(InitialCost(model, d, o.fit.residuals), d);
       }
     }
-    std::sort(seeds.begin(), seeds.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<const Dataset*> starts = {from};
-    if (!seeds.empty() && std::isfinite(seeds.front().first)) starts.push_back(&seeds.front().second);
-    for (const Dataset* start : starts) {
-      IdentifySummary s;
-      Identify(model, *start, one, &s);
-      if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
-      if (!best.status.ok() && best.status.message.empty()) best = s;
-    }
+  }
+  std::stable_sort(seeds.begin(), seeds.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const Dataset*> starts = {&warm};
+  for (const auto& [cost, d] : seeds) {
+    if (std::isfinite(cost)) starts.push_back(&d);
+  }
+  IdentifySummary best;
+  int tried = 0;
+  for (const Dataset* start : starts) {
+    // Two seeds always (0 and the scan's best); more while none reached the baseline.
+    if (tried >= 2 && best.status.ok() && best.cost <= baseline_cost + kEffectFitSlack) break;
+    if (tried >= kEffectSeeds) break;
+    ++tried;
+    IdentifySummary s;
+    Identify(model, *start, one, &s);
+    if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
+    if (!best.status.ok() && best.status.message.empty()) best = s;
   }
   return best;
 }
@@ -274,22 +283,31 @@ double CheckedDetectable(const RigidRingModel& baseline, const Effect& effect, P
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0);
 
+std::string internal::HeldOutChange(double before, double after) {
+  std::ostringstream o;
+  const double change = 1 - after / before;
+  o << "on held-out modes (each predicted from a fit without it) the misfit "
+    << (change >= 0 ? "falls" : "rises") << " from chi-square " << before << " to " << after;
+  if (change >= 0) {
+    o << " (" << static_cast<int>(std::round(100 * change)) << " % less)";
+  } else {
+    o << ": the effect predicts unseen modes worse than the baseline, which weakens the verdict";
+  }
+  return o.str();
+}
+
 bool DiagnoseOptions::IsValid(std::string* why) const {
   if (!(gap_significance > 0 && gap_significance < 1) ||
       !(effect_significance > 0 && effect_significance < 1)) {
     *why = "significance levels must lie in (0, 1)";
     return false;
   }
-  if (!(prior_sigma >= 0) || !std::isfinite(prior_sigma)) {
-    *why = "prior_sigma must be finite and not negative";
-    return false;
-  }
   if (!(detectable_likelihood_ratio > 0) || !std::isfinite(detectable_likelihood_ratio)) {
     *why = "detectable_likelihood_ratio must be finite and positive";
     return false;
   }
-  if (!(prior_factor > 1)) {
-    *why = "prior_factor must exceed 1";
+  if (!(absorbed_factor > 1)) {
+    *why = "absorbed_factor must exceed 1";
     return false;
   }
   return fit.IsValid(why);
@@ -310,31 +328,33 @@ void Diagnose(const RigidRingModel& baseline, const Dataset& dataset, const Diag
         "differ only in speed are fine");
     return;
   }
-  // The dataset's initial values are the prior of the baseline's parameters:
-  // a gap absorbed by moving them far from it shows in the chi-square.
-  DiagnoseOptions with_prior = o;
-  if (o.prior_sigma > 0) {
-    with_prior.fit.residuals.prior_sigma = o.prior_sigma;
-    with_prior.fit.residuals.prior = dataset.initial;
-  }
-  DiagnoseWithOptions(baseline, dataset, with_prior, r, t0);
+  DiagnoseWithOptions(baseline, dataset, o, r, t0);
 }
 
 namespace {
 
-// Baseline parameters a gap pushed beyond o.prior_factor of their prior.
-std::vector<std::string> Absorbed(const Dataset& dataset, const IdentifySummary& calibrated,
+// Baseline parameters that had absorbed part of the gap: those the verdict's
+// fit `with` moves beyond o.absorbed_factor from the baseline's optimum, or
+// without a verdict those beyond kPriorConflictZ of a declared prior.
+std::vector<std::string> Absorbed(const IdentifySummary& calibrated, const IdentifySummary* with,
                                   const DiagnoseOptions& o) {
   std::vector<std::string> absorbed;
+  char line[200];
   for (const ParameterEstimate& e : calibrated.estimates) {
     if (!e.free) continue;
-    const auto prior = dataset.initial.find(e.param());
-    if (prior == dataset.initial.end() || !(prior->second > 0) || !(e.value > 0)) continue;
-    const double factor = e.value / prior->second;
-    if (std::abs(std::log(factor)) > std::log(o.prior_factor)) {
-      char line[160];
-      std::snprintf(line, sizeof line, "%s moved from its initial %.4g to %.4g (x %.2f)",
-                    ParamName(e.param()), prior->second, e.value, factor);
+    if (!with) {
+      if (!e.PriorConflict()) continue;
+      std::snprintf(line, sizeof line, "%s = %.4g is %.1f prior sigma from its prior",
+                    e.key.Text().c_str(), e.value, *e.prior_z);
+      absorbed.push_back(line);
+      continue;
+    }
+    for (const ParameterEstimate& f : with->estimates) {
+      if (!(f.key == e.key) || !(e.value > 0) || !(f.value > 0)) continue;
+      const double factor = e.value / f.value;
+      if (std::abs(std::log(factor)) <= std::log(o.absorbed_factor)) continue;
+      std::snprintf(line, sizeof line, "%s = %.4g in the baseline, %.4g with the effect (x %.2f)",
+                    e.key.Text().c_str(), e.value, f.value, factor);
       absorbed.push_back(line);
     }
   }
@@ -343,14 +363,26 @@ std::vector<std::string> Absorbed(const Dataset& dataset, const IdentifySummary&
 
 // One candidate effect refitted on top of the calibrated baseline, with the
 // evidence for it against the baseline.
+// `fitted` receives the effect's fit.
 EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, const Dataset& warm,
-                       const Dataset& dataset, const DiagnosisReport& r, const DiagnoseOptions& o) {
+                       const Dataset& dataset, const DiagnosisReport& r, const DiagnoseOptions& o,
+                       IdentifySummary* fitted) {
   EffectFit f;
   f.effect = &effect;
   const RigidRingModel model = baseline.With(&effect);
-  const IdentifySummary s = FitEffect(model, effect, warm, dataset, o);
+  const IdentifySummary s = FitEffect(model, effect, warm, r.baseline.cost, o);
+  *fitted = s;
   if (!s.status.ok()) {
     f.note = s.status.message;
+    return f;
+  }
+  if (s.cost > r.baseline.cost + kEffectFitSlack) {
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "a failed fit, not evidence: from every seed it ended above the baseline's "
+                  "chi-square (%.6g against %.6g), which the effect at 0 reproduces",
+                  2 * s.cost, r.chi2_before);
+    f.note = b;
     return f;
   }
   const int m = static_cast<int>(r.baseline.uncertainty.jacobian.rows());
@@ -432,7 +464,6 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
   if (!best) {
     *why << "the gap is significant (p = " << *r->p_value
          << ") but no catalogue effect explains it beyond a re-calibration of the baseline";
-    if (!r->absorbed.empty()) *why << "; part of it sits in the parameters";
     return;
   }
   r->verdict = best->effect;
@@ -446,10 +477,7 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
        << " of it (degrees of freedom: the difference in parameters, at least 1)";
   if (o.held_out) r->held_out_before = HeldOut(baseline, warm, o);
   if (r->held_out_before && best->held_out_chi2 && *r->held_out_before > 0) {
-    *why << "; on held-out modes (each predicted from a fit without it) the misfit falls "
-         << "from chi-square " << *r->held_out_before << " to " << *best->held_out_chi2 << " ("
-         << static_cast<int>(std::round(100 * (1 - *best->held_out_chi2 / *r->held_out_before)))
-         << " % less)";
+    *why << "; " << internal::HeldOutChange(*r->held_out_before, *best->held_out_chi2);
   }
   for (size_t i = 0; i < before.size() && i < best->mode_chi2.size(); ++i) {
     r->mode_shrink.push_back(before[i] > 0 ? 1 - best->mode_chi2[i] / before[i] : 0);
@@ -477,20 +505,64 @@ std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
 
 }  // namespace
 
+// Whether `s`, a fit with `effect`, holds the effect at 0 (it is then the
+// baseline's model).
+bool EffectOff(const Effect& effect, const IdentifySummary& s) {
+  for (Param p : effect.parameters()) {
+    if (Info(p).domain != Domain::kPositive &&
+        !(std::abs(s.parameters[p]) <= 1e-6 * TypicalScale(p))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
-  // The gap: calibrate the baseline.
+  // The gap: calibrate the baseline by the multistart of Identify.
   Identify(baseline, dataset, o.fit, &r->baseline);
-  if (!r->baseline.status.ok()) {
-    r->status = {r->baseline.status.outcome,
-                 "the baseline could not be calibrated: " + r->baseline.status.message};
-    return;
+  std::vector<IdentifySummary> fits;
+  // A candidate that holds its effect at 0 and still fits better than the
+  // baseline shows that the baseline missed its optimum: re-calibrate from
+  // that point and start again (at most twice).
+  for (int attempt = 0;; ++attempt) {
+    if (!r->baseline.status.ok()) {
+      r->status = {r->baseline.status.outcome,
+                   "the baseline could not be calibrated: " + r->baseline.status.message};
+      return;
+    }
+    r->chi2_before = r->baseline.fit.chi_square;
+    r->dof = r->baseline.fit.degrees_of_freedom;
+    r->p_value = r->baseline.fit.p_value;
+    r->significant = r->p_value && *r->p_value < o.gap_significance;
+    r->gap_before = std::max(0.0, r->chi2_before - std::max(r->dof, 0));
+    const Dataset warm = WarmStart(dataset, r->baseline);
+    r->ranking.clear();
+    fits.clear();
+    int better = -1;
+    for (const Effect* effect : EffectCatalogue()) {
+      if (baseline.Has(effect)) continue;
+      fits.emplace_back();
+      r->ranking.push_back(FitCandidate(baseline, *effect, warm, dataset, *r, o, &fits.back()));
+      const IdentifySummary& s = fits.back();
+      if (s.status.ok() && s.cost < r->baseline.cost - 0.5 * kSameOptimumChiSquare &&
+          EffectOff(*effect, s) && (better < 0 || s.cost < fits[better].cost)) {
+        better = static_cast<int>(fits.size()) - 1;
+      }
+    }
+    if (better < 0 || attempt == 2) break;
+    IdentifyOptions one = o.fit;
+    one.starts = 1;
+    IdentifySummary recalibrated;
+    Dataset from = WarmStart(dataset, fits[better]);
+    for (Param q : r->ranking[better].effect->parameters()) from.initial.erase(q);
+    Identify(baseline, from, one, &recalibrated);
+    if (!recalibrated.status.ok() || !(recalibrated.cost < r->baseline.cost)) break;
+    recalibrated.start_costs.insert(recalibrated.start_costs.begin(),
+                                    r->baseline.start_costs.begin(), r->baseline.start_costs.end());
+    r->baseline = std::move(recalibrated);
   }
-  r->chi2_before = r->baseline.fit.chi_square;
-  r->dof = r->baseline.fit.degrees_of_freedom;
-  r->p_value = r->baseline.fit.p_value;
-  r->significant = r->p_value && *r->p_value < o.gap_significance;
-  r->gap_before = std::max(0.0, r->chi2_before - std::max(r->dof, 0));
+  const Dataset warm = WarmStart(dataset, r->baseline);
 
   // Where it lies: per mode and observable, and in the parameters.
   std::vector<ModalResiduals::Slot> slots;
@@ -501,20 +573,32 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
   r->where = Misfits(slots, res, dataset);
-  r->absorbed = Absorbed(dataset, r->baseline, o);
 
-  // Which effect: refit with each candidate, from the calibrated baseline.
-  const Dataset warm = WarmStart(dataset, r->baseline);
-  for (const Effect* effect : EffectCatalogue()) {
-    if (!baseline.Has(effect)) r->ranking.push_back(FitCandidate(baseline, *effect, warm, dataset, *r, o));
-  }
-  std::sort(r->ranking.begin(), r->ranking.end(), [](const EffectFit& a, const EffectFit& b) {
-    if (a.ok != b.ok) return a.ok;
-    return a.aic < b.aic;
+  // Which effect: ranked by AIC.
+  std::vector<int> order(r->ranking.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const EffectFit& x = r->ranking[a];
+    const EffectFit& y = r->ranking[b];
+    if (x.ok != y.ok) return x.ok;
+    return x.aic < y.aic;
   });
+  std::vector<EffectFit> ranking;
+  std::vector<IdentifySummary> ranked_fits;
+  for (int k : order) {
+    ranking.push_back(std::move(r->ranking[k]));
+    ranked_fits.push_back(std::move(fits[k]));
+  }
+  r->ranking = std::move(ranking);
   std::ostringstream why;
   Verdict(baseline, warm, before, o, r, &why);
+  const IdentifySummary* verdict_fit = nullptr;
+  for (size_t k = 0; k < r->ranking.size(); ++k) {
+    if (r->verdict && r->ranking[k].effect == r->verdict) verdict_fit = &ranked_fits[k];
+  }
+  r->absorbed = Absorbed(r->baseline, verdict_fit, o);
   if (!r->verdict) {
+    if (!r->absorbed.empty() && r->significant) why << "; part of it sits in the parameters";
     const std::string sizes = DetectableSizes(baseline, warm, o, r);
     if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
   }

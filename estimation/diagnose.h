@@ -30,13 +30,9 @@ struct DiagnoseOptions {
   // signature a re-calibration of the baseline cannot absorb: the size at
   // which the likelihood ratio against the re-calibrated baseline reaches this.
   double detectable_likelihood_ratio = 20.0;
-  // A fitted baseline parameter beyond this factor of its initial value
-  // has absorbed part of the gap.
-  double prior_factor = 2.0;
-  // The dataset's initial values as a prior on the baseline parameters,
-  // relative standard deviation prior_sigma (0: none). Without it a baseline
-  // with many free parameters silently absorbs most effects.
-  double prior_sigma = 0.2;
+  // A baseline parameter that the verdict's fit moves beyond this factor had
+  // absorbed part of the gap.
+  double absorbed_factor = 2.0;
   // Leave-one-mode-out prediction for the baseline and every supported
   // effect: each mode predicted from a fit without it. Reported, not voted
   // on: a dropped mode frees directions only it determined, so the absolute
@@ -139,7 +135,10 @@ struct DiagnosisReport {
   double gap_before = 0;          // chi2 in excess of its dof
   // Where it lies.
   std::vector<ModeMisfit> where;
-  std::vector<std::string> absorbed;  // baseline parameters pushed off prior
+  // Baseline parameters that had absorbed part of the gap: moved beyond
+  // absorbed_factor by the verdict's fit, or beyond kPriorConflictZ of a
+  // declared prior where there is no verdict.
+  std::vector<std::string> absorbed;
   std::optional<double> held_out_before;
   // Which effect, ranked by AIC.
   std::vector<EffectFit> ranking;
@@ -180,9 +179,20 @@ struct DiagnosisReport {
 };
 
 // `baseline`: the model calibrated first (usually RigidRingModel(), the
-// standing model); each effect of the catalogue it lacks is tried on top.
+// standing model) by the multistart of Identify, with no prior but the
+// dataset's own; each effect of the catalogue it lacks is then fitted on top,
+// from the baseline's optimum with the effect at 0 and at the best of a scan
+// of sizes. Nothing depends on the dataset's initial values beyond the
+// baseline's starts.
 void Diagnose(const RigidRingModel& baseline, const Dataset& dataset,
               const DiagnoseOptions& options, DiagnosisReport* report);
+
+namespace internal {
+// The explanation's words on held-out modes: the leave-one-mode-out
+// chi-square of the baseline (`before`) and of the verdict (`after`), said to
+// fall or to rise.
+std::string HeldOutChange(double before, double after);
+}  // namespace internal
 
 }  // namespace ringid
 

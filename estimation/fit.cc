@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
+#include <Eigen/QR>
 #include <ceres/ceres.h>
+
+#include "estimation/uncertainty.h"
 
 namespace ringid {
 namespace internal {
@@ -29,9 +31,59 @@ class HistoryCallback : public ceres::IterationCallback {
   LocalFit* fit_;
 };
 
+// Stops in statistical units (issue 21): once the full Gauss-Newton step
+// from the current point (the pseudo-inverse of the Jacobian, coordinates on
+// a bound and a profile's fixed one held) promises less than `stop` in chi-square. It is checked, at
+// the price of one Jacobian, only after a successful step that gained less
+// than `stop` itself (and then at most every kCheckEvery iterations). Then no step can move chi-square by a visible fraction
+// of one unit, so neither an estimate nor its interval moves visibly.
+class StatisticalStop : public ceres::IterationCallback {
+ public:
+  StatisticalStop(const ModalResiduals& residuals, const Eigen::VectorXd& x, const Box& box,
+                  int fixed, double stop)
+      : residuals_(residuals), x_(x), box_(box), fixed_(fixed), stop_(stop) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (s.iteration == 0 || !s.step_is_successful || !(2 * s.cost_change < stop_) ||
+        s.iteration < next_check_) {
+      return ceres::SOLVER_CONTINUE;
+    }
+    next_check_ = s.iteration + kCheckEvery;
+    return GaussNewtonGain() < stop_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
+                                     : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  // ||r||^2 - ||r + J dx||^2 for the least-squares step dx.
+  double GaussNewtonGain() const {
+    Eigen::MatrixXd J;
+    Eigen::VectorXd r(residuals_.num_residuals());
+    if (!residuals_.Evaluate(x_.data(), r.data()) || !EvaluateJacobian(residuals_, x_, &J)) {
+      return INFINITY;
+    }
+    for (int i = 0; i < J.cols(); ++i) {
+      const double margin = 1e-6 * (box_.upper[i] - box_.lower[i]);
+      if (i == fixed_ || x_[i] <= box_.lower[i] + margin || x_[i] >= box_.upper[i] - margin) {
+        J.col(i).setZero();
+      }
+    }
+    const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
+    return r.squaredNorm() - (r + J * dx).squaredNorm();
+  }
+
+  const ModalResiduals& residuals_;
+  const Eigen::VectorXd& x_;
+  const Box& box_;
+  const int fixed_;
+  const double stop_;
+  // While a crawl keeps promising more, the check is repeated every few
+  // iterations, not at each: it costs a Jacobian.
+  static constexpr int kCheckEvery = 4;
+  int next_check_ = 0;
+};
+
 LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
                                const Eigen::VectorXd& start, const Box& box,
-                               int max_iterations, int fixed) {
+                               int max_iterations, int fixed, double stop_chi_square) {
   LocalFit fit;
   fit.x = start;
   ceres::Problem problem;
@@ -76,12 +128,26 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   }
   HistoryCallback history(residuals, &fit);
   so.callbacks.push_back(&history);
+  StatisticalStop stop(residuals, fit.x, box, fixed, stop_chi_square);
+  if (stop_chi_square > 0) {
+    so.callbacks.push_back(&stop);
+    so.update_state_every_iteration = true;  // the callback reads fit.x
+  }
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   // The whole cost, rows of conditions without free coordinates included.
   fit.cost = summary.IsSolutionUsable() ? CostAt(residuals, fit.x) : kInf;
-  fit.converged = summary.termination_type == ceres::CONVERGENCE;
-  fit.message = summary.message;
+  fit.converged = summary.termination_type == ceres::CONVERGENCE ||
+                  summary.termination_type == ceres::USER_SUCCESS;
+  if (summary.termination_type == ceres::USER_SUCCESS) {
+    char words[120];
+    std::snprintf(words, sizeof words,
+                  "chi-square converged: no step changes it by %g (statistical stopping rule)",
+                  stop_chi_square);
+    fit.message = words;
+  } else {
+    fit.message = summary.message;
+  }
   return fit;
 }
 
@@ -158,29 +224,6 @@ bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const B
   return true;
 }
 
-std::vector<Eigen::VectorXd> DrawStarts(
-    const ParameterSetup& setup, const Eigen::VectorXd& x0, const Box& box,
-    int starts, double spread, unsigned seed,
-    const std::function<bool(const Eigen::VectorXd&)>& usable) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<Eigen::VectorXd> out = {x0};
-  for (int k = 1; k < starts; ++k) {
-    Eigen::VectorXd start;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      start = x0;
-      for (int i = 0; i < setup.size(); ++i) {
-        const double step = spread * normal(rng);
-        start[i] += setup.is_log(i) ? step : step * std::max(std::abs(x0[i]), 1.0);
-      }
-      start = start.cwiseMax(box.lower).cwiseMin(box.upper);
-      if (!usable || usable(start)) break;
-    }
-    out.push_back(start);
-  }
-  return out;
-}
-
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
   std::vector<double> r(residuals.num_residuals());
   if (!residuals.Evaluate(x.data(), r.data())) return kInf;
@@ -192,7 +235,7 @@ double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
 LocalFit FitLocally(const ModalResiduals& residuals, Method method,
                     const Eigen::VectorXd& start, const Box& box,
                     int max_iterations, const SimplexOptions& simplex,
-                    int fixed) {
+                    int fixed, double stop_chi_square) {
   const auto t0 = std::chrono::steady_clock::now();
   const long before = residuals.evaluations();
   LocalFit fit;
@@ -207,7 +250,7 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
   } else if (method == Method::kSimplex) {
     fit = FitSimplex(residuals, start, box, simplex, fixed);
   } else {
-    fit = FitLevenbergMarquardt(residuals, start, box, max_iterations, fixed);
+    fit = FitLevenbergMarquardt(residuals, start, box, max_iterations, fixed, stop_chi_square);
   }
   fit.evaluations = residuals.evaluations() - before;
   if (fit.history.size() > 200) {  // keep the first, the last and 198 between

@@ -57,15 +57,6 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
 bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
                  std::string* why);
 
-// x0 first, then starts - 1 points drawn around it: log coordinates moved by
-// N(0, spread), others by N(0, spread) * max(|x|, 1); clipped to the box.
-// A draw where `usable` is false (say, a measured mode overdamped) is drawn
-// again, up to 100 times, then kept as it is.
-std::vector<Eigen::VectorXd> DrawStarts(
-    const ParameterSetup& setup, const Eigen::VectorXd& x0, const Box& box,
-    int starts, double spread, unsigned seed,
-    const std::function<bool(const Eigen::VectorXd&)>& usable = nullptr);
-
 // 1/2 |r(x)|^2, or +inf where the model cannot be solved.
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);
 
@@ -80,13 +71,18 @@ struct LocalFit {
   std::vector<std::pair<long, double>> history;
 };
 
-// Levenberg-Marquardt (ceres::Solve on central-difference Jacobians) or the
+// Levenberg-Marquardt stops once no step can change chi-square by more than
+// this (estimation/fit.cc, StatisticalStop); 0 leaves only Ceres' own
+// relative tolerances of 1e-14.
+inline constexpr double kStopChiSquare = 1e-4;
+
+// Levenberg-Marquardt (ceres::Solve on the residuals' Jacobians) or the
 // Downhill Simplex from `start`. `fixed` >= 0 holds that coordinate at its
 // start value (a profile). With no free coordinate it evaluates the start.
 LocalFit FitLocally(const ModalResiduals& residuals, Method method,
                     const Eigen::VectorXd& start, const Box& box,
                     int max_iterations, const SimplexOptions& simplex,
-                    int fixed = -1);
+                    int fixed = -1, double stop_chi_square = kStopChiSquare);
 
 }  // namespace internal
 

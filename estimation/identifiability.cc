@@ -171,7 +171,7 @@ class Profiler {
  private:
   LocalFit Refit(const Eigen::VectorXd& start) const {
     return FitLocally(residuals_, Method::kLevenbergMarquardt, start, box_, o_.fit.max_iterations,
-                      o_.fit.simplex, i_);
+                      o_.fit.simplex, i_, o_.fit.stop_chi_square);
   }
   double Delta(double cost) const { return std::max(0.0, 2 * (cost - cost_min_)); }
 

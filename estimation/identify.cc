@@ -102,6 +102,53 @@ const char* ParameterEstimate::DecidedBy() const {
   return "data and prior";
 }
 
+StartAgreement AssessStarts(const ParameterSetup& setup, const std::vector<double>& costs,
+                            const std::vector<Eigen::VectorXd>& ends) {
+  StartAgreement a;
+  const double best = *std::min_element(costs.begin(), costs.end());
+  std::vector<int> at_best;
+  for (size_t k = 0; k < costs.size(); ++k) {
+    a.of += std::isfinite(costs[k]);
+    if (2 * (costs[k] - best) <= kSameOptimumChiSquare) at_best.push_back(static_cast<int>(k));
+  }
+  a.at_best = static_cast<int>(at_best.size());
+  std::string names;
+  char b[200];
+  for (int i = 0; i < setup.size(); ++i) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k : at_best) lo = std::min(lo, ends[k][i]), hi = std::max(hi, ends[k][i]);
+    if (!(hi - lo > kStartsDisagree)) continue;
+    const double spread = setup.is_log(i) ? std::exp(hi - lo) : hi - lo;
+    a.disagree[setup.name(i)] = spread;
+    std::snprintf(b, sizeof b, "%s%s (%s%.3g)", names.empty() ? "" : ", ", setup.name(i).c_str(),
+                  setup.is_log(i) ? "x" : "by ", spread);
+    names += b;
+  }
+  if (a.of <= 1) {
+    a.verdict = a.of == 1 && costs.size() == 1
+                    ? "one start only: nothing shows whether it found the best point (--starts)"
+                    : "only one start gave a usable fit: nothing shows whether it found the best "
+                      "point";
+  } else if (a.at_best == 1) {
+    std::snprintf(b, sizeof b,
+                  "only 1 of %d starts reached the best chi-square (within %g): a lower optimum "
+                  "may exist that no start found; more starts (--starts) would tell",
+                  a.of, kSameOptimumChiSquare);
+    a.verdict = b;
+  } else {
+    std::snprintf(b, sizeof b, "%d of %d starts reached the best chi-square (within %g)",
+                  a.at_best, a.of, kSameOptimumChiSquare);
+    a.verdict = b;
+    if (names.empty()) {
+      a.verdict += " at the same values";
+    } else {
+      a.verdict += "; at equal chi-square they end at different values of " + names +
+                   ": the data do not fix these";
+    }
+  }
+  return a;
+}
+
 FitQuality AssessFit(double cost, int residuals, int rank, int shape_scales) {
   FitQuality f;
   f.chi_square = 2 * cost;
@@ -166,8 +213,8 @@ bool IdentifyOptions::IsValid(std::string* why) const {
     *why = "starts must lie in [1, 100000]";
     return false;
   }
-  if (!(start_spread >= 0 && start_spread <= 10)) {
-    *why = "start_spread must lie in [0, 10]";
+  if (!(start_factor >= 1 && start_factor <= 1e3)) {
+    *why = "start_factor must lie in [1, 1000]";
     return false;
   }
   if (!(bound_factor > 1 && std::isfinite(bound_factor))) {
@@ -184,6 +231,10 @@ bool IdentifyOptions::IsValid(std::string* why) const {
              (domain == Domain::kPositive ? ", LO > 0" : domain == Domain::kNonNegative ? ", LO >= 0" : "");
       return false;
     }
+  }
+  if (!(stop_chi_square >= 0 && stop_chi_square < 1)) {
+    *why = "stop_chi_square must lie in [0, 1)";
+    return false;
   }
   if (max_iterations < 1) {
     *why = "max_iterations must be at least 1";
@@ -219,11 +270,14 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     return std::isfinite(CostAt(residuals, x));
   };
   LocalFit best;
-  for (const Eigen::VectorXd& start :
-       DrawStarts(setup, x0, box, starts, o.start_spread, o.seed, usable)) {
-    LocalFit fit = FitLocally(residuals, o.method, start, box,
-                              o.max_iterations, o.simplex);
+  std::vector<Eigen::VectorXd> ends;
+  for (const internal::Start& start :
+       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable)) {
+    LocalFit fit = FitLocally(residuals, o.method, start.x, box, o.max_iterations, o.simplex,
+                              -1, o.stop_chi_square);
     s->start_costs.push_back(fit.cost);
+    s->start_origins.push_back(start.origin);
+    ends.push_back(fit.x);
     if (s->start_costs.size() == 1 || fit.cost < best.cost) best = std::move(fit);
   }
   s->starts = static_cast<int>(s->start_costs.size());
@@ -233,6 +287,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->seconds = Seconds(t0);
     return;
   }
+  s->start_agreement = AssessStarts(setup, s->start_costs, ends);
   s->status = Status::Success(best.message);
   s->converged = best.converged;
   s->cost = best.cost;
@@ -248,6 +303,18 @@ void Identify(const ModalModel& model, const Dataset& dataset,
                ? AssessFit(best.cost, static_cast<int>(s->uncertainty.jacobian.rows()),
                            s->uncertainty.rank, scales)
                : AssessFit(best.cost, residuals.num_residuals(), setup.size(), scales);
+  if (s->fit.poor && s->start_agreement.at_best < std::max(s->start_agreement.of, 2)) {
+    // The best of the starts is poor, but not every start agrees that it is
+    // the best point: the start may be to blame, not the model.
+    char words[400];
+    std::snprintf(words, sizeof words,
+                  "poor fit: chi-square %.4g on %d degrees of freedom (p = %.2g), reached by %d "
+                  "of %d starts. Either the model misses what the data show or no start found "
+                  "the best point: try more starts (--starts) before ringid diagnose",
+                  s->fit.chi_square, s->fit.degrees_of_freedom, *s->fit.p_value,
+                  s->start_agreement.at_best, s->start_agreement.of);
+    s->fit.verdict = words;
+  }
   for (int i = 0; i < setup.size(); ++i) s->coordinate_names.push_back(setup.name(i));
   for (Param p : model.parameters()) {
     const bool per_condition = dataset.IsPerCondition(p);
@@ -322,6 +389,7 @@ std::string IdentifySummary::FullReport() const {
   if (!status.ok()) return o.str();
   o << "  termination: " << status.message << "\n";
   o << "  " << fit.verdict << "\n";
+  o << "  starts: " << start_agreement.verdict << "\n";
   std::snprintf(line, sizeof line,
                 "  eq. (19) in-plane error %.3e, eq. (20) out-of-plane error %.3e\n",
                 relative_error_in_plane, relative_error_out_of_plane);

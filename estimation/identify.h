@@ -13,6 +13,7 @@
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
 #include "estimation/simplex.h"
+#include "estimation/starts.h"
 #include "estimation/status.h"
 #include "estimation/uncertainty.h"
 #include "model/plausibility.h"
@@ -22,16 +23,20 @@ namespace ringid {
 
 struct IdentifyOptions {
   Method method = Method::kLevenbergMarquardt;
-  // Fits from the dataset's initial point and from starts - 1 points drawn
-  // around it (log-normal, spread start_spread); the lowest cost wins.
-  int starts = 4;
-  double start_spread = 0.5;
+  // Fits from the dataset's initial point, from the point that matches the
+  // measured frequencies, and from points scattered log-uniformly within a
+  // factor start_factor of it (estimation/starts.h); the lowest cost wins.
+  int starts = 6;
+  double start_factor = 3;
   unsigned seed = 1;
   // Free coordinates stay within a factor bound_factor of their start,
   // those of parameters with `bounds` within them.
   double bound_factor = 1e3;
   Bounds bounds;
   int max_iterations = 200;  // Levenberg-Marquardt, per start
+  // Levenberg-Marquardt stops when no step changes chi-square by more than
+  // this (0: only Ceres' relative tolerances of 1e-14).
+  double stop_chi_square = internal::kStopChiSquare;
   SimplexOptions simplex;
   ResidualOptions residuals;
   UncertaintyOptions uncertainty;
@@ -154,6 +159,36 @@ struct FitQuality {
 };
 FitQuality AssessFit(double cost, int residuals, int rank, int shape_scales);
 
+// Starts whose chi-square lies within this of the best reached the same
+// optimum (cost within 0.5).
+inline constexpr double kSameOptimumChiSquare = 1.0;
+// Starts at the best chi-square disagree on a coordinate when they differ by
+// more than this in it (1 % of a positive parameter's value).
+inline constexpr double kStartsDisagree = 0.01;
+
+// Whether the starts found one best point (issue 21): how many reached the
+// best chi-square, and where those that did still differ.
+struct StartAgreement {
+  int at_best = 0;  // starts within kSameOptimumChiSquare of the best
+  int of = 0;       // starts with a usable fit
+  // Free coordinates on which the starts at the best disagree: the largest
+  // over the smallest value among them (the largest difference in units of
+  // the typical scale for a parameter that may be zero or negative).
+  std::map<std::string, double> disagree;
+  std::string verdict;  // the above in words
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("at_best", &at_best);
+    a->Visit("of", &of);
+    a->Visit("disagree", &disagree);
+    a->Visit("verdict", &verdict);
+  }
+};
+StartAgreement AssessStarts(const internal::ParameterSetup& setup,
+                            const std::vector<double>& costs,
+                            const std::vector<Eigen::VectorXd>& ends);
+
 struct IdentifySummary {
   // Success: a fit was obtained, and message says how the winning start
   // stopped; invalid input: nothing was fitted.
@@ -167,6 +202,8 @@ struct IdentifySummary {
   double seconds = 0;
   int starts = 0;
   std::vector<double> start_costs;
+  std::vector<StartOrigin> start_origins;  // beside start_costs
+  StartAgreement start_agreement;
   Parameters parameters;  // of the first condition
   Eigen::VectorXd x;      // the fitted coordinates (not in the report)
   std::vector<ParameterEstimate> estimates;  // model parameters, in order
@@ -204,6 +241,8 @@ struct IdentifySummary {
     a->Visit("seconds", &seconds);
     a->Visit("starts", &starts);
     a->Visit("start_costs", &start_costs);
+    a->Visit("start_origins", &start_origins);
+    a->Visit("start_agreement", &start_agreement);
     a->Group("relative_error", [&](auto* g) {
       g->Visit("in_plane_eq19", &relative_error_in_plane);
       g->Visit("out_of_plane_eq20", &relative_error_out_of_plane);

@@ -16,10 +16,6 @@ bool ResidualOptions::IsValid(std::string* why) const {
     *why = "relative_sigma must be positive";
     return false;
   }
-  if (!(prior_sigma >= 0) || !std::isfinite(prior_sigma)) {
-    *why = "prior_sigma must be finite and not negative";
-    return false;
-  }
   if (!(default_damping_sigma > 0) || !(default_shape_sigma > 0)) {
     *why = "default sigmas must be positive";
     return false;
@@ -100,7 +96,6 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
   for (int i = 0; i < setup.num_shared(); ++i) {
     const Param p = setup.free()[i];
     const auto given = dataset.priors.find(p);
-    const auto option = options_.prior.find(p);
     if (given != dataset.priors.end()) {
       const Prior& prior = given->second;
       if (prior.distribution == PriorDistribution::kNormal) {
@@ -109,10 +104,6 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
         priors_.push_back({i, prior.distribution, std::log(prior.center),
                            std::log(prior.spread) / kNormal95});
       }
-    } else if (options_.prior_sigma > 0 && option != options_.prior.end() &&
-               Info(p).group != Group::kEffect && option->second > 0 && setup.is_log(i)) {
-      priors_.push_back({i, PriorDistribution::kLognormal, std::log(option->second),
-                         options_.prior_sigma});
     }
   }
   for (int k = 0; k < static_cast<int>(priors_.size()); ++k) {

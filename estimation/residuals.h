@@ -61,12 +61,6 @@ struct ResidualOptions {
   double default_shape_sigma = 0.05;    // where shape_sigma is absent
   ShapeConvention shape_convention = ShapeConvention::kContract;
   Derivatives derivatives = Derivatives::kNumeric;
-  // A lognormal prior on free positive baseline parameters, median
-  // prior[p] and log-space sigma prior_sigma (0: none), where the dataset
-  // gives no prior of its own (docs/conventions.md §7).
-  double prior_sigma = 0;
-  std::map<Param, double> prior;
-
   bool IsValid(std::string* why) const;
 };
 

@@ -95,6 +95,17 @@ inline bool IsDamping(Param p) {
   }
 }
 
+// The positive stiffnesses of springs and contact slips (k_b*, k_cz, K_c*):
+// a mode's squared frequency grows with the stiffness of its element.
+inline bool IsStiffness(Param p) {
+  switch (p) {
+    case Param::k_bx: case Param::k_bz: case Param::k_btheta: case Param::k_cz:
+    case Param::K_cx: case Param::k_by: case Param::k_bgamma: case Param::k_bpsi:
+    case Param::K_cy: return true;
+    default: return false;
+  }
+}
+
 // A value for every parameter of the catalogue; effect parameters default to
 // their baseline value 0, everything else to NaN (unset).
 class Parameters {

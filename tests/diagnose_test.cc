@@ -258,16 +258,21 @@ TEST(DiagnoseTest, TheGroupThresholdIsTheChiSquarePointAtTheLevel) {
   EXPECT_TRUE(std::isnan(ChiSquareCritical(0, 1)));
 }
 
-TEST(DiagnoseTest, QuickValidationSuite) {
+// The suite of `ringid bench --suite=diagnosis` at two cases per truth (one
+// standing, one rolling), every initial value within a factor 3 of the truth.
+TEST(DiagnoseTest, QuickValidationSuiteFromScatteredStarts) {
   SuiteOptions o;
   o.source_dir = RINGID_SOURCE_DIR;
-  o.replicates = 1;  // one tire, two effect sizes: 14 cases
+  o.replicates = 2;
+  o.derivatives = Derivatives::kAnalytic;
   DiagnosisSuite r;
   const Status s = RunDiagnosisSuite(o, &r);
   ASSERT_TRUE(s.ok()) << s.message;
   EXPECT_EQ(r.cases.size(), 14u);
-  EXPECT_GE(r.accuracy, 0.9) << r.Markdown();
+  EXPECT_EQ(r.start_factor, 3);
+  EXPECT_LE(r.wrong, 1) << r.Markdown();
   EXPECT_EQ(r.false_alarms, 0) << r.Markdown();
+  EXPECT_EQ(r.differ_from_truth_start, 0) << r.Markdown();
   testing::ExpectRoundTrip(BenchDiagnosisReport{{}, r});
 }
 

@@ -97,8 +97,11 @@ std::string DiagnosisSuite::Markdown() const {
     md += "\n";
   }
   return md + "\n" + std::to_string(cases.size()) +
-         " cases (3 tire sizes, effects shifting the largest frequency by 3 % and 5 %, "
-         "noise 0.25 % / 10 % / 0.02): accuracy " + Percent(accuracy) + "; " +
+         " cases (standing and rolling in turn, 3 tire sizes, effects shifting the largest "
+         "frequency by 3 % and 5 %, noise 0.25 % / 10 % / 0.02; initial values within a factor " +
+         Format("%g", start_factor) + " of the truth): accuracy " + Percent(accuracy) + ", " +
+         std::to_string(wrong) + " wrong; " + std::to_string(differ_from_truth_start) +
+         " verdicts differ from those started at the truth; " +
          std::to_string(named) + " named, " + std::to_string(absorbed_and_explained) +
          " answered 'none' with the effect below the size a re-calibration absorbs; " +
          std::to_string(false_alarms) + " false alarms in " + std::to_string(no_effect_cases) +

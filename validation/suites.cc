@@ -200,13 +200,6 @@ const Param kRollingFree[] = {P::c_bx, P::c_btheta, P::k_bx,     P::k_btheta, P:
 const std::pair<Param, Param> kRollingTies[] = {
     {P::c_bz, P::c_bx}, {P::k_bz, P::k_bx}, {P::c_bpsi, P::c_bgamma}, {P::k_bpsi, P::k_bgamma}};
 
-std::string ConditionName(double speed) {
-  if (speed == 0) return "standing";
-  char text[48];
-  std::snprintf(text, sizeof text, "drum_%g", speed);
-  return text;
-}
-
 // One replicate's data: every condition of `speeds` measured with the
 // synthetic suite's noise, shapes on the belt, rim and hub.
 Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds,
@@ -417,6 +410,13 @@ Parameters ScaledTire(const Parameters& paper, double s) {
   for (P p : {P::c_bx, P::c_bz, P::c_by}) t[p] *= std::pow(s, 1.5);
   for (P p : {P::c_btheta, P::c_bgamma, P::c_bpsi}) t[p] *= std::pow(s, 3.5);
   return t;
+}
+
+std::string ConditionName(double speed) {
+  if (speed == 0) return "standing";
+  char text[48];
+  std::snprintf(text, sizeof text, "drum_%g", speed);
+  return text;
 }
 
 }  // namespace ringid

@@ -34,6 +34,9 @@ struct SuiteOptions {
   // per call is reported), together at least `speed_seconds_per_case` long.
   int speed_batches = 7;
   double speed_seconds_per_case = 0.5;
+  // diagnosis: the initial values scattered log-uniformly within this
+  // factor of the truth (issue 21: a new user's first guess).
+  double start_factor = 3;
   // Called with (done, total) as the suite's cases finish.
   std::function<void(int, int)> on_case;
 };
@@ -162,6 +165,11 @@ struct DiagnosisCase {
   bool absorbed_explained = false;  // "none", below the stated detectable size
   std::optional<double> gap_p_value;
   double seconds = 0;
+  std::vector<double> speeds_m_s;  // its conditions: {0} standing
+  // The same data diagnosed from the truth as initial values.
+  std::string verdict_from_truth;
+  std::vector<std::string> indistinguishable_from_truth;
+  bool same_as_from_truth = false;  // verdict and group
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("case", &name);
@@ -174,10 +182,19 @@ struct DiagnosisCase {
     a->Visit("absorbed_explained", &absorbed_explained);
     a->Visit("gap_p_value", &gap_p_value);
     a->Visit("seconds", &seconds);
+    a->Visit("speeds_m_s", &speeds_m_s);
+    a->Visit("verdict_from_truth", &verdict_from_truth);
+    a->Visit("indistinguishable_from_truth", &indistinguishable_from_truth);
+    a->Visit("same_as_from_truth", &same_as_from_truth);
   }
 };
 
 struct DiagnosisSuite {
+  // Each case's initial values: the truth times a factor drawn
+  // log-uniformly within [1/start_factor, start_factor].
+  double start_factor = 0;
+  int wrong = 0;  // cases not correct
+  int differ_from_truth_start = 0;  // cases whose verdict or group differ
   std::vector<DiagnosisCase> cases;
   double accuracy = 0;
   int named = 0;
@@ -192,7 +209,10 @@ struct DiagnosisSuite {
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("cases", &cases);
+    a->Visit("start_factor", &start_factor);
     a->Visit("accuracy", &accuracy);
+    a->Visit("wrong", &wrong);
+    a->Visit("differ_from_truth_start", &differ_from_truth_start);
     a->Visit("named", &named);
     a->Visit("absorbed_and_explained", &absorbed_and_explained);
     a->Visit("false_alarms", &false_alarms);
@@ -415,6 +435,8 @@ Status LoadPaper(const SuiteOptions& o, Dataset* table1, Parameters* paper);
 // translational stiffness s, contact stiffness K (N) s^2, rotational
 // stiffness s^3, dampings so that every damping ratio stays the same.
 Parameters ScaledTire(const Parameters& paper, double s);
+// A condition's name from its speed: "standing", "drum_6".
+std::string ConditionName(double speed);
 
 }  // namespace ringid
 

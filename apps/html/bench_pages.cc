@@ -269,16 +269,24 @@ HeatMapOptions ConfusionSection(const DiagnosisSuite& suite, Page* page) {
 void CasesSection(const DiagnosisSuite& suite, Page* page) {
   std::vector<Row> rows;
   for (const DiagnosisCase& diagnosis_case : suite.cases) {
+    std::vector<std::string> speeds;
+    for (double v : diagnosis_case.speeds_m_s) speeds.push_back(Format(v, "%g"));
     rows.push_back({TextCell(diagnosis_case.name), TextCell(diagnosis_case.truth),
-                    NumberCell(diagnosis_case.shift), NumberCell(diagnosis_case.value),
-                    TextCell(diagnosis_case.verdict), ListCell(diagnosis_case.indistinguishable),
+                    ListCell(speeds), NumberCell(diagnosis_case.shift),
+                    NumberCell(diagnosis_case.value), TextCell(diagnosis_case.verdict),
+                    ListCell(diagnosis_case.indistinguishable),
+                    TextCell(diagnosis_case.verdict_from_truth),
+                    YesNoCell(diagnosis_case.same_as_from_truth),
                     NumberCell(diagnosis_case.gap_p_value, "%.3g"),
                     YesNoCell(diagnosis_case.correct), YesNoCell(diagnosis_case.absorbed_explained),
                     NumberCell(diagnosis_case.seconds, "%.2f")});
   }
   page->Heading("Cases");
-  page->Table({"case", "truth", "shift", "value", "verdict", "indistinguishable", "gap p-value",
-               "correct", "absorbed and explained", "seconds"},
+  page->Note("Each case diagnosed from initial values scattered within a factor " +
+             Format(suite.start_factor, "%g") + " of the truth, and again from the truth.");
+  page->Table({"case", "truth", "speeds (m/s)", "shift", "value", "verdict", "indistinguishable",
+               "verdict from the truth", "same", "gap p-value", "correct",
+               "absorbed and explained", "seconds"},
               rows);
 }
 
@@ -321,6 +329,10 @@ void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page) {
   const DiagnosisSuite& suite = report.body;
   page->Summary({{"cases", NumberCell(static_cast<double>(suite.cases.size()), "%.0f")},
                  {"accuracy (%)", PercentCell(suite.accuracy)},
+                 {"wrong", NumberCell(suite.wrong, "%.0f")},
+                 {"initial values within a factor of the truth", NumberCell(suite.start_factor, "%g")},
+                 {"verdicts that differ from those started at the truth",
+                  NumberCell(suite.differ_from_truth_start, "%.0f")},
                  {"false alarms", NumberCell(suite.false_alarms, "%.0f")},
                  {"no-effect cases", NumberCell(suite.no_effect_cases, "%.0f")},
                  {"named", NumberCell(suite.named, "%.0f")},

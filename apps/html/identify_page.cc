@@ -26,10 +26,14 @@ struct Intervals {
   std::vector<std::string> without_std;  // free, not drawn
 };
 
-// The costs of the starts, each as "%.4g".
-Cell StartCostsCell(const std::vector<double>& costs) {
+// The costs of the starts, each as "%.4g (origin)".
+Cell StartCostsCell(const IdentifySummary& s) {
   std::vector<std::string> items;
-  for (double cost : costs) items.push_back(Format(cost));
+  for (size_t k = 0; k < s.start_costs.size(); ++k) {
+    items.push_back(Format(s.start_costs[k]) +
+                    (k < s.start_origins.size() ? std::string(" (") + ToString(s.start_origins[k]) + ")"
+                                                : ""));
+  }
   return ListCell(items);
 }
 
@@ -47,7 +51,8 @@ FactRows SummaryFacts(const std::string& dataset, const IdentifySummary& s) {
           {"p-value", NumberCell(s.fit.p_value, "%.3g")},
           {"evaluations", NumberCell(static_cast<double>(s.evaluations), "%.0f")},
           {"starts", NumberCell(s.starts, "%.0f")},
-          {"final cost per start", StartCostsCell(s.start_costs)},
+          {"final cost per start", StartCostsCell(s)},
+          {"did the starts agree", TextCell(s.start_agreement.verdict)},
           {"seconds", NumberCell(s.seconds)},
           {"frequency weighting", NameCell(s.frequency_weighting)},
           {"relative error, in-plane (eq. 19)", NumberCell(s.relative_error_in_plane)},
