@@ -84,14 +84,25 @@ Dataset WarmStart(const Dataset& dataset, const IdentifySummary& fitted) {
 
 // Leave-one-mode-out: fit without each mode in turn, predict it; the sum of
 // the predicted modes' chi-square.
+// A dropped mode frees the directions only it determined, which a fit then
+// wanders along until its prediction is lost: each refit holds the values of
+// the fit with every mode (`warm`'s initial values, not the user's guess) as
+// a lognormal prior of log-sd kHeldOutPriorSigma where no prior is declared.
+constexpr double kHeldOutPriorSigma = 0.2;
 std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
                               const DiagnoseOptions& o) {
   if (warm.modes.size() < 2) return std::nullopt;
   IdentifyOptions one = o.fit;
   one.starts = 1;
+  Dataset held = warm;
+  for (const auto& [p, v] : warm.initial) {
+    if (Info(p).domain == Domain::kPositive && v > 0 && !held.priors.count(p)) {
+      held.priors[p] = {PriorDistribution::kLognormal, v, std::exp(kNormal95 * kHeldOutPriorSigma)};
+    }
+  }
   double total = 0;
   for (size_t j = 0; j < warm.modes.size(); ++j) {
-    Dataset without = warm;
+    Dataset without = held;
     without.modes.erase(without.modes.begin() + j);
     IdentifySummary s;
     Identify(model, without, one, &s);
@@ -122,8 +133,10 @@ double InitialCost(const ModalModel& model, const Dataset& dataset, const Residu
 // The effect at 0 is the baseline, so a fit that ends above the baseline's
 // cost has failed: the next seed of the scan is tried, up to kEffectSeeds.
 constexpr int kEffectSeeds = 4;
-IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
-                          const Dataset& warm, double baseline_cost, const DiagnoseOptions& o) {
+constexpr int kEffectStarts = 3;
+IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect, const Dataset& warm,
+                          const Dataset& dataset, double baseline_cost,
+                          const DiagnoseOptions& o) {
   IdentifyOptions one = o.fit;
   one.starts = 1;
   std::vector<std::pair<double, Dataset>> seeds;
@@ -156,6 +169,24 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect,
     if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
     if (!best.status.ok() && best.status.message.empty()) best = s;
   }
+  // The baseline may have bent itself to absorb part of the effect, a basin
+  // LM does not leave: the effect's model also gets identify's own starts
+  // (kEffectStarts of them), its parameters at the scan's best size.
+  Dataset cold = dataset;
+  if (starts.size() > 1) {
+    for (Param p : effect.parameters()) {
+      if (starts[1]->initial.count(p)) cold.initial[p] = starts[1]->initial.at(p);
+    }
+  } else {
+    for (Param p : effect.parameters()) {
+      if (!cold.known.count(p)) cold.initial[p] = Info(p).domain == Domain::kPositive ? TypicalScale(p) : 0;
+    }
+  }
+  IdentifyOptions multi = o.fit;
+  multi.starts = std::min(o.fit.starts, kEffectStarts);
+  IdentifySummary s;
+  Identify(model, cold, multi, &s);
+  if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
   return best;
 }
 
@@ -370,7 +401,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   EffectFit f;
   f.effect = &effect;
   const RigidRingModel model = baseline.With(&effect);
-  const IdentifySummary s = FitEffect(model, effect, warm, r.baseline.cost, o);
+  const IdentifySummary s = FitEffect(model, effect, warm, dataset, r.baseline.cost, o);
   *fitted = s;
   if (!s.status.ok()) {
     f.note = s.status.message;
@@ -597,7 +628,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     if (r->verdict && r->ranking[k].effect == r->verdict) verdict_fit = &ranked_fits[k];
   }
   r->absorbed = Absorbed(r->baseline, verdict_fit, o);
-  if (!r->verdict) {
+  if (!r->verdict && r->p_value) {
     if (!r->absorbed.empty() && r->significant) why << "; part of it sits in the parameters";
     const std::string sizes = DetectableSizes(baseline, warm, o, r);
     if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;

@@ -167,17 +167,17 @@ TEST(DiagnoseTest, ThePapersData) {
     }
   }
   // With r_l0 a physical radius the camber stiffness r_l0 F_cz0 grows a
-  // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits: a yaw
-  // stiffness is needed. At standstill contact yaw stiffness and an untied
-  // sidewall yaw stiffness enter S[psi, psi] identically: they must come as
-  // one group.
+  // hundredfold and the paper's tie k_bpsi = k_bgamma no longer fits. But its
+  // seven frequencies set sixteen free parameters: the baseline can match
+  // them exactly (the initial values are no prior), and the report says that
+  // no gap can be detected instead of naming an effect or sizes.
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1_r_l0_physical.json"), &d, &e));
   Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  EXPECT_TRUE(r.significant);
-  const std::vector<std::string> g = EffectNames(r.indistinguishable);
-  EXPECT_NE(std::find(g.begin(), g.end(), "contact_yaw_stiffness"), g.end()) << r.explanation;
-  EXPECT_NE(std::find(g.begin(), g.end(), "anisotropic_sidewall"), g.end()) << r.explanation;
+  EXPECT_FALSE(r.p_value.has_value());
+  EXPECT_EQ(r.verdict, nullptr);
+  EXPECT_NE(r.explanation.find("no degree of freedom is left"), std::string::npos) << r.explanation;
+  EXPECT_EQ(r.explanation.find("would absorb"), std::string::npos) << r.explanation;
 }
 
 // The paper's tire with an anisotropic sidewall (dk_bz, and dk_bpsi = 2000
@@ -195,6 +195,10 @@ DiagnosisReport DiagnoseSidewall(double dk_bz) {
   EXPECT_TRUE(Simulate(RigidRingModel({FindEffect("anisotropic_sidewall")}), truth, SimulateOptions{},
                        &rng, &d, &why))
       << why;
+  // Standing, k_bz and k_cz act on z_b alike: without a declared prior on
+  // k_cz the baseline absorbs any dk_bz. The engineer states one (the
+  // initial values are no prior).
+  d.priors[Param::k_cz] = {PriorDistribution::kLognormal, truth[Param::k_cz], 1.1};
   DiagnoseOptions o;
   o.held_out = false;
   DiagnosisReport r;
@@ -222,23 +226,29 @@ TEST(DiagnoseTest, AnEffectTheDataCannotRejectAgainstTheVerdictAtTheReportsLevel
   const double level = DiagnoseOptions().effect_significance;
   for (double dk_bz : {2e5, 6e5}) {
     const DiagnosisReport r = DiagnoseSidewall(dk_bz);
-    ASSERT_STREQ(EffectName(r.verdict), "anisotropic_sidewall") << r.explanation;
     const EffectFit* side = FitOf(r, "anisotropic_sidewall");
     const EffectFit* yaw = FitOf(r, "contact_yaw_stiffness");
     ASSERT_TRUE(side && yaw && side->ok && yaw->ok);
+    // The verdict is one of the two: the smaller wins on AIC where the larger
+    // fits no better.
+    ASSERT_TRUE(r.verdict == side->effect || r.verdict == yaw->effect) << r.explanation;
+    const EffectFit* verdict = r.verdict == side->effect ? side : yaw;
     ASSERT_EQ(side->extra_parameters - yaw->extra_parameters, 1);
     const double d = yaw->chi2 - side->chi2;
-    ASSERT_GE(d, -1e-6) << "nested: the larger fits at least as well";
+    ASSERT_GE(d, -1e-3) << "nested: the larger fits at least as well";
     const double p = std::erfc(std::sqrt(std::max(d, 0.0) / 2));
     const std::vector<std::string> group = EffectNames(r.indistinguishable);
-    const bool grouped = std::find(group.begin(), group.end(), "contact_yaw_stiffness") != group.end();
+    const bool grouped =
+        std::find(group.begin(), group.end(), "contact_yaw_stiffness") != group.end() &&
+        std::find(group.begin(), group.end(), "anisotropic_sidewall") != group.end();
     EXPECT_EQ(grouped, p >= level) << "dk_bz " << dk_bz << ": chi-square difference " << d
                                    << ", p = " << p << "; " << r.explanation;
+    if (dk_bz > 5e5) EXPECT_FALSE(grouped) << "the larger anisotropy is told apart";
     // The report records the level and, per effect, its difference and the
     // threshold: on one degree of freedom the x with erfc(sqrt(x / 2)) =
     // level (10.83 at 0.001).
     EXPECT_EQ(r.level, level);
-    EXPECT_NEAR(yaw->chi2_above_verdict, d, 1e-9);
+    EXPECT_NEAR(yaw->chi2_above_verdict, yaw->chi2 - verdict->chi2, 1e-9);
     EXPECT_NEAR(std::erfc(std::sqrt(yaw->group_threshold / 2)), level, 1e-9 * level);
     EXPECT_NE(r.explanation.find("significant at level 0.001"), std::string::npos) << r.explanation;
   }
