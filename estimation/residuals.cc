@@ -212,6 +212,11 @@ bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
 
 namespace {
 
+// A measured mode whose paired model mode is this factor further from it than
+// the nearest model mode is not paired with its nearest (a swap, not a
+// crossing, where the two are a few per cent apart).
+constexpr double kNearerRatio = 1.2;
+
 // "lateral 44.1 Hz, camber 52.0 Hz": the model modes nearest to hz, at most two.
 std::string Nearest(const ModalSolution& solution, double hz) {
   std::vector<const Mode*> by;
@@ -250,10 +255,9 @@ std::vector<std::string> ModalResiduals::PairingWarnings(const double* x, bool s
         dataset_.conditions.size() > 1 ? " in condition " + dataset_.conditions[m.condition].name : "";
     const std::string nearest = Nearest(solution, m.frequency_hz);
     double ratio = INFINITY;  // to the nearest model mode, >= 1
-    const Mode* closest = nullptr;
     for (const Mode& mode : solution.modes) {
-      const double r = std::max(mode.frequency_hz / m.frequency_hz, m.frequency_hz / mode.frequency_hz);
-      if (r < ratio) ratio = r, closest = &mode;
+      ratio = std::min(ratio, std::max(mode.frequency_hz / m.frequency_hz,
+                                       m.frequency_hz / mode.frequency_hz));
     }
     const double limit = start ? kStartFrequencyRatio : kFitFrequencyRatio;
     if (ratio > limit) {
@@ -263,12 +267,17 @@ std::vector<std::string> ModalResiduals::PairingWarnings(const double* x, bool s
                     when, where.c_str(), LabelName(m.label), m.frequency_hz, ratio, limit,
                     nearest.c_str());
       out.push_back(line);
-    } else if (paired.label != m.label || closest != &paired) {
+    } else if (paired.label != m.label ||
+               std::abs(std::log(paired.frequency_hz / m.frequency_hz)) >
+                   std::log(kNearerRatio * ratio)) {
       std::snprintf(line, sizeof line,
                     "%s%s, measured %s (%.4g Hz) is paired %s with model %s (%.4g Hz); nearest "
                     "model modes: %s",
                     when, where.c_str(), LabelName(m.label), m.frequency_hz,
-                    m.shape.empty() ? "by label" : "by its shape", LabelName(paired.label),
+                    !m.shape.empty()            ? "by its shape"
+                    : paired.label == m.label   ? "by label"
+                                                : "as the nearest model mode a shape left free",
+                    LabelName(paired.label),
                     paired.frequency_hz, nearest.c_str());
       out.push_back(line);
     }
