@@ -144,11 +144,12 @@ class ModalResiduals {
             std::string* why) const;
 
   // What a reader must know about the pairing at x (issue 21), one sentence
-  // each: a measured mode paired with a model mode of another label or not
-  // with its nearest one, one further than kStartFrequencyRatio (at the
-  // start) or kFitFrequencyRatio (at the best fit) from every model mode, and
-  // two model modes driven to one frequency (kCoincidentRelative) where the
-  // data have two; each names the nearest model modes.
+  // each: a measured mode paired with a model mode of another label, or with
+  // one kNearerRatio (residuals.cc) further from it than the nearest; one
+  // further than kStartFrequencyRatio (at the start) or kFitFrequencyRatio (at
+  // the best fit) from every model mode; two model modes driven to one
+  // frequency (kCoincidentRelative) where the data have two. Each names the
+  // nearest model modes.
   std::vector<std::string> PairingWarnings(const double* x, bool start) const;
 
   // The standard deviation a measured frequency is weighted by (Hz).
