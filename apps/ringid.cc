@@ -179,6 +179,11 @@ bool ParseSet(std::map<Param, double>* set, std::string* error) {
                (d == Domain::kPositive ? "a positive number" : "a number not negative") + ")";
       return false;
     }
+    const std::string problem = ParameterValueProblem(*p, v);
+    if (!problem.empty()) {
+      *error = "--set: " + name + ": bad value '" + text + "' (" + problem + ")";
+      return false;
+    }
     (*set)[*p] = v;
   }
   return true;

@@ -22,6 +22,13 @@ struct Failure {
   std::string message;
 };
 
+// "1e+12 in magnitude", for messages.
+std::string Magnitude() {
+  std::ostringstream o;
+  o << kMaxParameterMagnitude << " in magnitude";
+  return o.str();
+}
+
 [[noreturn]] void Fail(const std::string& field, const std::string& message) {
   throw Failure{field, message};
 }
@@ -66,9 +73,8 @@ std::map<Param, double> Values(const json& j, const std::string& field) {
     const std::string f = field + "." + it.key();
     const Param p = ParamCalled(it.key(), f);
     const double v = Number(it.value(), f);
-    const Domain d = Info(p).domain;
-    if (d == Domain::kPositive && !(v > 0)) Fail(f, "must be positive");
-    if (d == Domain::kNonNegative && v < 0) Fail(f, "must not be negative");
+    const std::string problem = ParameterValueProblem(p, v);
+    if (!problem.empty()) Fail(f, problem);
     out[p] = v;
   }
   return out;
@@ -110,6 +116,8 @@ MeasuredMode Mode(const json& j, const std::string& field) {
   }
   if (!j.contains("frequency_hz")) Fail(field + ".frequency_hz", "missing");
   m.frequency_hz = Positive(j["frequency_hz"], field + ".frequency_hz");
+  const std::string problem = ModeFrequencyProblem(m.frequency_hz);
+  if (!problem.empty()) Fail(field + ".frequency_hz", problem);
   if (j.contains("frequency_sigma_hz")) {
     m.frequency_sigma_hz =
         Positive(j["frequency_sigma_hz"], field + ".frequency_sigma_hz");
@@ -300,7 +308,10 @@ void Priors(const json& j, Dataset* d) {
     prior.distribution = *distribution;
     if (normal) {
       prior.center = Number(o["mean"], f + ".mean");
+      const std::string problem = ParameterValueProblem(p, prior.center);
+      if (!problem.empty()) Fail(f + ".mean", problem);
       prior.spread = Positive(o["sigma"], f + ".sigma");
+      if (prior.spread > kMaxParameterMagnitude) Fail(f + ".sigma", ParameterValueProblem(p, prior.spread));
     } else {
       if (Info(p).domain != Domain::kPositive) {
         Fail(f + ".distribution",
@@ -308,8 +319,13 @@ void Priors(const json& j, Dataset* d) {
                  "' may be zero or negative");
       }
       prior.center = Positive(o["median"], f + ".median");
+      const std::string problem = ParameterValueProblem(p, prior.center);
+      if (!problem.empty()) Fail(f + ".median", problem);
       prior.spread = Number(o["factor_95"], f + ".factor_95");
       if (!(prior.spread > 1)) Fail(f + ".factor_95", "must be greater than 1");
+      if (prior.spread > kMaxParameterMagnitude) {
+        Fail(f + ".factor_95", "is absurd: beyond " + Magnitude());
+      }
     }
     if (d->known.count(p)) {
       Fail(f, "'" + it.key() + "' is known: a known value needs no prior");
@@ -437,6 +453,23 @@ void Check(const json& j, Dataset* d) {
 
 }  // namespace
 
+std::string ParameterValueProblem(Param p, double v) {
+  if (!std::isfinite(v)) return "must be finite";
+  const Domain d = Info(p).domain;
+  if (d == Domain::kPositive && !(v > 0)) return "must be positive";
+  if (d == Domain::kNonNegative && v < 0) return "must not be negative";
+  if (std::abs(v) > kMaxParameterMagnitude) return "is absurd: beyond " + Magnitude();
+  return "";
+}
+
+std::string ModeFrequencyProblem(double hz) {
+  if (hz >= kMinModeFrequencyHz && hz <= kMaxModeFrequencyHz) return "";
+  std::ostringstream o;
+  o << hz << " Hz is outside " << kMinModeFrequencyHz << "-" << kMaxModeFrequencyHz
+    << " Hz, where every rigid-ring mode lies (a typo, or not a rigid-ring mode?)";
+  return o.str();
+}
+
 std::string LoadError::OneLine() const {
   std::string line = file + ": ";
   if (!field.empty()) line += field + ": ";
@@ -551,7 +584,10 @@ void CheckParameterSet(const json& j, Parameters* p) {
     const json& v = it.value().is_object() && it.value().contains("value")
                         ? it.value()["value"]
                         : it.value();
-    (*p)[param] = Number(v, field + (it.value().is_object() ? ".value" : ""));
+    const std::string f = field + (it.value().is_object() ? ".value" : "");
+    (*p)[param] = Number(v, f);
+    const std::string problem = ParameterValueProblem(param, (*p)[param]);
+    if (!problem.empty()) Fail(f, problem);
   }
 }
 

@@ -70,6 +70,23 @@ inline constexpr int kMaxModes = 7;
 inline constexpr int kMaxJsonDepth = 16;
 inline constexpr long kMaxFileBytes = 4 << 20;
 
+// Input checked against physics before any solve (docs/conventions.md §3).
+// The frequencies a rigid-ring mode can have: the belt's rigid-body modes of
+// a tire, from a truck's to a bicycle's, lie between a few Hz and a few
+// hundred (paper Table 4: 17-98 Hz); a value outside is a typo or not a
+// rigid-ring mode (a bending mode of the belt, a hub resonance, Hz for rad/s).
+inline constexpr double kMinModeFrequencyHz = 1;
+inline constexpr double kMaxModeFrequencyHz = 1000;
+// No parameter of the catalogue, in SI units, comes near this magnitude
+// (stiffnesses are 1e4-1e7, docs/reference.md); beyond it a value is absurd.
+inline constexpr double kMaxParameterMagnitude = 1e12;
+
+// Why `v` cannot be a value of `p` (its sign domain, kMaxParameterMagnitude),
+// as "must be positive"; empty when it can.
+std::string ParameterValueProblem(Param p, double v);
+// Why `hz` cannot be a rigid-ring mode's frequency; empty when it can.
+std::string ModeFrequencyProblem(double hz);
+
 // What went wrong, as one line: "FILE: FIELD: MESSAGE".
 struct LoadError {
   std::string file;

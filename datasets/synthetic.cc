@@ -27,6 +27,10 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
                LabelName(static_cast<ModeLabel>(l)) + " mode" + where;
       return false;
     }
+    if (const std::string problem = ModeFrequencyProblem(m->frequency_hz); !problem.empty()) {
+      *error = std::string("the truth's ") + LabelName(m->label) + " mode" + where + ": " + problem;
+      return false;  // a dataset the loader would refuse
+    }
     MeasuredMode mm;
     mm.condition = c;
     mm.label = m->label;

@@ -432,7 +432,18 @@ bool IsTirPath(const std::string& path) {
 bool LoadParameters(const std::string& path, Parameters* p, LoadError* error) {
   if (!IsTirPath(path)) return LoadParameterSet(path, p, error);
   TirFile file;
-  return LoadTir(path, &file, error) && TirToParameters(file, p, error);
+  if (!LoadTir(path, &file, error) || !TirToParameters(file, p, error)) return false;
+  for (int i = 0; i < kNumParams; ++i) {  // what the keys give, against physics
+    const Param q = ParamAt(i);
+    const std::string problem = p->IsSet(q) ? ParameterValueProblem(q, (*p)[q]) : "";
+    if (!problem.empty()) {
+      error->file = path;
+      error->field = ParamName(q);
+      error->message = problem;
+      return false;
+    }
+  }
+  return true;
 }
 
 std::string TirMappingMarkdown() {

@@ -208,6 +208,38 @@ std::string IdentifySummary::OnBounds() const {
          ". Widen the box with --bounds=NAME:LO:HI, or hold the parameter with --fix=NAME.";
 }
 
+namespace {
+
+// Data with fewer observables than free parameters cannot set them all: said
+// in one sentence, empty otherwise. A shape's scale is fitted, so a shape of n
+// components observes n - 1 numbers.
+std::string FewObservables(const ModalResiduals& residuals) {
+  int frequencies = 0, dampings = 0, components = 0, priors = 0;
+  std::set<int> shaped;
+  for (const ModalResiduals::Slot& slot : residuals.slots()) {
+    switch (slot.kind) {
+      case ModalResiduals::Slot::kFrequency: ++frequencies; break;
+      case ModalResiduals::Slot::kDamping: ++dampings; break;
+      case ModalResiduals::Slot::kShape: ++components, shaped.insert(slot.mode); break;
+      case ModalResiduals::Slot::kPrior: ++priors; break;
+    }
+  }
+  const int shapes = static_cast<int>(shaped.size());
+  const int observables = frequencies + dampings + components - shapes;
+  const int free = residuals.num_parameters();
+  if (observables >= free) return "";
+  std::ostringstream o;
+  o << residuals.dataset().modes.size() << " measured mode(s) give " << observables
+    << " observable(s) (" << frequencies << " frequencies, " << dampings << " damping ratios, "
+    << components - shapes << " shape components beyond their scales) for " << free
+    << " free parameters: they cannot set them all";
+  if (priors > 0) o << " (" << priors << " prior(s) add what they say)";
+  o << "; fix what you know (known, --fix) or measure more modes";
+  return o.str();
+}
+
+}  // namespace
+
 bool IdentifyOptions::IsValid(std::string* why) const {
   if (starts < 1 || starts > 100000) {
     *why = "starts must lie in [1, 100000]";
@@ -264,6 +296,8 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->status = Status::InvalidInput(why);
     return;
   }
+  s->warnings = residuals.PairingWarnings(x0.data(), true);
+  if (const std::string few = FewObservables(residuals); !few.empty()) s->warnings.push_back(few);
   const Box box = BoundsAround(setup, x0, o.bound_factor, o.bounds);
   const int starts = setup.size() == 0 ? 1 : o.starts;
   auto usable = [&](const Eigen::VectorXd& x) {
@@ -326,6 +360,9 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   }
   std::vector<Param> used = model.parameters();
   s->plausibility = CheckPlausibility(s->parameters, used);
+  for (std::string& w : residuals.PairingWarnings(best.x.data(), false)) {
+    s->warnings.push_back(std::move(w));
+  }
 
   std::vector<ModalSolution> solutions;
   std::vector<int> pairs;
@@ -386,6 +423,7 @@ std::string IdentifySummary::FullReport() const {
   std::ostringstream o;
   char line[256];
   o << BriefReport() << "\n";
+  for (const std::string& w : warnings) o << "  warning: " << w << "\n";
   if (!status.ok()) return o.str();
   o << "  termination: " << status.message << "\n";
   o << "  " << fit.verdict << "\n";

@@ -194,6 +194,10 @@ struct IdentifySummary {
   // stopped; invalid input: nothing was fitted.
   Status status;
   bool converged = false;   // the winning start met its convergence test
+  // Headline warnings, one sentence each: the pairing of measured with model
+  // modes at the start and at the best fit (ModalResiduals::PairingWarnings),
+  // and data with fewer observables than free parameters.
+  std::vector<std::string> warnings;
   Method method = Method::kLevenbergMarquardt;
   FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
   double cost = 0;          // 1/2 sum of squared weighted residuals
@@ -234,6 +238,7 @@ struct IdentifySummary {
     a->Visit("method", &method);
     a->Visit("frequency_weighting", &frequency_weighting);
     status.Serialize(a);
+    a->Visit("warnings", &warnings);
     a->Visit("converged", &converged);
     a->Visit("cost", &cost);
     a->Visit("fit", &fit);

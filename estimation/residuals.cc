@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <set>
 
 #include <ceres/dynamic_numeric_diff_cost_function.h>
 
@@ -155,19 +157,146 @@ bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
     const std::vector<int> pick = AssignMaxScore(score);
     for (size_t a = 0; a < shaped.size(); ++a) (*pairs)[shaped[a]] = pick[a];
   }
-  // ... and the label decides the rest.
+  // ... and the label decides the rest, one to one: a label whose model mode
+  // a shape took leaves its measured mode the nearest free model mode in
+  // frequency, of its own plane where there is one (PairingWarnings says so).
+  std::vector<bool> taken(modes.size(), false);
+  for (int i : shaped) taken[(*pairs)[i]] = true;
+  std::vector<int> left;
   for (int i = 0; i < static_cast<int>(measured.size()); ++i) {
     if (measured[i].condition != c || (*pairs)[i] >= 0) continue;
     for (int b = 0; b < static_cast<int>(modes.size()); ++b) {
-      if (modes[b].label == measured[i].label) (*pairs)[i] = b;
+      if (modes[b].label == measured[i].label && !taken[b]) (*pairs)[i] = b;
     }
-    if ((*pairs)[i] < 0) {
+    if ((*pairs)[i] >= 0) {
+      taken[(*pairs)[i]] = true;
+    } else if (!solution.Find(measured[i].label)) {
       *why = std::string("the model has no oscillating ") + LabelName(measured[i].label) +
              " mode (its roots are real) in condition " + dataset_.conditions[c].name;
       return false;
+    } else {
+      left.push_back(i);
     }
   }
+  if (left.empty()) return true;
+  std::vector<int> free;
+  for (int b = 0; b < static_cast<int>(modes.size()); ++b) {
+    if (!taken[b]) free.push_back(b);
+  }
+  if (free.size() < left.size()) {
+    *why = "fewer model modes than measured modes in condition " + dataset_.conditions[c].name;
+    return false;
+  }
+  Eigen::MatrixXd score(left.size(), free.size());
+  for (size_t a = 0; a < left.size(); ++a) {
+    const MeasuredMode& m = measured[left[a]];
+    for (size_t b = 0; b < free.size(); ++b) {
+      const Mode& mode = modes[free[b]];
+      score(a, b) = -std::abs(std::log(mode.frequency_hz / m.frequency_hz)) -
+                    (mode.plane() == LabelPlane(m.label) ? 0 : 100);
+    }
+  }
+  const std::vector<int> pick = AssignMaxScore(score);
+  for (size_t a = 0; a < left.size(); ++a) (*pairs)[left[a]] = free[pick[a]];
   return true;
+}
+
+namespace {
+
+// A measured mode whose paired model mode is this factor further from it than
+// the nearest model mode is not paired with its nearest (a swap, not a
+// crossing, where the two are a few per cent apart).
+constexpr double kNearerRatio = 1.2;
+
+// "lateral 44.1 Hz, camber 52.0 Hz": the model modes nearest to hz, at most two.
+std::string Nearest(const ModalSolution& solution, double hz) {
+  std::vector<const Mode*> by;
+  for (const Mode& m : solution.modes) by.push_back(&m);
+  auto distance = [hz](const Mode* m) { return std::abs(std::log(m->frequency_hz / hz)); };
+  std::sort(by.begin(), by.end(),
+            [&](const Mode* a, const Mode* b) { return distance(a) < distance(b); });
+  std::string out;
+  char item[80];
+  for (size_t k = 0; k < by.size() && k < 2; ++k) {
+    std::snprintf(item, sizeof item, "%s%s %.1f Hz", k ? ", " : "", LabelName(by[k]->label),
+                  by[k]->frequency_hz);
+    out += item;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> ModalResiduals::PairingWarnings(const double* x, bool start) const {
+  const char* when = start ? "at the start" : "at the best fit";
+  std::vector<ModalSolution> solutions;
+  std::vector<int> pairs;
+  std::string why;
+  if (!Pair(x, &solutions, &pairs, &why)) {
+    return {std::string(when) + ", the measured modes cannot be paired: " + why};
+  }
+  std::vector<std::string> out;
+  std::set<std::pair<int, int>> coincident;  // (condition, lower model index) said
+  char line[512];
+  for (size_t i = 0; i < dataset_.modes.size(); ++i) {
+    const MeasuredMode& m = dataset_.modes[i];
+    const ModalSolution& solution = solutions[m.condition];
+    const Mode& paired = solution.modes[pairs[i]];
+    const std::string where =
+        dataset_.conditions.size() > 1 ? " in condition " + dataset_.conditions[m.condition].name : "";
+    const std::string nearest = Nearest(solution, m.frequency_hz);
+    double ratio = INFINITY;  // to the nearest model mode, >= 1
+    for (const Mode& mode : solution.modes) {
+      ratio = std::min(ratio, std::max(mode.frequency_hz / m.frequency_hz,
+                                       m.frequency_hz / mode.frequency_hz));
+    }
+    const double limit = start ? kStartFrequencyRatio : kFitFrequencyRatio;
+    if (ratio > limit) {
+      std::snprintf(line, sizeof line,
+                    "%s%s, measured %s (%.4g Hz) is a factor %.3g from every model mode, more "
+                    "than %g (nearest: %s): is it a rigid-ring mode, and its frequency right?",
+                    when, where.c_str(), LabelName(m.label), m.frequency_hz, ratio, limit,
+                    nearest.c_str());
+      out.push_back(line);
+    } else if (paired.label != m.label ||
+               std::abs(std::log(paired.frequency_hz / m.frequency_hz)) >
+                   std::log(kNearerRatio * ratio)) {
+      std::snprintf(line, sizeof line,
+                    "%s%s, measured %s (%.4g Hz) is paired %s with model %s (%.4g Hz); nearest "
+                    "model modes: %s",
+                    when, where.c_str(), LabelName(m.label), m.frequency_hz,
+                    !m.shape.empty()            ? "by its shape"
+                    : paired.label == m.label   ? "by label"
+                                                : "as the nearest model mode a shape left free",
+                    LabelName(paired.label),
+                    paired.frequency_hz, nearest.c_str());
+      out.push_back(line);
+    }
+    // Two model modes at one frequency where the data have two.
+    for (int b = 0; b < static_cast<int>(solution.modes.size()); ++b) {
+      const Mode& other = solution.modes[b];
+      if (b == pairs[i] ||
+          std::abs(other.frequency_hz - paired.frequency_hz) >
+              kCoincidentRelative * paired.frequency_hz) {
+        continue;
+      }
+      bool data_too = false;  // the other is paired with a measured mode at this frequency
+      for (size_t k = 0; k < dataset_.modes.size(); ++k) {
+        data_too |= k != i && pairs[k] == b && dataset_.modes[k].condition == m.condition &&
+                    std::abs(dataset_.modes[k].frequency_hz - m.frequency_hz) <=
+                        kCoincidentRelative * m.frequency_hz;
+      }
+      if (data_too || !coincident.insert({m.condition, std::min(b, pairs[i])}).second) continue;
+      std::snprintf(line, sizeof line,
+                    "%s%s, model modes %s and %s are driven to one frequency (%.5g and %.5g "
+                    "Hz, within %g %%) while the data put measured %s at %.4g Hz",
+                    when, where.c_str(), LabelName(paired.label), LabelName(other.label),
+                    paired.frequency_hz, other.frequency_hz, 100 * kCoincidentRelative,
+                    LabelName(m.label), m.frequency_hz);
+      out.push_back(line);
+    }
+  }
+  return out;
 }
 
 bool ModalResiduals::Pair(const double* x, std::vector<ModalSolution>* solutions,

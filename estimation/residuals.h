@@ -72,6 +72,16 @@ RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention conv
 double Mac(const RealShapeVector& model,
            const std::vector<std::pair<Dof, double>>& measured);
 
+// Frequency ratios the pairing is judged by (ModalResiduals::PairingWarnings).
+// At the start: a guess whose stiffnesses lie within a factor 4 of the truth
+// puts every mode within a factor 2 (f ~ sqrt(k / m)); further, the guess or
+// the measured frequency is wrong.
+inline constexpr double kStartFrequencyRatio = 2;
+// At the best fit: 20 %, tens of sigmas of any measured frequency.
+inline constexpr double kFitFrequencyRatio = 1.2;
+// Two model modes within this relative difference share one frequency.
+inline constexpr double kCoincidentRelative = 1e-3;
+
 namespace internal {
 
 class ModalResiduals {
@@ -126,6 +136,15 @@ class ModalResiduals {
   // False (with `why`) as for Evaluate.
   bool Pair(const double* x, std::vector<ModalSolution>* solutions, std::vector<int>* pairs,
             std::string* why) const;
+
+  // What a reader must know about the pairing at x (issue 21), one sentence
+  // each: a measured mode paired with a model mode of another label, or with
+  // one kNearerRatio (residuals.cc) further from it than the nearest; one
+  // further than kStartFrequencyRatio (at the start) or kFitFrequencyRatio (at
+  // the best fit) from every model mode; two model modes driven to one
+  // frequency (kCoincidentRelative) where the data have two. Each names the
+  // nearest model modes.
+  std::vector<std::string> PairingWarnings(const double* x, bool start) const;
 
   // The standard deviation a measured frequency is weighted by (Hz).
   double FrequencySigma(const MeasuredMode& m) const;

@@ -233,6 +233,56 @@ nlohmann::json LoadJson(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
+// Issue 21: values no rigid ring can have are refused before any solve (exit 2,
+// one line naming the file and field, nothing written). On the template, the
+// longitudinal mode typed 100x too high paired the wrong modes with exit 0, the
+// lateral one typed as 7750 Hz was fitted by an absurd stiffness with exit 0,
+// 1e30 Hz ended in Ceres' "consecutive invalid steps" (exit 1) and
+// k_bx = 1e300 in "fewer model modes than measured shapes".
+TEST(CliTest, ValuesNoRigidRingCanHaveAreRefusedBeforeAnySolve) {
+  const std::string dir = Scratch("");
+  const std::string out = dir + "absurd_report.json";
+  const nlohmann::json base = LoadJson(Source("datasets/template.json"));
+  ASSERT_EQ(base["modes"][0]["label"], "longitudinal");
+  ASSERT_EQ(base["modes"][3]["label"], "lateral");
+  const struct { const char* pointer; double value; const char* field; } cases[] = {
+      {"/modes/0/frequency_hz", 3554, "modes[0].frequency_hz: 3554 Hz is outside 1-1000 Hz"},
+      {"/modes/3/frequency_hz", 7750, "modes[3].frequency_hz: 7750 Hz is outside 1-1000 Hz"},
+      {"/modes/0/frequency_hz", 1e30, "modes[0].frequency_hz: 1e+30 Hz is outside"},
+      {"/initial/k_bx", 1e300, "initial.k_bx: is absurd: beyond 1e+12 in magnitude"},
+      {"/known/m_b", 2e12, "known.m_b: is absurd"}};
+  for (const auto& c : cases) {
+    nlohmann::json j = base;
+    j[nlohmann::json::json_pointer(c.pointer)] = c.value;
+    const std::string file = dir + "absurd.json";
+    std::ofstream(file) << j.dump(1);
+    for (const std::string command : {"identify", "diagnose", "predict"}) {
+      std::remove(out.c_str());
+      const RunResult r = Ringid(command + " --dataset=" + file + " --output=" + out);
+      EXPECT_EQ(r.status, 2) << c.field << " (" << command << "): " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find(file + ": " + c.field), std::string::npos) << r.err;
+      EXPECT_FALSE(Exists(out)) << c.field;
+    }
+  }
+  // The same of a parameter set and of --set, for predict and simulate.
+  const std::string set = dir + "absurd_set.json";
+  nlohmann::json p = LoadJson(Source("datasets/examples/car_tire.json"));
+  p["parameters"]["k_bx"] = 1e300;
+  std::ofstream(set) << p.dump(1);
+  for (const std::string args :
+       {"predict --parameters=" + set, "simulate --parameters=" + set + " --truth=" + out + ".t",
+        "predict --parameters=" + Source("datasets/examples/car_tire.json") + " --set=k_bx=1e13"}) {
+    std::remove(out.c_str());
+    const RunResult r = Ringid(args + " --output=" + out);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("k_bx"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("absurd"), std::string::npos) << r.err;
+    EXPECT_FALSE(Exists(out)) << args;
+  }
+}
+
 // `ringid simulate` of the example car tire with `flags`, into Scratch(name).
 std::string SimulateCarTire(const std::string& name, const std::string& flags) {
   const std::string out = Scratch(name);

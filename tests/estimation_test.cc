@@ -417,3 +417,139 @@ TEST(PriorTest, DataThatContradictAPriorAreNamedAsAConflict) {
 
 }  // namespace
 }  // namespace ringid
+
+#include <algorithm>
+#include <set>
+
+#include "estimation/problem.h"
+
+namespace ringid {
+namespace {
+
+Dataset Template() {
+  Dataset d;
+  LoadError e;
+  EXPECT_TRUE(LoadDataset(testing::SourcePath("datasets/template.json"), &d, &e)) << e.OneLine();
+  return d;
+}
+
+MeasuredMode& Measured(Dataset* d, ModeLabel label) {
+  for (MeasuredMode& m : d->modes) {
+    if (m.label == label) return m;
+  }
+  ADD_FAILURE() << "no measured " << LabelName(label);
+  return d->modes.front();
+}
+
+bool AnyContains(const std::vector<std::string>& lines, const std::string& words) {
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](const std::string& l) { return l.find(words) != std::string::npos; });
+}
+
+// The template with the measured camber mode given the yaw mode's shape and the
+// yaw mode none: the shape pairs measured camber with model yaw, and the label
+// alone would pair measured yaw with model yaw too.
+Dataset ShapeTakesAnotherLabelsMode() {
+  Dataset d = Template();
+  MeasuredMode& yaw = Measured(&d, ModeLabel::kYaw);
+  Measured(&d, ModeLabel::kCamber).shape = yaw.shape;
+  yaw.shape.clear();
+  yaw.shape_sigma.reset();
+  return d;
+}
+
+TEST(PairingTest, StaysOneToOneWhenAShapeTakesTheModeOfAnotherLabel) {
+  const Dataset d = ShapeTakesAnotherLabelsMode();
+  Status status;
+  const auto problem = Problem::Create(RigidRingModel(), d, ResidualOptions(), &status);
+  ASSERT_TRUE(problem) << status.message;
+  const Eigen::VectorXd x0 = problem->setup().StartCoordinates();
+  std::vector<ModalSolution> solutions;
+  std::vector<int> pairs;
+  std::string why;
+  ASSERT_TRUE(problem->residuals().Pair(x0.data(), &solutions, &pairs, &why)) << why;
+  EXPECT_EQ(std::set<int>(pairs.begin(), pairs.end()).size(), pairs.size());
+  const ModalSolution& s = solutions[0];
+  EXPECT_EQ(s.modes[pairs[1]].label, ModeLabel::kYaw);     // measured camber, by its shape
+  // Measured lateral's shape takes model camber; measured yaw gets the one left.
+  EXPECT_EQ(s.modes[pairs[3]].label, ModeLabel::kCamber);
+  EXPECT_EQ(s.modes[pairs[2]].label, ModeLabel::kLateral);
+  const std::vector<std::string> w = problem->residuals().PairingWarnings(x0.data(), true);
+  EXPECT_TRUE(AnyContains(w, "at the start, measured camber (45.77 Hz) is paired by its shape "
+                             "with model yaw"))
+      << ::testing::PrintToString(w);
+  EXPECT_TRUE(AnyContains(w, "measured yaw (53.58 Hz) is paired as the nearest model mode a shape "
+                             "left free with model lateral"))
+      << ::testing::PrintToString(w);
+}
+
+// The template's guesses of k_by and k_bgamma put model lateral near measured
+// camber and model camber near measured lateral; the shapes pair them across
+// the labels at the start, and the fit ends with every label matched.
+TEST(PairingTest, TheTemplateSaysItsSwappedStartAndNothingAtItsFit) {
+  IdentifySummary s;
+  Identify(RigidRingModel(), Template(), IdentifyOptions{}, &s);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_EQ(s.warnings.size(), 2u) << ::testing::PrintToString(s.warnings);
+  EXPECT_TRUE(AnyContains(s.warnings, "at the start, measured camber (45.77 Hz) is paired by its "
+                                      "shape with model lateral (45.39 Hz)"));
+  EXPECT_TRUE(AnyContains(s.warnings, "at the start, measured lateral (78.36 Hz) is paired by its "
+                                      "shape with model camber (75.45 Hz)"));
+  for (const ModeFit& m : s.modes) EXPECT_EQ(m.model_label, m.label);
+}
+
+// Issue 21: the initial model's lateral and camber modes are swapped against the
+// data; the label pairs them, the frequencies do not, and the headline says so.
+TEST(PairingTest, AStartWhoseModesAreSwappedAgainstTheDataIsSaid) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_standing_noshape.json"),
+                          &d, &e))
+      << e.OneLine();
+  Status status;
+  const auto problem = Problem::Create(RigidRingModel(), d, ResidualOptions(), &status);
+  ASSERT_TRUE(problem) << status.message;
+  const Eigen::VectorXd x0 = problem->setup().StartCoordinates();
+  const std::vector<std::string> w = problem->residuals().PairingWarnings(x0.data(), true);
+  EXPECT_TRUE(AnyContains(w, "at the start, measured camber (44.9 Hz) is paired by label with "
+                             "model camber"))
+      << ::testing::PrintToString(w);
+  EXPECT_TRUE(AnyContains(w, "nearest model modes: lateral")) << ::testing::PrintToString(w);
+}
+
+// Issue 21: Table 1 has 7 frequencies for 16 free parameters; it still runs.
+TEST(ObservablesTest, Table1SaysItHasFewerObservablesThanFreeParameters) {
+  IdentifySummary s;
+  Identify(RigidRingModel(), Table1(), IdentifyOptions{}, &s);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  EXPECT_TRUE(AnyContains(s.warnings, "7 measured mode(s) give 7 observable(s) (7 frequencies, 0 "
+                                      "damping ratios, 0 shape components beyond their scales) "
+                                      "for 16 free parameters: they cannot set them all"))
+      << ::testing::PrintToString(s.warnings);
+  EXPECT_NE(s.FullReport().find("  warning: 7 measured mode(s)"), std::string::npos);
+}
+
+// Issue 21: two modes "fit within the noise" with every parameter `no`; the
+// headline must say that two modes cannot set fourteen parameters.
+TEST(ObservablesTest, TwoModesSayTheyCannotSetFourteenParameters) {
+  Dataset d = Template();
+  d.modes.resize(2);
+  for (MeasuredMode& m : d.modes) {
+    m.shape.clear();
+    m.shape_sigma.reset();
+    m.damping_ratio.reset();
+    m.damping_sigma.reset();
+  }
+  IdentifySummary s;
+  Identify(RigidRingModel(), d, IdentifyOptions{}, &s);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_EQ(s.coordinate_names.size(), 14u);
+  EXPECT_TRUE(AnyContains(s.warnings, "2 measured mode(s) give 2 observable(s)"))
+      << ::testing::PrintToString(s.warnings);
+  EXPECT_TRUE(AnyContains(s.warnings, "for 14 free parameters: they cannot set them all"));
+  const std::string text = s.FullReport();
+  EXPECT_LT(text.find("warning: 2 measured mode(s)"), text.find(s.fit.verdict));
+}
+
+}  // namespace
+}  // namespace ringid

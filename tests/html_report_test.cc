@@ -438,6 +438,24 @@ TEST(HtmlReportTest, StandingDataHaveNoCampbellFigureNorConditionColumn) {
   EXPECT_EQ(m.html.find("<th>condition</th>"), std::string::npos);
 }
 
+// The report's warnings (issue 21) head the page: Table 1 has 7 frequencies for
+// 16 free parameters. Without warnings there is no section.
+TEST(HtmlReportTest, IdentifyHeadsThePageWithItsWarnings) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyPaper();
+  const json& warnings = m.report["warnings"];
+  ASSERT_FALSE(warnings.empty());
+  const size_t section = m.html.find("<h2>Warnings</h2>");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_LT(section, m.html.find("<h2>Summary</h2>"));
+  for (const json& w : warnings) {
+    EXPECT_NE(m.html.find(w.get<std::string>()), std::string::npos) << w;
+  }
+  EXPECT_NE(m.html.find("for 16 free parameters: they cannot set them all"), std::string::npos);
+  const Made none = Changed(m, "unwarned_identify", [](json* r) { (*r)["warnings"] = json::array(); });
+  EXPECT_EQ(none.html.find("<h2>Warnings</h2>"), std::string::npos);
+}
+
 // Table 1's fit breaks rules of docs/plausibility.md: each flag is listed
 // before the modes; a fit within every range says so.
 TEST(HtmlReportTest, IdentifyListsThePlausibilityFlags) {

@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -171,6 +172,20 @@ std::vector<MalformedDataset> MalformedDatasets() {
       j[ptr] = 1.0;
       add(std::string(f.field) + " = 1", j, f.field);
     }
+  }
+  // Values no rigid ring can have (docs/conventions.md §3): issue 21's typos
+  // (the template's 36.1 Hz typed as 3610, 77.5 as 7750), and absurd sizes.
+  const struct { const char* field; double value; } absurd[] = {
+      {"modes[0].frequency_hz", 3610},   {"modes[0].frequency_hz", 7750},
+      {"modes[0].frequency_hz", 1e30},   {"modes[0].frequency_hz", 0.5},
+      {"initial.k_bx", 1e300},           {"initial.k_bx", 2e12},
+      {"known.m_b", 1e13}};
+  for (const auto& a : absurd) {
+    json j = ValidDataset();
+    j[Pointer(a.field)] = a.value;
+    std::ostringstream what;
+    what << a.field << " = " << a.value << " (outside physics)";
+    add(what.str(), j, a.field);
   }
   // Unknown keys, names and ties.
   const struct { const char* what; const char* field; const char* at; } unknown[] = {

@@ -468,6 +468,10 @@ void CampbellFigure(const IdentifySummary& s, Page* page) {
 
 void IdentifyPage(const IdentifyReport& report, Page* page) {
   const IdentifySummary& summary = report.body.result;
+  if (!summary.warnings.empty()) {  // the headline, before everything else
+    page->Heading("Warnings");
+    for (const std::string& w : summary.warnings) page->Note(w);
+  }
   page->Summary(SummaryFacts(report.body.dataset, summary));
   if (summary.fit.poor) page->Note(summary.fit.verdict + ".");
   if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
