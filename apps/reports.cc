@@ -24,8 +24,11 @@ json ParameterSetJson(const IdentifySummary& s, const std::string& name,
   json params = json::object();
   for (const ParameterEstimate& e : s.estimates) {
     if (!e.key.condition.empty()) continue;  // a set holds one tire's shared values
-    params[ParamName(e.param())] = {
-        {"value", e.value}, {"std", e.std ? json(*e.std) : json(nullptr)}};
+    json& q = params[ParamName(e.param())];
+    q = {{"value", e.value}, {"std", e.std ? json(*e.std) : json(nullptr)}};
+    // What the data determined, which export marks in a .tir (LoadParameterSet).
+    if (e.free || e.tied_to) q["identifiable"] = ToString(e.identifiable);
+    if (const std::optional<std::string> given = e.Condition()) q["condition"] = *given;
   }
   r["parameters"] = params;
   return r;

@@ -890,15 +890,19 @@ int ExportCommand(int, char**) {
   if (!ParseSet(&set, &error)) return Usage(error);
   Parameters p;
   LoadError load;
-  if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
-  for (const auto& [q, v] : set) p[q] = v;
+  Undetermined undetermined;  // from an identify report's or --save_parameters' classes
+  if (!LoadParameters(FLAGS_parameters, &p, &load, &undetermined)) return Usage(load.OneLine());
+  for (const auto& [q, v] : set) {
+    p[q] = v;
+    undetermined.erase(q);  // given by hand
+  }
   const std::string source =
       FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();
   std::string text;
   if (FLAGS_format == "json") {
     text = ParameterSetToJson(p, name, "exported by ringid from " + source);
-  } else if (!ParametersToTir(p, name, source, &text, &load)) {
+  } else if (!ParametersToTir(p, name, source, &text, &load, undetermined)) {
     return Usage(load.OneLine());
   }
   if (FLAGS_output.empty()) {

@@ -565,7 +565,7 @@ bool ParseChecked(const std::string& text, LoadError* error,
 
 // A parameter set, or an identify report read back as one: only the
 // "parameters" object is read, each entry a number or {"value": number}.
-void CheckParameterSet(const json& j, Parameters* p) {
+void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
   if (j.contains("format") && (j["format"] == kFormat1 || j["format"] == kFormat2)) {
     Fail("format", "this is a modal dataset (" + j["format"].get<std::string>() +
@@ -588,6 +588,20 @@ void CheckParameterSet(const json& j, Parameters* p) {
     (*p)[param] = Number(v, f);
     const std::string problem = ParameterValueProblem(param, (*p)[param]);
     if (!problem.empty()) Fail(f, problem);
+    if (!it.value().is_object()) continue;
+    // What identify said of it (its report, or --save_parameters).
+    std::string why;
+    if (it.value().contains("identifiable")) {
+      const std::string c = String(it.value()["identifiable"], field + ".identifiable");
+      if (c != "yes" && c != "practically_no" && c != "no") {
+        Fail(field + ".identifiable", "must be yes, practically_no or no");
+      }
+      if (c != "yes") why = "classed " + c + " by ringid identify";
+    }
+    if (it.value().contains("condition") && !it.value()["condition"].is_null()) {
+      why += (why.empty() ? "" : "; ") + String(it.value()["condition"], field + ".condition");
+    }
+    if (undetermined && !why.empty()) (*undetermined)[param] = why;
   }
 }
 
@@ -602,12 +616,13 @@ bool ParseDataset(const std::string& text, const std::string& path,
 }
 
 bool LoadParameterSet(const std::string& path, Parameters* p,
-                      LoadError* error) {
+                      LoadError* error, Undetermined* undetermined) {
   std::string text;
   if (!ReadInputFile(path, &text, error)) return false;
   *p = Parameters{};
+  if (undetermined) undetermined->clear();
   return ParseChecked(text, error,
-                      [&](const json& j) { CheckParameterSet(j, p); });
+                      [&](const json& j) { CheckParameterSet(j, p, undetermined); });
 }
 
 bool ReadInputFile(const std::string& path, std::string* text,

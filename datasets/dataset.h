@@ -114,10 +114,20 @@ bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error);
 bool ParseDataset(const std::string& text, const std::string& path,
                   Dataset* dataset, LoadError* error);
 
+// The values of a parameter set that the data left undetermined, each with
+// why in words: classed no or practically_no, or a class that holds only
+// given a known value ("given sigma_cx = 0.1 m (known): the data measure
+// K_cx/sigma_cx"), as an identify report or --save_parameters says.
+using Undetermined = std::map<Param, std::string>;
+
 // Reads a parameter set: {"format": "ringid-parameters/1", "parameters":
-// {NAME: {"value": V, "std": S}}}. An identify report has the same
-// "parameters" object and reads back as one.
-bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error);
+// {NAME: {"value": V, "std": S, "identifiable": C, "condition": T}}}, the
+// last three optional. An identify report has the same "parameters" object
+// and reads back as one. With `undetermined`, the values whose class (C
+// "no" or "practically_no") or condition (T a string) says the data left
+// them undetermined.
+bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error,
+                      Undetermined* undetermined = nullptr);
 
 // Writes the set parameters of `p` as a parameter set (ringid-parameters/1,
 // each {"value": V}), which LoadParameterSet reads back; effect parameters at

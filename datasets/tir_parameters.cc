@@ -261,7 +261,7 @@ std::string SectionHeader(const std::string& section) {
 }  // namespace
 
 bool ParametersToTir(const Parameters& p, const std::string& name, const std::string& source,
-                     std::string* text, LoadError* error) {
+                     std::string* text, LoadError* error, const Undetermined& undetermined) {
   error->file = source;
   error->field.clear();
   std::vector<const TirField*> written;
@@ -351,6 +351,19 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
                        (p.IsSet(q) ? " = " + TirNumber(p[q]) + " " + Info(q).unit : " (unset)"));
   }
   CommentList("A .tir cannot hold (ringid parameters, SI):", not_held, &out);
+  // Values the data left undetermined, and the keys written from them: as
+  // uncertain, whatever their digits.
+  for (const auto& [q, why] : undetermined) {
+    if (!p.IsSet(q)) continue;
+    std::string keys;
+    for (const TirField* f : written) {
+      if (std::find(f->inputs.begin(), f->inputs.end(), q) == f->inputs.end()) continue;
+      keys += (keys.empty() ? " in " : ", ") + std::string(f->key);
+    }
+    out += "$ UNDETERMINED by the data: " + std::string(ParamName(q)) + " = " + TirNumber(p[q]) +
+           " " + Info(q).unit + (keys.empty() ? " (in no key)" : keys) + ": " + CommentText(why) +
+           "\n";
+  }
   for (int i = 0; i < kNumParams; ++i) {
     const Param q = ParamAt(i);
     if (Info(q).group == Group::kEffect && p.IsSet(q) && p[q] != 0) {
@@ -429,8 +442,10 @@ bool IsTirPath(const std::string& path) {
   return Upper(std::filesystem::path(path).extension().string()) == ".TIR";
 }
 
-bool LoadParameters(const std::string& path, Parameters* p, LoadError* error) {
-  if (!IsTirPath(path)) return LoadParameterSet(path, p, error);
+bool LoadParameters(const std::string& path, Parameters* p, LoadError* error,
+                    Undetermined* undetermined) {
+  if (!IsTirPath(path)) return LoadParameterSet(path, p, error, undetermined);
+  if (undetermined) undetermined->clear();
   TirFile file;
   if (!LoadTir(path, &file, error) || !TirToParameters(file, p, error)) return false;
   for (int i = 0; i < kNumParams; ++i) {  // what the keys give, against physics

@@ -63,8 +63,11 @@ std::string TirKeyFor(Param p);
 // `p` breaks an assumption of the format. A key whose parameters are not all
 // set is left out and named in the header; a required key cannot be: false
 // then, with `error` naming the parameter (file `source`).
+// `undetermined` values are marked in the header, with the keys written
+// from them.
 bool ParametersToTir(const Parameters& p, const std::string& name, const std::string& source,
-                     std::string* text, LoadError* error);
+                     std::string* text, LoadError* error,
+                     const Undetermined& undetermined = {});
 
 // The parameters the rigid-ring part of `file` determines (TirFields' `sets`);
 // every other parameter is left unset. Sections and keys it does not use are
@@ -77,7 +80,9 @@ bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error);
 bool IsTirPath(const std::string& path);
 // A parameter set from `path`: a .tir (IsTirPath) through TirToParameters,
 // anything else as ringid-parameters/1 JSON (LoadParameterSet).
-bool LoadParameters(const std::string& path, Parameters* p, LoadError* error);
+// With `undetermined`, as LoadParameterSet; a .tir says nothing of it.
+bool LoadParameters(const std::string& path, Parameters* p, LoadError* error,
+                    Undetermined* undetermined = nullptr);
 
 // docs/tir.md's generated part: the mapping table, the keys not written and
 // the parameters not held, as Markdown.

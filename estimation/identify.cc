@@ -52,6 +52,13 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
   e.identifiable = u.classes[i];
   e.reason = u.reasons[i];
   if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
+  if (e.identifiable != Identifiability::kNo) {
+    for (const internal::KnownDependence& d : u.known_dependence) {
+      if (d.coordinate == i) {
+        e.conditional_on.push_back({d.known, d.known_value, d.measured, d.structural});
+      }
+    }
+  }
   const double sd = u.std[i];
   if (std::isfinite(sd)) e.std = setup.PhysicalStd(i, x[i], sd);
   for (const auto& prior : residuals.priors()) {
@@ -60,6 +67,89 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
     e.prior_z = prior.Residual(setup, x[i]);
   }
   return e;
+}
+
+// Free parameters the data, not the model, tell from a known one only
+// because it is fixed. Freed, known q's weighted-residual column j (central
+// differences in its coordinate) is partly absorbed by the free coordinates,
+// b = C J^T j (C the covariance, J the Jacobian of `u`), and s = |j - J b|^2
+// is all the data say of q; coordinate i's variance becomes C_ii + b_i^2 / s
+// (the Schur complement). A coordinate classed yes that this leaves wider
+// than practical_relative_std rests on q where it also moves materially
+// with q (kKnownDependenceShare). Two residual evaluations per known
+// parameter of the dataset.
+// A parameter rests on a known one in the data only where an error in the
+// known value moves it by at least this share and at most its inverse
+// (relative to relative): below, freeing it costs too little to name; above,
+// the first-order compensation means nothing.
+constexpr double kKnownDependenceShare = 0.25;
+
+void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
+                            const IdentifyOptions& o, const ParameterSetup& setup,
+                            const Eigen::VectorXd& x, Uncertainty* u) {
+  if (!u->ok || !u->covariance_ok || setup.size() == 0) return;
+  std::vector<Param> known;
+  for (Param q : model.parameters()) {
+    if (dataset.known.count(q) && !setup.ties().count(q)) known.push_back(q);
+  }
+  if (known.empty()) return;
+  Dataset freed = dataset;
+  for (Param q : known) {
+    freed.initial[q] = freed.known.at(q);
+    freed.known.erase(q);
+  }
+  Status status;
+  const auto problem = Problem::Create(model, freed, o.residuals, &status);
+  if (!problem) return;
+  const ParameterSetup& fs = problem->setup();
+  const ModalResiduals& r = problem->residuals();
+  const Eigen::MatrixXd& J = u->jacobian;
+  if (r.num_residuals() != J.rows()) return;
+  Eigen::VectorXd xf = fs.StartCoordinates();
+  for (int i = 0; i < fs.size(); ++i) {
+    const int at = setup.CoordinateOf(fs.free()[i], std::max(fs.condition_of(i), 0));
+    if (at >= 0) xf[i] = x[at];
+  }
+  const Parameters p = setup.Decode(x.data(), 0);
+  const double h = 1e-5;  // coordinate step: log for positive parameters
+  Eigen::VectorXd plus(J.rows()), minus(J.rows());
+  for (Param q : known) {
+    const int k = fs.CoordinateOf(q, 0);
+    if (k < 0 || fs.condition_of(k) >= 0) continue;
+    // Freed, q is structurally free with those (FindKnownDependence): the
+    // exact claim, and j lies in J's range but for rounding, where b / s
+    // would be noise.
+    const bool structural = std::any_of(u->known_dependence.begin(), u->known_dependence.end(),
+                                        [&](const internal::KnownDependence& d) { return d.known == q; });
+    if (structural) continue;
+    Eigen::VectorXd xp = xf, xm = xf;
+    xp[k] += h;
+    xm[k] -= h;
+    if (!r.Evaluate(xp.data(), plus.data()) || !r.Evaluate(xm.data(), minus.data())) continue;
+    const Eigen::VectorXd j = (plus - minus) / (2 * h);
+    if (!j.allFinite() || j.squaredNorm() == 0) continue;
+    const Eigen::VectorXd b = u->covariance * (J.transpose() * j);
+    const double s = (j - J * b).squaredNorm();
+    for (int i = 0; i < setup.size(); ++i) {
+      if (u->classes[i] != Identifiability::kYes) continue;
+      // Relative to the value: coordinate i's sd with q freed, and how far
+      // it moves per relative change of q.
+      const double to_relative = setup.is_log(i) ? 1 : 1 / std::max(std::abs(x[i]), 1e-300);
+      const double per_q = Info(q).domain == Domain::kPositive ? 1 : TypicalScale(q) / std::abs(p[q]);
+      const double var = u->covariance(i, i) + (s > 0 ? b[i] * b[i] / s : INFINITY);
+      if (!(std::sqrt(var) * to_relative > o.uncertainty.practical_relative_std)) continue;
+      const double share = std::abs(b[i]) * to_relative / per_q;
+      if (!(share >= kKnownDependenceShare && share <= 1 / kKnownDependenceShare)) continue;
+      internal::KnownDependence d;
+      d.coordinate = i;
+      d.known = q;
+      d.known_value = p[q];
+      // Along the direction the data do not see, i moves by -b_i as q by 1.
+      d.measured = internal::MeasuredCombination(setup, p, i, q, -b[i], 1, 0.05);
+      d.structural = false;
+      u->known_dependence.push_back(d);
+    }
+  }
 }
 
 std::vector<SpeedCurve> SpeedCurves(const ModalModel& model, const Dataset& dataset,
@@ -173,6 +263,20 @@ FitQuality AssessFit(double cost, int residuals, int rank, int shape_scales) {
                 f.chi_square, f.degrees_of_freedom, *f.p_value);
   f.verdict = words;
   return f;
+}
+
+std::optional<std::string> ParameterEstimate::Condition() const {
+  if (conditional_on.empty()) return std::nullopt;
+  std::string text;
+  char value[48];
+  for (const KnownCondition& c : conditional_on) {
+    std::snprintf(value, sizeof value, "%.4g", c.value);
+    const std::string unit = Info(c.known).unit;
+    text += (text.empty() ? "given " : "; given ") + std::string(ParamName(c.known)) + " = " +
+            value + (unit.empty() || unit == "-" ? "" : " " + unit) +
+            " (known): the data measure " + (c.structural ? "" : "mainly ") + c.measured;
+  }
+  return text;
 }
 
 bool ParameterEstimate::PriorConflict() const {
@@ -328,6 +432,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->parameters = setup.Decode(best.x.data());
   s->x = best.x;
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
+  AddPracticalDependence(model, dataset, o, setup, best.x, &s->uncertainty);
   std::set<int> shapes;
   for (const ModalResiduals::Slot& slot : residuals.slots()) {
     if (slot.kind == ModalResiduals::Slot::kShape) shapes.insert(slot.mode);
@@ -458,13 +563,22 @@ std::string IdentifySummary::FullReport() const {
       std::snprintf(line, sizeof line, "%.3e", *e.std);
       sd = line;
     }
+    const std::string cls = std::string(e.free || e.tied_to ? ToString(e.identifiable) : "(fixed)") +
+                            (e.conditional_on.empty() ? "" : " *");
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-11s  %-15s %s\n",
-                  e.key.Text().c_str(), e.value, sd.c_str(),
-                  e.free || e.tied_to ? ToString(e.identifiable)
-                                      : "(fixed)",
+                  e.key.Text().c_str(), e.value, sd.c_str(), cls.c_str(),
                   e.tied_to ? (std::string("= ") + ParamName(*e.tied_to)).c_str()
                             : "");
     o << line;
+  }
+  // The marker's meaning, one line per parameter whose class rests on a known one.
+  bool marked = false;
+  for (const ParameterEstimate& e : estimates) {
+    if (const std::optional<std::string> given = e.Condition()) {
+      if (!marked) o << "  * the class holds only at the known value (a wrong one moves the estimate):\n";
+      marked = true;
+      o << "    " << e.key.Text() << ": " << *given << "\n";
+    }
   }
   // Which parameters the data decide and which their priors decide.
   std::string by_prior, by_both, by_data;

@@ -48,6 +48,27 @@ struct IdentifyOptions {
 // prior standard deviations from the prior's center (beyond its 99.7 % range).
 inline constexpr double kPriorConflictZ = 3.0;
 
+// A known (fixed) parameter that a free one's class rests on: freed, it
+// would take that class with it, as a standing test measures only
+// K_cx/sigma_cx (estimation/structure.h, FindKnownDependence), or would
+// leave it practically_no (AddPracticalDependence, estimation/identify.cc).
+struct KnownCondition {
+  Param known = Param::m_b;
+  double value = 0;      // the known value it was held at (first condition)
+  std::string measured;  // what the data measure of the two: "K_cx/sigma_cx"
+  // True: the model cannot tell them apart; false: the data hardly can
+  // (freed, it would make this one practically_no).
+  bool structural = true;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("known", &known);
+    a->Visit("value", &value);
+    a->Visit("measured", &measured);
+    a->Visit("structural", &structural);
+  }
+};
+
 struct ParameterEstimate {
   ParameterKey key;  // the parameter, and its condition when per-condition
   double value = 0;
@@ -65,8 +86,14 @@ struct ParameterEstimate {
   // The fit stopped on this side of the parameter's box: not an interior
   // optimum, so its std and class describe the box, not the data.
   std::optional<BoundSide> on_bound;
+  // The known parameters its class rests on (a free parameter classed yes or
+  // practically_no); empty when none does.
+  std::vector<KnownCondition> conditional_on;
 
   Param param() const { return key.param; }
+  // "given sigma_cx = 0.1 m (known): the data measure K_cx/sigma_cx", one
+  // clause per known parameter; none when conditional_on is empty.
+  std::optional<std::string> Condition() const;
   // "the data", "the prior" or "data and prior", from prior_share.
   const char* DecidedBy() const;
   // The data pull the estimate further from its prior than the prior allows
@@ -85,6 +112,8 @@ struct ParameterEstimate {
     a->VisitIfSet("prior_share", &prior_share);
     a->VisitIfSet("prior_z", &prior_z);
     a->VisitIfSet("on_bound", &on_bound);
+    a->Visit("conditional_on", &conditional_on);
+    a->Derived("condition", Condition());
   }
 };
 

@@ -70,7 +70,122 @@ std::string Relation(const ParameterSetup& setup, const Parameters& p, const Eig
   return "the model does not change along " + list;
 }
 
+// The rows of the structural test: each condition's entries and lag poles,
+// then the priors, by columns: the free coordinates, then `extra` parameters
+// as if free (log for positive ones, the parameters tied to one following
+// it), then one common factor per condition. Not normalised; false where a
+// derivative is not finite (an extreme point decides nothing).
+bool StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
+                    const std::vector<Param>& extra, Eigen::MatrixXd* g) {
+  const ParameterSetup& setup = residuals.setup();
+  const Dataset& dataset = residuals.dataset();
+  const int n = setup.size(), k = static_cast<int>(extra.size());
+  const int conditions = setup.num_conditions(), cols = n + k + conditions;
+  std::vector<Eigen::RowVectorXd> rows;
+  for (int c = 0; c < conditions; ++c) {
+    const Parameters p = setup.Decode(x.data(), c);
+    const SystemDerivatives d = Differentiate(residuals.model(), p, dataset.conditions[c].speed_m_s);
+    Eigen::MatrixXd to_columns = Eigen::MatrixXd::Zero(kNumParams, n + k);
+    for (int i = 0; i < n; ++i) {
+      if (setup.condition_of(i) < 0 || setup.condition_of(i) == c) {
+        to_columns.col(i) = CoordinateColumn(setup, p, i);
+      }
+    }
+    for (int j = 0; j < k; ++j) {
+      const Param q = extra[j];
+      const double scale = Info(q).domain == Domain::kPositive ? p[q] : TypicalScale(q);
+      to_columns(static_cast<int>(q), n + j) = scale;
+      for (const auto& [from, to] : setup.ties()) {
+        if (to == q) to_columns(static_cast<int>(from), n + j) = scale;
+      }
+    }
+    const Eigen::MatrixXd scaling = d.scaling * to_columns, invariant = d.invariant * to_columns;
+    for (int r = 0; r < scaling.rows(); ++r) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(cols);
+      row.head(n + k) = scaling.row(r);
+      row[n + k + c] = d.scaling_value[r];
+      rows.push_back(row);
+    }
+    for (int r = 0; r < invariant.rows(); ++r) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(cols);
+      row.head(n + k) = invariant.row(r);
+      rows.push_back(row);
+    }
+  }
+  // A prior decides the direction it has a component in.
+  for (const auto& prior : residuals.priors()) {
+    Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(cols);
+    row[prior.coordinate] = 1;
+    rows.push_back(row);
+  }
+  g->resize(rows.size(), cols);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    if (!rows[r].allFinite()) return false;
+    g->row(r) = rows[r];
+  }
+  return true;
+}
+
+// The null space of g's columns `keep` (in that order), on rows normalised:
+// free directions have singular values at rounding level, below
+// kStructuralRank of the largest, and every other one is far above.
+Eigen::MatrixXd NullSpace(const Eigen::MatrixXd& g, const std::vector<int>& keep) {
+  Eigen::MatrixXd a(g.rows(), keep.size());
+  int kept = 0;
+  for (int r = 0; r < g.rows(); ++r) {
+    Eigen::RowVectorXd row(keep.size());
+    for (size_t j = 0; j < keep.size(); ++j) row[j] = g(r, keep[j]);
+    const double norm = row.norm();
+    if (norm > 0) a.row(kept++) = row / norm;
+  }
+  a.conservativeResize(kept, Eigen::NoChange);
+  const int cols = static_cast<int>(keep.size());
+  if (kept == 0) return Eigen::MatrixXd::Identity(cols, cols);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  const double smax = sv.size() ? sv[0] : 0;
+  int rank = 0;
+  for (int j = 0; j < sv.size(); ++j) rank += sv[j] > kStructuralRank * smax;
+  return svd.matrixV().rightCols(cols - rank);
+}
+
+// Columns 0..n-1, then `also`, then the common factors of g (last `conditions`).
+std::vector<int> Columns(int n, const std::vector<int>& also, int conditions, int total) {
+  std::vector<int> keep;
+  for (int i = 0; i < n; ++i) keep.push_back(i);
+  keep.insert(keep.end(), also.begin(), also.end());
+  for (int c = 0; c < conditions; ++c) keep.push_back(total - conditions + c);
+  return keep;
+}
+
 }  // namespace
+
+std::string MeasuredCombination(const ParameterSetup& setup, const Parameters& p, int i, Param q,
+                                double vi, double vq, double tolerance) {
+  const std::string ni = setup.name(i), nq = ParamName(q);
+  auto close = [&](double a, double b) { return std::abs(a - b) <= tolerance * std::max(std::abs(a), std::abs(b)); };
+  const bool log_q = Info(q).domain == Domain::kPositive;
+  if (setup.is_log(i) && log_q) {
+    if (close(vi, vq)) return ni + "/" + nq;
+    if (close(vi, -vq)) return ni + "*" + nq;
+  }
+  // Changes of the values themselves: d i / d q along the direction.
+  const Param qi = setup.key(i).param;
+  const double di = vi * (setup.is_log(i) ? p[qi] : TypicalScale(qi));
+  const double dq = vq * (log_q ? p[q] : TypicalScale(q));
+  if (close(di, -dq)) return ni + " + " + nq;
+  if (close(di, dq)) return ni + " - " + nq;
+  char text[160];
+  if (setup.is_log(i) && log_q) {  // i / q^r stays, r = vi / vq
+    const double r = vi / vq;
+    std::snprintf(text, sizeof text, "%s%s%s^%.2g", ni.c_str(), r > 0 ? "/" : "*", nq.c_str(),
+                  std::abs(r));
+    return text;
+  }
+  std::snprintf(text, sizeof text, "%s %s %.4g %s (to first order)", ni.c_str(),
+                di / dq < 0 ? "+" : "-", std::abs(di / dq), nq.c_str());
+  return text;
+}
 
 std::string StructuralFreedom::InvarianceOf(int i) const {
   std::string out;
@@ -82,57 +197,13 @@ std::string StructuralFreedom::InvarianceOf(int i) const {
 
 StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
   const ParameterSetup& setup = residuals.setup();
-  const Dataset& dataset = residuals.dataset();
   const int n = setup.size(), conditions = setup.num_conditions();
   StructuralFreedom out;
   out.directions.resize(n, 0);
   if (n == 0) return out;
-  // Rows: each condition's entries; columns: coordinates, then one common
-  // factor per condition.
-  std::vector<Eigen::RowVectorXd> rows;
-  for (int c = 0; c < conditions; ++c) {
-    const Parameters p = setup.Decode(x.data(), c);
-    const SystemDerivatives d = Differentiate(residuals.model(), p, dataset.conditions[c].speed_m_s);
-    Eigen::MatrixXd to_coordinates = Eigen::MatrixXd::Zero(kNumParams, n);
-    for (int i = 0; i < n; ++i) {
-      if (setup.condition_of(i) < 0 || setup.condition_of(i) == c) {
-        to_coordinates.col(i) = CoordinateColumn(setup, p, i);
-      }
-    }
-    const Eigen::MatrixXd scaling = d.scaling * to_coordinates, invariant = d.invariant * to_coordinates;
-    for (int r = 0; r < scaling.rows(); ++r) {
-      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n + conditions);
-      row.head(n) = scaling.row(r);
-      row[n + c] = d.scaling_value[r];
-      rows.push_back(row);
-    }
-    for (int r = 0; r < invariant.rows(); ++r) {
-      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n + conditions);
-      row.head(n) = invariant.row(r);
-      rows.push_back(row);
-    }
-  }
-  // A prior decides the direction it has a component in.
-  for (const auto& prior : residuals.priors()) {
-    Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n + conditions);
-    row[prior.coordinate] = 1;
-    rows.push_back(row);
-  }
-  Eigen::MatrixXd g(rows.size(), n + conditions);
-  int kept = 0;
-  for (const Eigen::RowVectorXd& row : rows) {
-    // Derivatives that overflow at an extreme point decide nothing: no claim.
-    if (!row.allFinite()) return out;
-    const double norm = row.norm();
-    if (norm > 0) g.row(kept++) = row / norm;
-  }
-  g.conservativeResize(kept, Eigen::NoChange);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(g, Eigen::ComputeFullV);
-  const Eigen::VectorXd& sv = svd.singularValues();
-  const double smax = sv.size() ? sv[0] : 0;
-  int rank = 0;
-  for (int k = 0; k < sv.size(); ++k) rank += sv[k] > kStructuralRank * smax;
-  const Eigen::MatrixXd null = svd.matrixV().rightCols(n + conditions - rank);
+  Eigen::MatrixXd g;
+  if (!StructuralRows(residuals, x, {}, &g)) return out;
+  const Eigen::MatrixXd null = NullSpace(g, Columns(n, {}, conditions, n + conditions));
   out.directions = Orthonormal(null.topRows(n), 1e-8);
   if (out.directions.cols() == 0) return out;
   // A readable basis: reduced row echelon form of the directions, pivoting on
@@ -155,6 +226,41 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
     }
     out.readable.push_back(v);
     out.invariances.push_back(Relation(setup, p, v));
+  }
+  return out;
+}
+
+std::vector<KnownDependence> FindKnownDependence(const ModalResiduals& residuals,
+                                                 const Eigen::VectorXd& x) {
+  const ParameterSetup& setup = residuals.setup();
+  const int n = setup.size(), conditions = setup.num_conditions();
+  std::vector<KnownDependence> out;
+  if (n == 0) return out;
+  std::vector<Param> known;
+  for (Param q : residuals.model().parameters()) {
+    bool fixed = !setup.ties().count(q);
+    for (int c = 0; c < conditions; ++c) fixed = fixed && setup.CoordinateOf(q, c) < 0;
+    if (fixed) known.push_back(q);
+  }
+  const int k = static_cast<int>(known.size()), total = n + k + conditions;
+  Eigen::MatrixXd g;
+  if (k == 0 || !StructuralRows(residuals, x, known, &g)) return out;
+  const Parameters p = setup.Decode(x.data(), 0);
+  for (int j = 0; j < k; ++j) {
+    // Freed, q's unit vector projected on the null space: the free direction
+    // that moves q most, orthogonal to every one that leaves q alone.
+    const Eigen::MatrixXd null = NullSpace(g, Columns(n, {n + j}, conditions, total));
+    const Eigen::VectorXd v = null * null.row(n).transpose();
+    if (!(v[n] > 1e-6)) continue;  // |component|^2: freeing q adds no direction
+    for (int i = 0; i < n; ++i) {
+      if (std::abs(v[i]) <= 1e-6 * v[n]) continue;
+      KnownDependence d;
+      d.coordinate = i;
+      d.known = known[j];
+      d.known_value = p[known[j]];
+      d.measured = MeasuredCombination(setup, p, i, known[j], v[i], v[n], 1e-6);
+      out.push_back(d);
+    }
   }
   return out;
 }

@@ -74,6 +74,7 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
   u.structural_directions = S;
   u.structural_readable = freedom.readable;
   u.structural_invariances = freedom.invariances;
+  u.known_dependence = FindKnownDependence(residuals, x);
   u.jacobian = S.cols() ? Eigen::MatrixXd(J - (J * S) * S.transpose()) : J;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(u.jacobian, Eigen::ComputeFullV);
   u.singular_values = svd.singularValues();

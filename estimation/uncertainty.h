@@ -9,6 +9,7 @@
 
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
+#include "estimation/structure.h"
 
 namespace ringid {
 
@@ -53,6 +54,9 @@ struct Uncertainty {
   Eigen::MatrixXd structural_directions;   // orthonormal columns
   std::vector<Eigen::VectorXd> structural_readable;  // the same span, one invariance each
   std::vector<std::string> structural_invariances;
+  // Free coordinates the model separates from a known parameter only
+  // because that one is fixed (FindKnownDependence).
+  std::vector<internal::KnownDependence> known_dependence;
 
   // The report's part; classes and std go with each parameter.
   template <class Archive>

@@ -544,6 +544,44 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
   }
 }
 
+// The template holds sigma_cx known, so identify classes K_cx yes only given
+// it; its report and its --save_parameters say so, and a .tir exported from
+// either marks K_cx as undetermined in its header, the value of a key it
+// does not enter unmarked.
+TEST(CliTest, ExportFromIdentifyMarksTheValuesTheDataLeftUndetermined) {
+  const std::string report = Scratch("template_identify.json");
+  const std::string set = Scratch("template_set.json");
+  std::remove(report.c_str());
+  std::remove(set.c_str());
+  RunResult r = Ringid("identify --dataset=" + Source("datasets/template.json") +
+                       " --starts=1 --derivatives=analytic --output=" + report +
+                       " --save_parameters=" + set);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("K_cx: given sigma_cx = 0.1 m (known): the data measure K_cx/sigma_cx"),
+            std::string::npos) << r.out;
+  const nlohmann::json j = LoadJson(report);
+  EXPECT_EQ(j["parameters"]["K_cx"]["condition"],
+            "given sigma_cx = 0.1 m (known): the data measure K_cx/sigma_cx");
+  EXPECT_EQ(j["parameters"]["K_cx"]["conditional_on"][0]["known"], "sigma_cx");
+  EXPECT_TRUE(j["parameters"]["k_bx"]["condition"].is_null());
+  EXPECT_EQ(LoadJson(set)["parameters"]["K_cx"]["identifiable"], "yes");
+  for (const std::string& from : {report, set}) {
+    const std::string tir = Scratch("template_export.tir");
+    std::remove(tir.c_str());
+    r = Ringid("export --parameters=" + from + " --format=tir --output=" + tir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string text = ringid::testing::ReadFile(tir);
+    EXPECT_NE(text.find("$ UNDETERMINED by the data: K_cx = "), std::string::npos) << text;
+    EXPECT_NE(text.find("in LONGITUDINAL_STIFFNESS: given sigma_cx = 0.1 m (known)"),
+              std::string::npos) << text;
+    EXPECT_EQ(text.find("UNDETERMINED by the data: k_bx"), std::string::npos) << text;
+    // Given by hand, a value is no longer the data's.
+    r = Ringid("export --parameters=" + from + " --set=K_cx=9e4 --format=tir");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.find("UNDETERMINED by the data: K_cx"), std::string::npos) << r.out;
+  }
+}
+
 // export --format=json of a .tir: a parameter set a dataset's initial values
 // can be copied from, holding what the .tir determines and nothing else.
 TEST(CliTest, ExportOfATirAsJsonWritesTheParameterSetItDetermines) {

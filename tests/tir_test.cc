@@ -57,6 +57,12 @@ Parameters Import(const std::string& text) {
 
 double Relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
+int Count(const std::string& text, const std::string& word) {
+  int n = 0;
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
 // ---- the syntax -----------------------------------------------------------
 
 TEST(TirParserTest, ReadsSectionsKeysNumbersStringsCommentsAndTablesAsToolsWriteThem) {
@@ -499,6 +505,32 @@ TEST(TirMappingTest, ExportRefusesASetWithoutWhatARequiredKeyNeedsAndLeavesOutTh
   EXPECT_EQ(f.Find("VERTICAL", "VERTICAL_STIFFNESS"), nullptr);
   EXPECT_NE(text.find("DAMP_LAT (c_by)"), std::string::npos);
   EXPECT_NE(text.find("VERTICAL_STIFFNESS (k_cz)"), std::string::npos);
+}
+
+// A value the data left undetermined is marked in the header, with the keys
+// written from it; the others are not, and the keys' values are unchanged.
+TEST(TirMappingTest, ExportMarksTheValuesTheDataLeftUndeterminedInItsHeader) {
+  const Parameters p = ExampleCarTire();
+  std::string text;
+  LoadError e;
+  const Undetermined undetermined = {
+      {P::K_cx, "given sigma_cx = 0.1 m (known): the data measure K_cx/sigma_cx"},
+      {P::c_bgamma, "classed no by ringid identify"}};
+  ASSERT_TRUE(ParametersToTir(p, "tire", "tire.json", &text, &e, undetermined)) << e.OneLine();
+  EXPECT_NE(text.find("$ UNDETERMINED by the data: K_cx = " + TirNumber(p[P::K_cx]) +
+                      " N in LONGITUDINAL_STIFFNESS: given sigma_cx = 0.1 m (known): the "
+                      "data measure K_cx/sigma_cx\n"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("$ UNDETERMINED by the data: c_bgamma = " + TirNumber(p[P::c_bgamma])),
+            std::string::npos) << text;
+  EXPECT_EQ(text.find("UNDETERMINED by the data: k_bx"), std::string::npos);
+  EXPECT_EQ(Count(text, "UNDETERMINED"), 2);
+  // Only comments differ from the unmarked file.
+  const TirFile marked = Parse(text), plain = Parse(Export(p));
+  ASSERT_EQ(marked.entries.size(), plain.entries.size());
+  for (size_t i = 0; i < plain.entries.size(); ++i) {
+    EXPECT_EQ(marked.entries[i].number, plain.entries[i].number) << plain.entries[i].key;
+  }
 }
 
 // docs/tir.md's tables are TirMappingMarkdown(), between its markers.

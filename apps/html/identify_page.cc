@@ -147,6 +147,7 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
              NumberCell(q.std),
              FactorCell(factor),
              NameCell(q.identifiable),
+             TextCell(q.Condition().value_or("–")),
              TextCell(q.reason)};
   if (priors) {
     row.push_back(PercentCell(q.prior_share));
@@ -195,7 +196,8 @@ Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
   std::vector<Row> rows;
   for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, priors, &intervals));
   std::vector<std::string> head = {"parameter", "value", "unit", "role", "std",
-                                   "95 % interval (factor)", "identifiable", "reason"};
+                                   "95 % interval (factor)", "identifiable",
+                                   "holds given (known)", "reason"};
   if (priors) {
     head.insert(head.end(), {"posterior / prior variance (%)", "decided by",
                              "distance from the prior (prior sigma)"});
@@ -204,6 +206,11 @@ Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
   if (priors) page->Note(PriorSentence(estimates));
   if (!conflicts.empty()) page->Note(conflicts);
   if (const std::string bounds = summary.OnBounds(); !bounds.empty()) page->Note("Parameters " + bounds);
+  if (std::any_of(estimates.begin(), estimates.end(),
+                  [](const ParameterEstimate& q) { return !q.conditional_on.empty(); })) {
+    page->Note("A class with “holds given (known)” rests on a known value: the data measure the "
+               "combination named, so a wrong known value moves the estimate with it.");
+  }
   page->Table(head, rows);
   return intervals;
 }
