@@ -90,12 +90,25 @@ constexpr int kMaxBisections = 40;
 // and a refit over the threshold restarted from where it stopped.
 constexpr int kStepHalvings = 4;
 constexpr int kRestarts = 3;
+// A jump is retried by a walk of kWalkSteps refits, each warm-started from
+// the one before, from the last profile point under the threshold to the
+// jump; at most kJumpRetries times a side.
+constexpr int kWalkSteps = 8;
+constexpr int kJumpRetries = 3;
 
 // One point of a profile: coordinate i held at t, the others refitted.
 struct ProfilePoint {
   double t = 0;
   double delta = 0;  // 2 (cost - cost_min), at least 0
   Eigen::VectorXd x;
+};
+
+// How a bracket [under the threshold, over it] ended: at a crossing (t the
+// bound), at a jump (t the first point over it, 1e-6 past the last under
+// it), or failed (t where no refit was possible).
+struct BracketEnd {
+  enum Kind { kCrossing, kJump, kFailed } kind = kCrossing;
+  double t = 0;
 };
 
 // The profile of one coordinate: refits with it held, from given starts.
@@ -140,14 +153,13 @@ class Profiler {
   // it) by bisection on the coordinate, each midpoint refitted from the
   // nearer end first; the first trial is where the signed root of 2 delta
   // cost, linear in t for a quadratic profile, interpolates to the
-  // threshold. Returns the bound, a refitted point (across a jump the first
-  // over the threshold), or none with *failed_at where no refit was possible.
-  std::optional<double> Bisect(ProfilePoint below, ProfilePoint above, double* failed_at,
-                               std::vector<std::pair<double, double>>* curve,
-                               const ParameterSetup& setup) const {
+  // threshold.
+  BracketEnd Bisect(ProfilePoint below, ProfilePoint above,
+                    std::vector<std::pair<double, double>>* curve,
+                    const ParameterSetup& setup) const {
     for (int b = 0; b < kMaxBisections; ++b) {
-      if (std::abs(above.delta - kChiSquare1Dof95) < kCrossingTolerance) return above.t;
-      if (std::abs(below.delta - kChiSquare1Dof95) < kCrossingTolerance) return below.t;
+      if (std::abs(above.delta - kChiSquare1Dof95) < kCrossingTolerance) return {BracketEnd::kCrossing, above.t};
+      if (std::abs(below.delta - kChiSquare1Dof95) < kCrossingTolerance) return {BracketEnd::kCrossing, below.t};
       if (std::abs(above.t - below.t) < kSmallestBracket) break;
       double fraction = 0.5;
       if (b == 0) {  // kept within the middle 80 % of the bracket
@@ -158,14 +170,27 @@ class Profiler {
       const bool nearer_below = fraction <= 0.5;
       const std::optional<ProfilePoint> mid =
           nearer_below ? RefitAt(t, {&below.x, &above.x}) : RefitAt(t, {&above.x, &below.x});
-      if (!mid) {
-        *failed_at = t;
-        return std::nullopt;
-      }
+      if (!mid) return {BracketEnd::kFailed, t};
       curve->emplace_back(Physical(setup, i_, t), mid->delta);
       (mid->delta < kChiSquare1Dof95 ? below : above) = *mid;
     }
-    return above.t;  // a jump: the first point over the threshold
+    return {BracketEnd::kJump, above.t};
+  }
+
+  // Refits at kWalkSteps even steps from `from` to t, each warm-started from
+  // the one before, up to the first over the threshold or that failed.
+  std::vector<ProfilePoint> Walk(const ProfilePoint& from, double t) const {
+    std::vector<ProfilePoint> walk;
+    const ProfilePoint* previous = &from;
+    for (int k = 1; k <= kWalkSteps; ++k) {
+      std::optional<ProfilePoint> next =
+          RefitAt(from.t + (t - from.t) * k / kWalkSteps, {&previous->x});
+      if (!next) break;
+      walk.push_back(std::move(*next));
+      previous = &walk.back();
+      if (previous->delta >= kChiSquare1Dof95) break;
+    }
+    return walk;
   }
 
  private:
@@ -183,11 +208,16 @@ class Profiler {
   const IdentifiabilityOptions& o_;
 };
 
-ProfileInterval Profile(const ModalResiduals& residuals,
-                        const ParameterSetup& setup, const Eigen::VectorXd& xhat,
-                        double cost_min, const Box& box, int i, double wald_std,
-                        const IdentifiabilityOptions& o) {
-  const Profiler profiler(residuals, xhat, cost_min, box, i, o);
+}  // namespace
+
+namespace internal {
+
+ProfileInterval ProfileCoordinate(const Problem& problem, const Eigen::VectorXd& xhat,
+                                  double cost_min, int i, double wald_std,
+                                  const IdentifiabilityOptions& o) {
+  const ParameterSetup& setup = problem.setup();
+  const Box box = BoundsAround(setup, problem.start(), o.fit.bound_factor, o.fit.bounds);
+  const Profiler profiler(problem.residuals(), xhat, cost_min, box, i, o);
   ProfileInterval p;
   p.computed = true;
   p.curve.emplace_back(Physical(setup, i, xhat[i]), 0.0);
@@ -196,7 +226,9 @@ ProfileInterval Profile(const ModalResiduals& residuals,
     // Start at a quarter of the Wald standard deviation where there is one.
     double step = std::isfinite(wald_std) ? std::min(o.profile_first_step, 0.25 * wald_std)
                                           : o.profile_first_step;
-    std::optional<double> bound, failed;  // failed: nearest t past `last` no refit reached
+    std::optional<BracketEnd> end;
+    std::optional<double> failed;  // nearest t past `last` no refit reached
+    int retries = 0;
     for (int k = 0; k < o.profile_steps; ++k) {
       double t = std::clamp(last.t + side * step, box.lower[i], box.upper[i]);
       std::optional<ProfilePoint> next = profiler.RefitAt(t, {&last.x});
@@ -210,27 +242,49 @@ ProfileInterval Profile(const ModalResiduals& residuals,
         failed = t;
         break;
       }
+      const size_t mark = p.curve.size();
       p.curve.emplace_back(Physical(setup, i, t), next->delta);
       if (failed && side * (t - *failed) >= 0) failed.reset();  // got past it
       if (next->delta >= kChiSquare1Dof95) {
-        double failed_inside = 0;
-        bound = profiler.Bisect(last, *next, &failed_inside, &p.curve, setup);
-        if (!bound) failed = failed_inside;
+        end = profiler.Bisect(last, *next, &p.curve, setup);
+        if (end->kind == BracketEnd::kJump && retries < kJumpRetries) {
+          // A failed refit or another optimum: walked to again from `last`.
+          ++retries;
+          std::vector<ProfilePoint> walk = profiler.Walk(last, end->t);
+          if (walk.empty()) break;
+          p.curve.resize(mark);  // the walk supersedes the step and its bisection
+          for (const ProfilePoint& w : walk) p.curve.emplace_back(Physical(setup, i, w.t), w.delta);
+          if (walk.back().delta >= kChiSquare1Dof95) {
+            end = profiler.Bisect(walk.size() > 1 ? walk[walk.size() - 2] : last, walk.back(),
+                                  &p.curve, setup);
+            break;
+          }
+          end.reset();  // the jump was a failed refit: the scan goes on
+          --k;
+          last = walk.back();
+          continue;
+        }
         break;
       }
       if (t <= box.lower[i] || t >= box.upper[i]) break;
       step = std::abs(t - last.t) * o.profile_growth;
       last = *next;
     }
-    if (bound) {
-      (side < 0 ? p.lower : p.upper) = Physical(setup, i, *bound);
-    } else if (failed) {
-      (side < 0 ? p.lower_failed_at : p.upper_failed_at) = Physical(setup, i, *failed);
-    }
+    const auto set = [&](std::optional<double>* lower, std::optional<double>* upper, double t) {
+      (side < 0 ? *lower : *upper) = Physical(setup, i, t);
+    };
+    if (end && end->kind == BracketEnd::kCrossing) set(&p.lower, &p.upper, end->t);
+    else if (end && end->kind == BracketEnd::kJump) set(&p.lower_jump_at, &p.upper_jump_at, end->t);
+    else if (end && end->kind == BracketEnd::kFailed) set(&p.lower_failed_at, &p.upper_failed_at, end->t);
+    else if (failed) set(&p.lower_failed_at, &p.upper_failed_at, *failed);
   }
   std::sort(p.curve.begin(), p.curve.end());
   return p;
 }
+
+}  // namespace internal
+
+namespace {
 
 }  // namespace
 
@@ -270,7 +324,6 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
                                                double cost, const Uncertainty& u,
                                                const IdentifiabilityOptions& o) {
   const ParameterSetup& setup = problem.setup();
-  const Box box = BoundsAround(setup, problem.start(), o.fit.bound_factor, o.fit.bounds);
   std::vector<ParameterIdentifiability> out;
   for (int i = 0; i < setup.size(); ++i) {
     ParameterIdentifiability p;
@@ -286,7 +339,7 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
                       : std::make_pair(p.value - kNormal95 * *p.std, p.value + kNormal95 * *p.std);
     }
     if (o.profile_steps > 0) {
-      p.profile_95 = Profile(problem.residuals(), setup, xhat, cost, box, i, u.std[i], o);
+      p.profile_95 = internal::ProfileCoordinate(problem, xhat, cost, i, u.std[i], o);
     }
     out.push_back(p);
   }
@@ -710,10 +763,12 @@ std::string IdentifiabilityReport::FullReport() const {
   }
   o << "\n\n  parameter      value        class           std          Wald 95 %                profile 95 %\n";
   for (const ParameterIdentifiability& p : parameters) {
-    // A side that did not close: where its refits failed, else "open".
-    auto opt = [](const std::optional<double>& v, const std::optional<double>& failed_at) {
-      char b[48] = "open";
+    // A side that did not close: where it jumped or its refits failed, else "open".
+    auto opt = [](const std::optional<double>& v, const std::optional<double>& jump_at,
+                  const std::optional<double>& failed_at) {
+      char b[64] = "open";
       if (v) std::snprintf(b, sizeof b, "%.4g", *v);
+      else if (jump_at) std::snprintf(b, sizeof b, "jumps to another optimum at %.4g", *jump_at);
       else if (failed_at) std::snprintf(b, sizeof b, "failed at %.4g", *failed_at);
       return std::string(b);
     };
@@ -721,8 +776,12 @@ std::string IdentifiabilityReport::FullReport() const {
     if (p.wald_95) std::snprintf(wald, sizeof wald, "[%.4g, %.4g]", p.wald_95->first, p.wald_95->second);
     if (p.std) std::snprintf(sd, sizeof sd, "%.3e", *p.std);
     const std::string prof = p.profile_95.computed
-                                 ? "[" + opt(p.profile_95.lower, p.profile_95.lower_failed_at) + ", " +
-                                       opt(p.profile_95.upper, p.profile_95.upper_failed_at) + "]"
+                                 ? "[" + opt(p.profile_95.lower, p.profile_95.lower_jump_at,
+                                             p.profile_95.lower_failed_at) +
+                                       ", " +
+                                       opt(p.profile_95.upper, p.profile_95.upper_jump_at,
+                                           p.profile_95.upper_failed_at) +
+                                       "]"
                                  : "-";
     std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", p.key.Text().c_str(),
                   p.value, ToString(p.identifiable), sd, wald, prof.c_str());

@@ -16,6 +16,8 @@
 
 namespace ringid {
 
+class Problem;
+
 struct IdentifiabilityOptions {
   IdentifyOptions fit;  // the identification the analysis starts from
   // Profiles step each coordinate away from the optimum, re-optimising the
@@ -53,12 +55,19 @@ struct IdentifiabilityOptions {
 };
 
 // Each side is closed (lower/upper: a refitted point where 2 delta cost is
-// 3.841 to within 0.02, or across a jump the first over it, 1e-6 in
-// coordinates past the last under it), failed (*_failed_at) or open
-// (neither: the scan reached its last step or the box under the threshold).
+// 3.841 to within 0.02), jumped (*_jump_at), failed (*_failed_at) or open
+// (none: the scan reached its last step or the box under the threshold). A
+// jump is never a bound: 2 delta cost leaps over the threshold between two
+// refitted points 1e-6 apart in coordinates, and a warm-started walk from
+// the last profile point under it meets the same leap (a refit that merely
+// failed is retried so and the scan goes on), so the fit moves to another
+// optimum there rather than rising through the threshold.
 struct ProfileInterval {
   bool computed = false;
   std::optional<double> lower, upper;  // physical units; none: did not close
+  // Physical value, the first over the threshold, where the profile jumps to
+  // another optimum, on a side that did not close; none otherwise.
+  std::optional<double> lower_jump_at, upper_jump_at;
   // Physical value nearest the optimum where no refit was possible (from
   // no start a finite cost), on a side that did not close; none otherwise.
   std::optional<double> lower_failed_at, upper_failed_at;
@@ -69,6 +78,8 @@ struct ProfileInterval {
     a->Visit("computed", &computed);
     a->Visit("lower", &lower);
     a->Visit("upper", &upper);
+    a->Visit("lower_jump_at", &lower_jump_at);
+    a->Visit("upper_jump_at", &upper_jump_at);
     a->Visit("lower_failed_at", &lower_failed_at);
     a->Visit("upper_failed_at", &upper_failed_at);
     a->Visit("curve_value_delta_chi2", &curve);
@@ -182,6 +193,17 @@ struct IdentifiabilityReport {
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                             const IdentifiabilityOptions& options,
                             IdentifiabilityReport* report);
+
+namespace internal {
+
+// The profile of free coordinate i about the optimum xhat (cost cost_min),
+// as AnalyzeIdentifiability computes it; wald_std its Wald standard
+// deviation in coordinates (not finite where there is none).
+ProfileInterval ProfileCoordinate(const Problem& problem, const Eigen::VectorXd& xhat,
+                                  double cost_min, int i, double wald_std,
+                                  const IdentifiabilityOptions& options);
+
+}  // namespace internal
 
 }  // namespace ringid
 

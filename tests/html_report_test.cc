@@ -342,6 +342,23 @@ TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
             std::string::npos);
 }
 
+// A side that ends at a jump (estimation/identifiability.h) is said as one
+// in the interval's cell, not shown as a bound nor as "open".
+TEST(HtmlReportTest, IdentifiabilitySaysAJumpBesideTheBound) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made made = Identifiability();
+  ASSERT_TRUE(made.report["parameters"].is_object());
+  const std::string name = made.report["parameters"].begin().key();
+  const Made m = Changed(made, "identifiability_jump", [&](json* r) {
+    json& p = (*r)["parameters"][name];
+    p["profile"]["lower"] = nullptr;
+    p["profile"]["lower_jump_at"] = 12340.0;
+    p["profile_95"][0] = nullptr;
+  });
+  EXPECT_NE(m.html.find("[jumps to another optimum at 1.234e+04, "), std::string::npos)
+      << name;
+}
+
 TEST(HtmlReportTest, CompareDrawsCostsAndConvergence) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Compare();

@@ -43,15 +43,18 @@ Cell WaldCell(const std::optional<std::pair<double, double>>& interval) {
   return IntervalCell(interval->first, interval->second);
 }
 
-// As IntervalCell, a side whose refits failed "failed at x" instead of "open".
+// As IntervalCell, a side that jumped "jumps to another optimum at x", one
+// whose refits failed "failed at x", instead of "open".
 Cell ProfileCell(const ProfileInterval& profile) {
   if (!profile.computed) return {"–", true};
-  const auto end = [](std::optional<double> x, std::optional<double> failed_at) {
+  const auto end = [](std::optional<double> x, std::optional<double> jump_at,
+                      std::optional<double> failed_at) {
     if (x && std::isfinite(*x)) return Format(*x);
+    if (jump_at) return "jumps to another optimum at " + Format(*jump_at);
     return failed_at ? "failed at " + Format(*failed_at) : std::string("open");
   };
-  return {"[" + end(profile.lower, profile.lower_failed_at) + ", " +
-              end(profile.upper, profile.upper_failed_at) + "]",
+  return {"[" + end(profile.lower, profile.lower_jump_at, profile.lower_failed_at) + ", " +
+              end(profile.upper, profile.upper_jump_at, profile.upper_failed_at) + "]",
           true};
 }
 
