@@ -711,13 +711,13 @@ TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
 TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
   const std::map<std::string, std::vector<std::string>> expected = {
       {"predict", {"--parameters=TEXT  (default none)", "--effects=LIST", "--set=TEXT"}},
-      {"identify", {"--dataset=TEXT  (default none)", "--starts=N  (default 4)",
+      {"identify", {"--dataset=TEXT  (default none)", "--starts=N  (default 6)",
                     "--method=lm|simplex  (default 'lm')",
                     "--shapes[=BOOL]  (default true; --noshapes for false)",
                     "--relative_sigma=X", "--save_parameters=TEXT", "--output_dir=TEXT",
                     "--effects=LIST  (default none)", "LIST is any of"}},
       {"identifiability", {"--dataset=TEXT", "--derivatives=numeric|analytic  (default 'numeric')"}},
-      {"compare", {"--starts=N  (default 4)"}},
+      {"compare", {"--starts=N  (default 6)"}},
       {"simulate", {"--set=TEXT", "--shift=X  (default 0)", "--truth=TEXT",
                     "--speeds=TEXT  (default '0')"}},
       {"diagnose", {"--effects=LIST", "--jobs=N  (default 1)", "--shard=TEXT  (default '0/1')"}},
