@@ -17,6 +17,7 @@ namespace {
 constexpr double kOwnership = 0.05;
 constexpr int kRounds = 8;
 const double kMaxStep = std::log(4.0);
+constexpr int kDamperRepairs = 4;
 
 // One observable row: which label it measures, its log misfit
 // log(measured / model) and d log(model) / dx.
@@ -109,13 +110,23 @@ std::vector<Start> PlanStarts(const ModalResiduals& residuals, const Eigen::Vect
                               const std::function<bool(const Eigen::VectorXd&)>& usable) {
   std::vector<Start> out = {{x0, StartOrigin::kInitial}};
   if (starts < 2 || x0.size() == 0) return out;
-  const Eigen::VectorXd matched = MatchFrequencies(residuals, x0, box);
+  const ParameterSetup& setup = residuals.setup();
+  // Where a measured mode is overdamped at the user's guess (its roots
+  // real), the sidewall dampers are lowered a factor 3 at a time until every
+  // mode oscillates; the other starts are built from there.
+  Eigen::VectorXd base = x0;
+  for (int k = 0; k < kDamperRepairs && usable && !usable(base); ++k) {
+    for (int i = 0; i < setup.size(); ++i) {
+      if (setup.is_log(i) && IsDamping(setup.free()[i])) base[i] -= std::log(3.0);
+    }
+    base = base.cwiseMax(box.lower);
+  }
+  const Eigen::VectorXd matched = MatchFrequencies(residuals, base, box);
   if ((matched - x0).cwiseAbs().maxCoeff() > 1e-6) {
     out.push_back({matched, StartOrigin::kFrequencyMatched});
   }
   const int scattered = starts - static_cast<int>(out.size());
   if (scattered <= 0) return out;
-  const ParameterSetup& setup = residuals.setup();
   const int n = setup.size();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -128,7 +139,7 @@ std::vector<Start> PlanStarts(const ModalResiduals& residuals, const Eigen::Vect
   // the guess's, not the optimum's.
   auto hypercube = [&] {
     std::vector<Eigen::VectorXd> points(scattered, matched);
-    for (int k = 1; k < scattered; k += 2) points[k] = x0;
+    for (int k = 1; k < scattered; k += 2) points[k] = base;
     std::vector<int> strata(scattered);
     for (int i = 0; i < n; ++i) {
       std::iota(strata.begin(), strata.end(), 0);

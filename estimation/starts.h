@@ -42,7 +42,8 @@ struct Start {
 };
 
 // `starts` points: x0 (the user's), MatchFrequencies(x0) where it differs,
-// then points scattered around the matched one and x0 in turn, a Latin hypercube
+// then points scattered around the matched one and x0 in turn (x0 with its
+// dampers lowered where a mode is overdamped there), a Latin hypercube
 // log-uniform within a factor `factor` for log coordinates and within +-1
 // typical scale for the others, clipped to the box. A scattered draw where
 // `usable` is false is drawn again, up to 100 times, then kept.
