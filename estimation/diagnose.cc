@@ -589,8 +589,16 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     for (Param q : r->ranking[better].effect->parameters()) from.initial.erase(q);
     Identify(baseline, from, one, &recalibrated);
     if (!recalibrated.status.ok() || !(recalibrated.cost < r->baseline.cost)) break;
-    recalibrated.start_costs.insert(recalibrated.start_costs.begin(),
-                                    r->baseline.start_costs.begin(), r->baseline.start_costs.end());
+    // The baseline's starts, and this one after them.
+    const double cost = recalibrated.cost;
+    recalibrated.start_costs = r->baseline.start_costs;
+    recalibrated.start_origins = r->baseline.start_origins;
+    recalibrated.start_costs.push_back(cost);
+    recalibrated.start_origins.push_back(StartOrigin::kEffectAtZero);
+    recalibrated.start_agreement = r->baseline.start_agreement;
+    recalibrated.start_agreement.verdict +=
+        "; a fit holding an effect at 0 then found a lower chi-square, from which the baseline "
+        "was calibrated again";
     r->baseline = std::move(recalibrated);
   }
   const Dataset warm = WarmStart(dataset, r->baseline);

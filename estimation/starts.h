@@ -15,11 +15,13 @@
 
 namespace ringid {
 
-enum class StartOrigin { kInitial, kFrequencyMatched, kScattered };
+// kEffectAtZero: diagnose's re-calibration of the baseline from an effect's
+// fit that held the effect at 0 and beat the baseline.
+enum class StartOrigin { kInitial, kFrequencyMatched, kScattered, kEffectAtZero };
 template <>
 struct EnumNames<StartOrigin> {
-  static constexpr std::array<const char*, 3> kNames = {"initial", "frequency_matched",
-                                                        "scattered"};
+  static constexpr std::array<const char*, 4> kNames = {"initial", "frequency_matched",
+                                                        "scattered", "effect_at_zero"};
 };
 
 namespace internal {
