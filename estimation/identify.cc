@@ -491,9 +491,10 @@ void Identify(const ModalModel& model, const Dataset& dataset,
       f.measured_damping = m.damping_ratio;
       f.model_damping = mode.damping_ratio;
       if (!m.shape.empty()) {
-        f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention), m.shape);
+        f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention, m.shape), m.shape);
         for (const Mode& other : solution.modes) {
-          f.mac_all[other.label] = Mac(ComparableShape(other, o.residuals.shape_convention), m.shape);
+          f.mac_all[other.label] =
+              Mac(ComparableShape(other, o.residuals.shape_convention, m.shape), m.shape);
         }
       }
       const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;

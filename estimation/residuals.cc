@@ -29,10 +29,45 @@ RealShapeVector ComparableShape(const Mode& mode, ShapeConvention c) {
   return c == ShapeConvention::kPaper ? mode.PaperShape() : mode.RealShape();
 }
 
-RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention c, int p) {
+int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& measured) {
+  int model_largest = 0;
+  for (int i = 1; i < kNumDofs; ++i) {
+    if (std::abs(mode.shape[i]) > std::abs(mode.shape[model_largest])) model_largest = i;
+  }
+  int data_largest = -1;
+  double v_largest = 0;
+  for (const auto& [dof, v] : measured) {
+    if (std::abs(v) > v_largest) v_largest = std::abs(v), data_largest = static_cast<int>(dof);
+  }
+  if (data_largest >= 0 && std::abs(mode.shape[data_largest]) >=
+                               kShapeReferenceShare * std::abs(mode.shape[model_largest])) {
+    return data_largest;
+  }
+  return model_largest;
+}
+
+RealShapeVector ComparableShape(const Mode& mode, ShapeConvention c,
+                                const std::vector<std::pair<Dof, double>>& measured) {
+  if (c == ShapeConvention::kPaper) return mode.PaperShape();
+  const std::complex<double> z = mode.shape[ShapeReference(mode, measured)];
+  return (mode.shape * (std::conj(z) / std::abs(z))).real();
+}
+
+RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention c,
+                                          const std::vector<std::pair<Dof, double>>& measured,
+                                          int p) {
   const ModeDerivatives& d = *mode.derivatives;
   const ShapeVector ds = d.shape.col(p);
-  if (c == ShapeConvention::kContract) return ds.real();
+  if (c == ShapeConvention::kContract) {
+    // u = Re(s g), g = conj(z) / |z| with z = s_r (Mode::shape has its
+    // largest component fixed at 1, so g = 1 and dg = 0 when r is that one).
+    const int r = ShapeReference(mode, measured);
+    const std::complex<double> z = mode.shape[r], dz = ds[r];
+    const double abs_z = std::abs(z), dabs_z = (std::conj(z) * dz).real() / abs_z;
+    const std::complex<double> g = std::conj(z) / abs_z;
+    const std::complex<double> dg = std::conj(dz) / abs_z - std::conj(z) * dabs_z / (abs_z * abs_z);
+    return (ds * g + mode.shape * dg).real();
+  }
   // Mode::PaperShape: u = Re(s g) / N, g = conj(L) / |L| with L = lambda s_big
   // (s_big = 1, fixed), N^2 = |s|^2 (1 + |lambda|^2).
   const std::complex<double> lambda = mode.eigenvalue, dlambda = d.eigenvalue[p];
@@ -150,7 +185,8 @@ bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
     Eigen::MatrixXd score(shaped.size(), modes.size());
     for (size_t a = 0; a < shaped.size(); ++a) {
       for (size_t b = 0; b < modes.size(); ++b) {
-        score(a, b) = Mac(ComparableShape(modes[b], options_.shape_convention),
+        score(a, b) = Mac(ComparableShape(modes[b], options_.shape_convention,
+                                          measured[shaped[a]].shape),
                           measured[shaped[a]].shape);
       }
     }
@@ -352,8 +388,7 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
       case Slot::kShape: {
         // Component-wise after alignment: the measured shape scaled to a
         // largest component of 1, the model shape by least squares onto it.
-        const RealShapeVector u =
-            ComparableShape(mode, options_.shape_convention);
+        const RealShapeVector u = ComparableShape(mode, options_.shape_convention, m.shape);
         double largest = 0, uu = 0, um = 0;
         for (const auto& [dof, v] : m.shape) {
           largest = std::max(largest, std::abs(v));
@@ -369,7 +404,8 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
         const double alpha = paper ? (um >= 0 ? 1.0 : -1.0) / largest : (uu > 0 ? um / uu : 0);
         const double sigma = m.shape_sigma.value_or(options_.default_shape_sigma);
         for (int p : derive ? derived_ : std::vector<int>{}) {
-          const RealShapeVector du = ComparableShapeDerivative(mode, options_.shape_convention, p);
+          const RealShapeVector du =
+              ComparableShapeDerivative(mode, options_.shape_convention, m.shape, p);
           double duu = 0, dum = 0;
           for (const auto& [dof, v] : m.shape) {
             const int i = static_cast<int>(dof);

@@ -64,10 +64,24 @@ struct ResidualOptions {
   bool IsValid(std::string* why) const;
 };
 
-// The model's real shape under a convention, and its derivative with respect
-// to catalogue parameter p (the mode must carry derivatives).
+// The model's real shape under a convention, as measured shapes are made
+// (docs/conventions.md §2: the largest component's phase removed).
 RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
-RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention convention, int p);
+// The same for comparison with `measured`, and its derivative with respect to
+// catalogue parameter p (the mode must carry derivatives). Under the
+// contract's convention the phase removed is that of the measured shape's
+// largest component, the one the convention made real when it was measured,
+// unless the model's magnitude there is below kShapeReferenceShare of its
+// largest (ShapeReference). The model's own largest component would flip
+// the real part wherever two of its components tie: a step in the residuals
+// at which every fit stalls.
+RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention,
+                                const std::vector<std::pair<Dof, double>>& measured);
+RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention convention,
+                                          const std::vector<std::pair<Dof, double>>& measured,
+                                          int p);
+inline constexpr double kShapeReferenceShare = 0.5;
+int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& measured);
 // MAC of a real model shape against a measured shape on its components.
 double Mac(const RealShapeVector& model,
            const std::vector<std::pair<Dof, double>>& measured);

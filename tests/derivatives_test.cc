@@ -4,6 +4,9 @@
 // camber/yaw crossing, each effect, both shape conventions and at speed.
 #include <cmath>
 #include <memory>
+#include <numeric>
+#include <algorithm>
+#include <complex>
 #include <random>
 #include <string>
 
@@ -109,7 +112,8 @@ bool ClearlyPaired(const internal::ModalResiduals& residuals, const Eigen::Vecto
     const ModalSolution& s = solutions[measured.condition];
     if (s.modes[pairs[i]].label != measured.label) return false;
     const auto mac = [&](int b) {
-      return Mac(ComparableShape(s.modes[b], ShapeConvention::kContract), measured.shape);
+      return Mac(ComparableShape(s.modes[b], ShapeConvention::kContract, measured.shape),
+                 measured.shape);
     };
     for (int b = 0; b < static_cast<int>(s.modes.size()); ++b) {
       if (b != pairs[i] && mac(b) > mac(pairs[i]) - 0.01) return false;
@@ -152,6 +156,47 @@ TEST(DerivativesTest, AnalyticJacobianMatchesRiddersWithShapesAndDampingAtRandom
   // The measured shapes are the contract's; they pair under the paper's
   // convention near the truth only.
   ExpectAgreement(model, d, ShapeConvention::kPaper, problem->start(), "paper convention");
+}
+
+// Where the measured shape's largest component is not the model's largest
+// (but within kShapeReferenceShare of it), the phase removed is the measured
+// one's (ComparableShape), and its derivative enters every shape row.
+TEST(DerivativesTest, AnalyticJacobianMatchesRiddersWhereTheMeasuredShapeSetsThePhase) {
+  std::mt19937_64 rng(7);
+  const RigidRingModel model;
+  Parameters truth = PaperIdentified();
+  truth[Param::m_a] = 15;  // a lateral mode with y_b and gamma_b far out of phase
+  Dataset d = AllFree(testing::SyntheticDataset(model, truth, 0.0025, 0.1, 0.02, &rng), model,
+                      truth);
+  Status status;
+  auto problem = Problem::Create(model, d, ResidualOptions(), &status);
+  ASSERT_TRUE(problem) << status.message;
+  std::vector<ModalSolution> solutions;
+  std::vector<int> pairs;
+  std::string why;
+  ASSERT_TRUE(problem->residuals().Pair(problem->start().data(), &solutions, &pairs, &why)) << why;
+  // A measured shape whose model mode has a second component at least 0.6 of
+  // its largest and out of phase with it gets that component as its largest.
+  int moved = 0;
+  for (size_t i = 0; i < d.modes.size(); ++i) {
+    const Mode& mode = solutions[d.modes[i].condition].modes[pairs[i]];
+    auto& shape = d.modes[i].shape;
+    if (shape.size() < 2) continue;
+    std::vector<size_t> order(shape.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto size = [&](size_t k) { return std::abs(mode.shape[static_cast<int>(shape[k].first)]); };
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return size(a) > size(b); });
+    const std::complex<double> ratio = mode.shape[static_cast<int>(shape[order[1]].first)] /
+                                       mode.shape[static_cast<int>(shape[order[0]].first)];
+    if (std::abs(ratio) < 0.6 || std::abs(ratio.imag()) < 0.2 * std::abs(ratio)) continue;
+    double largest = 0;
+    for (const auto& [dof, v] : shape) largest = std::max(largest, std::abs(v));
+    shape[order[1]].second = 1.2 * largest;
+    ASSERT_EQ(ShapeReference(mode, shape), static_cast<int>(shape[order[1]].first));
+    ++moved;
+  }
+  ASSERT_GE(moved, 1);
+  ExpectAgreement(model, d, ShapeConvention::kContract, {}, "measured phase");
 }
 
 TEST(DerivativesTest, AnalyticJacobianMatchesRiddersNearTheCamberYawCrossing) {
