@@ -154,7 +154,8 @@ Made IdentifyShapes() {
 }
 
 Made Identifiability() {
-  return Make("identifiability", "identifiability --starts=1 --dataset=" + Simulate("profiled"));
+  return Make("identifiability",
+              "identifiability --starts=1 --derivatives=analytic --dataset=" + Simulate("profiled"));
 }
 
 Made Compare() {
