@@ -87,6 +87,8 @@ DEFINE_string(figures_dir, "", "also write each figure as DIR/NAME.svg (the dire
 DEFINE_string(bounds, "", "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around the start");
 DEFINE_string(fix, "", "NAME,...: parameters held at their initial values");
 DEFINE_string(effects, "", "EFFECT,...: effects of docs/conventions.md §4 to add to the model (diagnose: to its baseline; the others are tried on top)");
+DEFINE_double(level, ringid::DiagnoseOptions().effect_significance,
+              "significance level of each effect's likelihood-ratio test and of the verdict's group (the default is Bonferroni-safe for six candidates)");
 DEFINE_string(format, "", "what to write: the rigid-ring part of an MF-Swift .tir (docs/tir.md) or a parameter set (ringid-parameters/1 JSON)");
 
 namespace ringid {
@@ -766,6 +768,8 @@ int SimulateCommand(int argc, char** argv) {
 int DiagnoseCommand(int argc, char** argv) {
   std::string error;
   DiagnoseOptions o;
+  if (!(FLAGS_level > 0 && FLAGS_level < 1)) return Usage("--level: must lie in (0, 1)");
+  o.effect_significance = FLAGS_level;
   std::vector<const Effect*> effects;
   if (!FLAGS_output_dir.empty()) {
     if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
@@ -970,7 +974,7 @@ const std::vector<Command>& Commands() {
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
        "the baseline and the others are tried on top; with --output_dir, a\n"
        "campaign as for identify",
-       Joined(kFitFlags, kCampaignFlags), DiagnoseCommand},
+       Joined(Joined(kFitFlags, {"level"}), kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
        "the accuracy, conditioning and speed suites, on the paper's data installed\n"
        "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"

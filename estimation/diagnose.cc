@@ -423,6 +423,9 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   f.extra_parameters = static_cast<int>(s.coordinate_names.size()) - n_base;
   f.lrt_statistic = std::max(0.0, r.chi2_before - f.chi2);
   f.lrt_p = f.extra_parameters > 0 ? ChiSquareTail(f.lrt_statistic, f.extra_parameters) : 1.0;
+  if (f.extra_parameters > 0) {
+    f.lrt_threshold = ChiSquareCritical(o.effect_significance, f.extra_parameters);
+  }
   f.aic = f.chi2 + 2 * (n_base + f.extra_parameters);
   f.bic = f.chi2 + std::log(std::max(m, 1)) * (n_base + f.extra_parameters);
   f.gap_after = std::max(0.0, f.chi2 - std::max(r.dof - f.extra_parameters, 0));

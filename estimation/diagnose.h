@@ -80,6 +80,9 @@ struct EffectFit {
   // NaN (null in reports) for an effect that was not fitted.
   double chi2 = kNotAvailable;                         // 2 x cost
   double lrt_statistic = kNotAvailable, lrt_p = kNotAvailable;  // against the baseline
+  // The likelihood ratio significant at the report's level on
+  // extra_parameters degrees of freedom (the chi-square quantile).
+  double lrt_threshold = kNotAvailable;
   double aic = kNotAvailable, bic = kNotAvailable;
   double gap_after = kNotAvailable;                    // chi2 in excess of its dof
   double shrink = kNotAvailable;                       // 1 - gap_after / gap_before
@@ -114,6 +117,7 @@ struct EffectFit {
       g->Visit("likelihood_ratio", &lrt_statistic);
       g->Visit("extra_parameters", &extra_parameters);
       g->Visit("lrt_p_value", &lrt_p);
+      g->Visit("likelihood_ratio_threshold", &lrt_threshold);
       g->Visit("aic", &aic);
       g->Visit("bic", &bic);
       g->Visit("held_out_chi2", &held_out_chi2);

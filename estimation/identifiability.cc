@@ -334,9 +334,7 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
     if (std::isfinite(u.std[i])) {
       const double s = u.std[i];
       p.std = setup.PhysicalStd(i, xhat[i], s);
-      p.wald_95 = setup.is_log(i)
-                      ? std::make_pair(p.value * std::exp(-kNormal95 * s), p.value * std::exp(kNormal95 * s))
-                      : std::make_pair(p.value - kNormal95 * *p.std, p.value + kNormal95 * *p.std);
+      p.wald_95 = setup.Interval95(i, xhat[i], s);
     }
     if (o.profile_steps > 0) {
       p.profile_95 = internal::ProfileCoordinate(problem, xhat, cost, i, u.std[i], o);

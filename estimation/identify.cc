@@ -60,10 +60,16 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
     }
   }
   const double sd = u.std[i];
-  if (std::isfinite(sd)) e.std = setup.PhysicalStd(i, x[i], sd);
+  if (std::isfinite(sd)) {
+    e.std = setup.PhysicalStd(i, x[i], sd);
+    e.interval_95 = setup.Interval95(i, x[i], sd);
+  }
   for (const auto& prior : residuals.priors()) {
     if (prior.coordinate != i || !u.covariance_ok || e.tied_to) continue;
     e.prior_share = u.covariance(i, i) / prior.CoordinateVariance(setup, x[i]);
+    e.decided_by = *e.prior_share > kPriorDecides  ? DecidedBy::kPrior
+                   : *e.prior_share < kDataDecides ? DecidedBy::kData
+                                                   : DecidedBy::kDataAndPrior;
     e.prior_z = prior.Residual(setup, x[i]);
   }
   return e;
@@ -185,11 +191,13 @@ std::vector<SpeedCurve> SpeedCurves(const ModalModel& model, const Dataset& data
 
 }  // namespace
 
-const char* ParameterEstimate::DecidedBy() const {
-  if (!prior_share) return "the data";
-  if (*prior_share > 0.5) return "the prior";
-  if (*prior_share < 0.1) return "the data";
-  return "data and prior";
+const char* DecidedByWords(DecidedBy d) {
+  switch (d) {
+    case DecidedBy::kData: return "the data";
+    case DecidedBy::kDataAndPrior: return "data and prior";
+    case DecidedBy::kPrior: return "the prior";
+  }
+  return "";
 }
 
 StartAgreement AssessStarts(const ParameterSetup& setup, const std::vector<double>& costs,
@@ -584,13 +592,15 @@ std::string IdentifySummary::FullReport() const {
   // Which parameters the data decide and which their priors decide.
   std::string by_prior, by_both, by_data;
   for (const ParameterEstimate& e : estimates) {
-    if (!e.prior_share) continue;
-    std::string& list = *e.prior_share > 0.5 ? by_prior : *e.prior_share < 0.1 ? by_data : by_both;
+    if (!e.decided_by) continue;
+    std::string& list = *e.decided_by == DecidedBy::kPrior  ? by_prior
+                        : *e.decided_by == DecidedBy::kData ? by_data
+                                                            : by_both;
     list += (list.empty() ? "" : ", ") + e.key.Text();
   }
-  if (!by_prior.empty()) o << "\n  decided by their priors (posterior variance > 50 % of the prior's): " << by_prior;
+  if (!by_prior.empty()) o << "\n  decided by their priors (posterior variance > " << 100 * kPriorDecides << " % of the prior's): " << by_prior;
   if (!by_both.empty()) o << "\n  decided by data and priors together: " << by_both;
-  if (!by_data.empty()) o << "\n  decided by the data despite a prior (< 10 % of its variance left): " << by_data;
+  if (!by_data.empty()) o << "\n  decided by the data despite a prior (< " << 100 * kDataDecides << " % of its variance left): " << by_data;
   if (!by_prior.empty() || !by_both.empty() || !by_data.empty()) o << "\n";
   if (const std::string bounds = OnBounds(); !bounds.empty()) o << "\n  " << bounds << "\n";
   if (const std::string conflicts = PriorConflicts(); !conflicts.empty()) {

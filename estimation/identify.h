@@ -69,6 +69,19 @@ struct KnownCondition {
   }
 };
 
+// What decides a value that has a prior, from its prior_share: the prior
+// where it keeps over kPriorDecides of the prior variance, the data where
+// under kDataDecides is left, else both.
+enum class DecidedBy { kData, kDataAndPrior, kPrior };
+template <>
+struct EnumNames<DecidedBy> {
+  static constexpr std::array<const char*, 3> kNames = {"data", "data_and_prior", "prior"};
+};
+inline constexpr double kPriorDecides = 0.5;
+inline constexpr double kDataDecides = 0.1;
+// "the data", "data and prior", "the prior".
+const char* DecidedByWords(DecidedBy d);
+
 struct ParameterEstimate {
   ParameterKey key;  // the parameter, and its condition when per-condition
   double value = 0;
@@ -77,9 +90,13 @@ struct ParameterEstimate {
   Identifiability identifiable = Identifiability::kYes;
   std::string reason;
   std::optional<double> std;  // physical units; none where not defined
+  // Wald 95 %, symmetric in the coordinate fitted (ParameterSetup::Interval95);
+  // none where std is none.
+  std::optional<std::pair<double, double>> interval_95;
   // With a prior: posterior over prior variance (Laplace), near 1 where the
   // prior decides the value, near 0 where the data do.
   std::optional<double> prior_share;
+  std::optional<DecidedBy> decided_by;  // with a prior, from prior_share
   // With a prior: the estimate's distance from the prior's center in prior
   // standard deviations (of the log for a lognormal prior), signed.
   std::optional<double> prior_z;
@@ -94,8 +111,6 @@ struct ParameterEstimate {
   // "given sigma_cx = 0.1 m (known): the data measure K_cx/sigma_cx", one
   // clause per known parameter; none when conditional_on is empty.
   std::optional<std::string> Condition() const;
-  // "the data", "the prior" or "data and prior", from prior_share.
-  const char* DecidedBy() const;
   // The data pull the estimate further from its prior than the prior allows
   // (|prior_z| > kPriorConflictZ): one of the two is wrong.
   bool PriorConflict() const;
@@ -107,9 +122,11 @@ struct ParameterEstimate {
     a->Visit("free", &free);
     a->VisitIfSet("tied_to", &tied_to);
     a->Visit("std", &std);
+    a->Visit("interval_95", &interval_95);
     a->Visit("identifiable", &identifiable);
     a->Visit("reason", &reason);
     a->VisitIfSet("prior_share", &prior_share);
+    a->VisitIfSet("decided_by", &decided_by);
     a->VisitIfSet("prior_z", &prior_z);
     a->VisitIfSet("on_bound", &on_bound);
     a->Visit("conditional_on", &conditional_on);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "estimation/statistics.h"
+
 namespace ringid {
 
 std::string ParameterKey::Text() const {
@@ -87,6 +89,12 @@ double ParameterSetup::ToCoordinate(int i, double value) const {
 
 double ParameterSetup::PhysicalStd(int i, double x, double sd) const {
   return is_log(i) ? std::exp(x) * sd : sd * TypicalScale(free_[i]);
+}
+
+std::pair<double, double> ParameterSetup::Interval95(int i, double x, double sd) const {
+  if (is_log(i)) return {std::exp(x - kNormal95 * sd), std::exp(x + kNormal95 * sd)};
+  const double v = ToPhysical(i, x), half = kNormal95 * PhysicalStd(i, x, sd);
+  return {v - half, v + half};
 }
 
 int ParameterSetup::CoordinateOf(Param p, int condition) const {

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -62,6 +63,10 @@ class ParameterSetup {
   double ToPhysical(int i, double x) const;
   double ToCoordinate(int i, double value) const;
   double PhysicalStd(int i, double x, double sd) const;
+  // The Wald 95 % interval of coordinate i at x, sd its coordinate standard
+  // deviation, in the parameter's units: symmetric in the coordinate it is
+  // fitted in (the log of a positive parameter, else the value itself).
+  std::pair<double, double> Interval95(int i, double x, double sd) const;
   // The index of the coordinate that sets p in `condition`, or -1 when p is
   // fixed there.
   int CoordinateOf(Param p, int condition = 0) const;

@@ -23,7 +23,7 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 4;
+inline constexpr int kReportSchemaVersion = 5;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign,

@@ -488,7 +488,7 @@ TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
   EXPECT_NEAR(K.value, median, 1e-3 * median);
   ASSERT_TRUE(K.prior_share.has_value());
   EXPECT_NEAR(*K.prior_share, 1.0, 0.02);
-  EXPECT_STREQ(K.DecidedBy(), "the prior");
+  EXPECT_EQ(K.decided_by, DecidedBy::kPrior);
   EXPECT_FALSE(sigma.prior_share.has_value());
   // The ratio is the data's: near the truth, and sigma's log-std is at
   // least the prior's log-sd.

@@ -21,6 +21,7 @@
 
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
+#include "estimation/statistics.h"
 #include "model/rigid_ring_model.h"
 #include "tests/browser_check.h"
 #include "report/report.h"
@@ -476,6 +477,66 @@ TEST(HtmlReportTest, IdentifyHeadsThePageWithItsWarnings) {
 
 // Table 1's fit breaks rules of docs/plausibility.md: each flag is listed
 // before the modes; a fit within every range says so.
+// The interval shown is the report's interval_95, symmetric in the
+// coordinate fitted: value x exp(+-1.96 std/value) for a positive parameter
+// (fitted in its log), value +- 1.96 std for k_xy (lug_coupling, fitted in
+// N/m, may be negative). The page applied the first to every parameter.
+TEST(HtmlReportTest, IdentifyShowsTheReportsIntervalForEveryKindOfParameter) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  // Started off k_xy = 0, where the misfit is flat in k_xy (it enters squared).
+  json data = json::parse(ReadFile(Simulate("lug", "--effects=lug_coupling --shift=0.05")));
+  const json truth = json::parse(
+      ReadFile(Scratch("truth_" + std::to_string(std::hash<std::string>()("lug")) + ".json")));
+  data["initial"]["k_xy"] = 1.3 * truth["parameters"]["k_xy"]["value"].get<double>();
+  const std::string started = Scratch("lug_started.json");
+  std::ofstream(started) << data.dump(2);
+  const Made m = Make("identify_lug", "identify --starts=1 --derivatives=analytic "
+                                      "--effects=lug_coupling --dataset=" + started);
+  for (const auto& [name, positive] : {std::pair{"k_xy", false}, std::pair{"k_bx", true}}) {
+    const json& p = m.report["parameters"][name];
+    ASSERT_TRUE(p["std"].is_number()) << name;
+    const double v = p["value"], s = p["std"];
+    const double lo = positive ? v * std::exp(-ringid::kNormal95 * s / v) : v - ringid::kNormal95 * s;
+    const double hi = positive ? v * std::exp(ringid::kNormal95 * s / v) : v + ringid::kNormal95 * s;
+    ASSERT_EQ(p["interval_95"].size(), 2u) << name;
+    EXPECT_NEAR(p["interval_95"][0].get<double>(), lo, 1e-9 * (std::abs(lo) + std::abs(v))) << name;
+    EXPECT_NEAR(p["interval_95"][1].get<double>(), hi, 1e-9 * (std::abs(hi) + std::abs(v))) << name;
+    char cell[128];
+    std::snprintf(cell, sizeof cell, "<td class=\"n\">[%.4g, %.4g]</td>",
+                  p["interval_95"][0].get<double>(), p["interval_95"][1].get<double>());
+    EXPECT_NE(m.html.find(cell), std::string::npos) << name << ": " << cell;
+  }
+}
+
+// diagnose --level sets the level of every likelihood-ratio test; each
+// ranking row carries its threshold, the chi-square quantile at that level
+// (tables: 6.635, 9.210, 11.345 for 1-3 degrees of freedom at 0.01), and the
+// page says the level it was drawn at. Out of (0, 1) it is refused.
+TEST(HtmlReportTest, DiagnoseThresholdsAreTheReportsAtItsLevel) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Make("diagnose_level", "diagnose --level=0.01 --derivatives=analytic --dataset=" +
+                                            Simulate("lug", "--effects=lug_coupling --shift=0.05"));
+  EXPECT_EQ(m.report["verdict"]["level"].get<double>(), 0.01);
+  const std::map<int, double> table = {{1, 6.635}, {2, 9.210}, {3, 11.345}};
+  int checked = 0;
+  for (const json& row : m.report["ranking"]) {
+    if (!row["fitted"].get<bool>()) continue;
+    const int extra = row["evidence"]["extra_parameters"];
+    ASSERT_TRUE(table.count(extra)) << row["effect"];
+    EXPECT_NEAR(row["evidence"]["likelihood_ratio_threshold"].get<double>(), table.at(extra), 2e-3)
+        << row["effect"];
+    ++checked;
+  }
+  EXPECT_GE(checked, 4);
+  EXPECT_NE(m.html.find("gives p = 0.01 for the effect"), std::string::npos);
+  for (const char* level : {"0", "1", "1.5", "-0.1"}) {
+    const RunResult r = Ringid(std::string("diagnose --level=") + level +
+                               " --dataset=" + Source("datasets/paper/table1.json"));
+    EXPECT_EQ(r.status, 2) << level;
+    EXPECT_NE(r.err.find("--level"), std::string::npos) << r.err;
+  }
+}
+
 TEST(HtmlReportTest, IdentifyListsThePlausibilityFlags) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyPaper();
@@ -503,9 +564,13 @@ TEST(HtmlReportTest, IdentifyListsThePlausibilityFlags) {
             std::string::npos);
 }
 
-// What decided a parameter with a prior, as ParameterEstimate::DecidedBy says.
+// What decided a parameter with a prior (docs/reports.md): the prior where
+// it keeps over half its variance, the data where under a tenth is left.
 std::string DecidedBy(double prior_share) {
   return prior_share > 0.5 ? "the prior" : prior_share < 0.1 ? "the data" : "data and prior";
+}
+std::string DecidedByName(double prior_share) {
+  return prior_share > 0.5 ? "prior" : prior_share < 0.1 ? "data" : "data_and_prior";
 }
 
 TEST(HtmlReportTest, IdentifyWithPriorsSaysWhatDecidedEachParameter) {
@@ -522,6 +587,7 @@ TEST(HtmlReportTest, IdentifyWithPriorsSaysWhatDecidedEachParameter) {
   ASSERT_NE(table, std::string::npos);
   for (const auto& [name, p] : parameters.items()) {
     if (!p.contains("prior_share")) continue;
+    EXPECT_EQ(p["decided_by"], DecidedByName(p["prior_share"].get<double>())) << name;
     const size_t row = m.html.find("<tr><td>" + name + "</td>", table);
     ASSERT_NE(row, std::string::npos) << name;
     const std::string tr = m.html.substr(row, m.html.find("</tr>", row) - row);

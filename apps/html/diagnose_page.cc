@@ -219,14 +219,14 @@ struct Ranking {
   std::vector<std::string> effects;
   std::vector<std::pair<double, double>> shrink, likelihood_ratio;
   std::vector<bool> supported;
-  Series thresholds;  // the LR at p = 1e-3 per effect
+  Series thresholds;  // the LR significant at the report's level, per effect
   double lr_min = 1, shrink_low = 0, shrink_high = 100;
+  double level = 0;  // of the tests (DiagnosisReport::level)
 };
 
 Ranking ReadRanking(const DiagnosisReport& report) {
-  // The LR test's threshold at p = 1e-3 (χ² quantile) for 1 to 6 extra parameters.
-  static const double kLrAt1e3[] = {10.828, 13.816, 16.266, 18.467, 20.515, 22.458};
   Ranking out;
+  out.level = report.level;
   for (const EffectFit& fit : report.ranking) {
     if (!fit.ok) continue;  // not fitted: not drawn
     const auto shrink = Finite(100 * fit.shrink);
@@ -242,9 +242,8 @@ Ranking ReadRanking(const DiagnosisReport& report) {
     }
     if (ratio && *ratio > 0) out.lr_min = std::min(out.lr_min, *ratio);
     out.supported.push_back(fit.supported);
-    const int extra = fit.extra_parameters;
-    if (extra >= 1 && extra <= 6) {
-      out.thresholds.Row({static_cast<double>(out.effects.size() - 1), kLrAt1e3[extra - 1]});
+    if (std::isfinite(fit.lrt_threshold)) {
+      out.thresholds.Row({static_cast<double>(out.effects.size() - 1), fit.lrt_threshold});
     }
   }
   return out;
@@ -299,8 +298,9 @@ void RankingFigure(const DiagnosisReport& report, Page* page) {
   figure.caption =
       "Each catalogue effect refitted: left, the share of the gap it removes (%); right, "
       "its likelihood ratio against the baseline (log axis). Green: supported (LR test "
-      "p < 10⁻³); grey: not supported. Red marks: the likelihood ratio that gives p = 10⁻³ "
-      "for the effect's number of extra parameters.";
+      "p < " + Format(ranking.level, "%g") + "); grey: not supported. Red marks: the likelihood "
+      "ratio that gives p = " + Format(ranking.level, "%g") +
+      " for the effect's number of extra parameters.";
   page->AddFigure(std::move(figure));
 }
 

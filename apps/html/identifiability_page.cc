@@ -30,19 +30,6 @@ void SummarySection(const DatasetBody<IdentifiabilityReport>& body, Page* page) 
                  {"seconds", NumberCell(r.seconds)}});
 }
 
-// "[a, b]", an end that is not a number "open".
-Cell IntervalCell(std::optional<double> lower, std::optional<double> upper) {
-  const auto end = [](std::optional<double> x) {
-    return x && std::isfinite(*x) ? Format(*x) : std::string("open");
-  };
-  return {"[" + end(lower) + ", " + end(upper) + "]", true};
-}
-
-Cell WaldCell(const std::optional<std::pair<double, double>>& interval) {
-  if (!interval) return {"–", true};
-  return IntervalCell(interval->first, interval->second);
-}
-
 // As IntervalCell, a side that jumped "jumps to another optimum at x", one
 // whose refits failed "failed at x", instead of "open".
 Cell ProfileCell(const ProfileInterval& profile) {
@@ -69,7 +56,7 @@ void ParametersSection(const IdentifiabilityReport& r, Page* page) {
   std::vector<Row> rows;
   for (const ParameterIdentifiability& q : r.parameters) {
     rows.push_back({TextCell(q.key.Text()), NumberCell(q.value), TextCell(Info(q.param()).unit),
-                    NameCell(q.identifiable), NumberCell(q.std), WaldCell(q.wald_95),
+                    NameCell(q.identifiable), NumberCell(q.std), IntervalCell(q.wald_95),
                     ProfileCell(q.profile_95), TextCell(q.reason.empty() ? "–" : q.reason)});
   }
   page->Heading("Parameters");

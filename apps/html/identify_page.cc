@@ -24,6 +24,7 @@ struct Intervals {
   std::vector<Identifiability> classes;
   std::vector<std::string> clipped;      // cut at kClipFactor
   std::vector<std::string> without_std;  // free, not drawn
+  std::vector<std::string> not_positive;  // an interval reaching 0 or below: not drawn
 };
 
 // The costs of the starts, each as "%.4g (origin)".
@@ -114,29 +115,23 @@ FrequencyFigureOptions ModesSection(const std::vector<ModeFit>& modes, Page* pag
   return figure;
 }
 
-Cell FactorCell(std::optional<double> factor) {
-  if (!factor) return {"–", true};
-  return {*factor > 1e6 ? "> 10⁶" : "× ÷ " + Format(*factor, "%.3g"), true};
-}
-
 // One parameter's row; its interval when it is free and has a std. With
 // `priors`, the prior's share and what decided the value.
 Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) {
   const std::string name = q.key.Text();
   std::string role = q.free ? "free" : "fixed";
   if (q.tied_to) role = std::string("tied to ") + ToString(*q.tied_to);
-  const bool has_std = q.std && std::isfinite(*q.std);
-  std::optional<double> factor;
-  if (q.free && has_std && std::isfinite(q.value) && q.value != 0) {
-    double z = kNormal95 * std::fabs(*q.std / q.value);
-    factor = std::exp(std::min(z, 700.0));
-    if (z > std::log(kClipFactor)) {
-      z = std::log(kClipFactor);
-      intervals->clipped.push_back(name);
-    }
+  // The report's interval, drawn relative to the value where both ends are
+  // positive (a log axis).
+  const auto& interval = q.interval_95;
+  if (q.free && interval && q.value > 0 && interval->first >= 0) {
+    const double low = interval->first / q.value, high = interval->second / q.value;
+    if (low < 1 / kClipFactor || high > kClipFactor) intervals->clipped.push_back(name);
     intervals->names.push_back(name);
-    intervals->bounds.push_back({std::exp(-z), std::exp(z)});
+    intervals->bounds.push_back({std::max(low, 1 / kClipFactor), std::min(high, kClipFactor)});
     intervals->classes.push_back(q.identifiable);
+  } else if (q.free && interval) {
+    intervals->not_positive.push_back(name);
   } else if (q.free) {
     intervals->without_std.push_back(name);
   }
@@ -145,13 +140,13 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
              TextCell(Info(q.param()).unit),
              TextCell(role),
              NumberCell(q.std),
-             FactorCell(factor),
+             IntervalCell(interval),
              NameCell(q.identifiable),
              TextCell(q.Condition().value_or("–")),
              TextCell(q.reason)};
   if (priors) {
     row.push_back(PercentCell(q.prior_share));
-    row.push_back(TextCell(q.prior_share ? q.DecidedBy() : "–"));
+    row.push_back(TextCell(q.decided_by ? DecidedByWords(*q.decided_by) : "–"));
     row.push_back(NumberCell(q.prior_z, "%+.1f"));
   }
   return row;
@@ -162,23 +157,24 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
 std::string PriorSentence(const std::vector<ParameterEstimate>& estimates) {
   std::vector<std::string> by_prior, by_both, by_data;
   for (const ParameterEstimate& q : estimates) {
-    if (!q.prior_share) continue;
-    const std::string decided = q.DecidedBy();
-    (decided == "the prior" ? by_prior : decided == "the data" ? by_data : by_both)
+    if (!q.decided_by) continue;
+    (*q.decided_by == DecidedBy::kPrior  ? by_prior
+     : *q.decided_by == DecidedBy::kData ? by_data
+                                         : by_both)
         .push_back(q.key.Text());
   }
   std::vector<std::string> parts;
   if (!by_prior.empty()) {
-    parts.push_back("decided by their priors (posterior variance over 50 % of the prior "
-                    "variance): " +
+    parts.push_back("decided by their priors (posterior variance over " +
+                    Format(100 * kPriorDecides, "%g") + " % of the prior variance): " +
                     Join(by_prior, ", "));
   }
   if (!by_both.empty()) {
     parts.push_back("decided by data and priors together: " + Join(by_both, ", "));
   }
   if (!by_data.empty()) {
-    parts.push_back("decided by the data despite a prior (under 10 % of the prior variance "
-                    "left): " +
+    parts.push_back("decided by the data despite a prior (under " +
+                    Format(100 * kDataDecides, "%g") + " % of the prior variance left): " +
                     Join(by_data, ", "));
   }
   return "Parameters with a prior: " + Join(parts, "; ") +
@@ -196,7 +192,7 @@ Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
   std::vector<Row> rows;
   for (const ParameterEstimate& q : estimates) rows.push_back(ParameterRow(q, priors, &intervals));
   std::vector<std::string> head = {"parameter", "value", "unit", "role", "std",
-                                   "95 % interval (factor)", "identifiable",
+                                   "95 % interval", "identifiable",
                                    "holds given (known)", "reason"};
   if (priors) {
     head.insert(head.end(), {"posterior / prior variance (%)", "decided by",
@@ -318,11 +314,15 @@ void IntervalFigure(const Intervals& intervals, Page* page) {
            std::clamp(300 + 45 * static_cast<int>(intervals.names.size()), 600, 1000), 420);
   f.script = IntervalScript(&f, intervals);
   const std::string z = Format(kNormal95, "%.2f");
-  f.caption = "95 % interval of each free parameter relative to its value, [exp(−" + z +
-              " std/value), exp(+" + z +
-              " std/value)], on a log axis (dimensionless). "
+  f.caption = "95 % interval of each free parameter relative to its value (the report's "
+              "interval_95: value × exp(± " + z + " std/value) for a positive parameter, fitted "
+              "in its log), on a log axis (dimensionless). "
               "Dashed lines: a factor 2 either way, beyond which a parameter is practically "
               "not identifiable.";
+  if (!intervals.not_positive.empty()) {
+    f.caption += " Not drawn, their interval reaching 0 or below (fitted in linear "
+                 "coordinates; see the table): " + Join(intervals.not_positive, ", ") + ".";
+  }
   if (!intervals.clipped.empty()) {
     f.caption += " Cut at a factor " + Format(kClipFactor, "%.0f") +
                  ", beyond the axis: " + Join(intervals.clipped, ", ") + ".";

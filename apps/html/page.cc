@@ -56,6 +56,18 @@ Cell ListCell(const std::vector<std::string>& items) {
   return TextCell(items.empty() ? "–" : Join(items, ", "));
 }
 
+Cell IntervalCell(std::optional<double> lower, std::optional<double> upper) {
+  const auto end = [](std::optional<double> x) {
+    return x && std::isfinite(*x) ? Format(*x) : std::string("open");
+  };
+  return {"[" + end(lower) + ", " + end(upper) + "]", true};
+}
+
+Cell IntervalCell(const std::optional<std::pair<double, double>>& interval) {
+  if (!interval) return {"–", true};
+  return IntervalCell(interval->first, interval->second);
+}
+
 namespace {
 
 std::string Td(const Cell& cell) {

@@ -41,6 +41,9 @@ Cell NameCell(E value) {
 }
 // A list of names joined by ", ".
 Cell ListCell(const std::vector<std::string>& items);
+// "[a, b]", an end that is not a number "open"; "–" without an interval.
+Cell IntervalCell(std::optional<double> lower, std::optional<double> upper);
+Cell IntervalCell(const std::optional<std::pair<double, double>>& interval);
 
 using FactRows = std::vector<std::pair<std::string, Cell>>;
 
