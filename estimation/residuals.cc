@@ -34,13 +34,18 @@ int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& 
   for (int i = 1; i < kNumDofs; ++i) {
     if (std::abs(mode.shape[i]) > std::abs(mode.shape[model_largest])) model_largest = i;
   }
+  // Where the model's largest component is not measured, the convention
+  // took an unmeasured phase: the model's rule is the only one to follow.
   int data_largest = -1;
+  bool largest_measured = false;
   double v_largest = 0;
   for (const auto& [dof, v] : measured) {
     if (std::abs(v) > v_largest) v_largest = std::abs(v), data_largest = static_cast<int>(dof);
+    largest_measured |= static_cast<int>(dof) == model_largest;
   }
-  if (data_largest >= 0 && std::abs(mode.shape[data_largest]) >=
-                               kShapeReferenceShare * std::abs(mode.shape[model_largest])) {
+  if (largest_measured && data_largest >= 0 &&
+      std::abs(mode.shape[data_largest]) >=
+          kShapeReferenceShare * std::abs(mode.shape[model_largest])) {
     return data_largest;
   }
   return model_largest;

@@ -72,9 +72,10 @@ RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
 // contract's convention the phase removed is that of the measured shape's
 // largest component, the one the convention made real when it was measured,
 // unless the model's magnitude there is below kShapeReferenceShare of its
-// largest (ShapeReference). The model's own largest component would flip
-// the real part wherever two of its components tie: a step in the residuals
-// at which every fit stalls.
+// largest or the model's largest component is not measured (then the
+// measured shape's reference was not measured either: ShapeReference). The
+// model's own largest component would flip the real part wherever two of
+// its components tie: a step in the residuals at which every fit stalls.
 RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention,
                                 const std::vector<std::pair<Dof, double>>& measured);
 RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention convention,

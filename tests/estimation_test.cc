@@ -573,6 +573,31 @@ Dataset ShapeTakesAnotherLabelsMode() {
   return d;
 }
 
+// docs/conventions.md §2: the phase a model shape is compared in is the
+// measured shape's largest component's, which the convention made real,
+// unless the measured shape lacks the model's largest component (its
+// reference was then not measured) or the model is small there.
+TEST(PairingTest, AShapeIsComparedInThePhaseTheMeasurementWasMadeIn) {
+  Mode m;
+  m.label = ModeLabel::kLongitudinal;
+  m.shape.setZero();
+  m.shape[static_cast<int>(Dof::kXa)] = 1.0;  // the model's largest: the hub
+  m.shape[static_cast<int>(Dof::kXb)] = std::polar(0.8, 0.5);
+  m.shape[static_cast<int>(Dof::kZb)] = std::polar(0.3, -1.0);
+  const std::vector<std::pair<Dof, double>> belt = {{Dof::kXb, 1.0}, {Dof::kZb, 0.1}};
+  const std::vector<std::pair<Dof, double>> all = {
+      {Dof::kXa, 0.7}, {Dof::kXb, 1.0}, {Dof::kZb, 0.1}};
+  const std::vector<std::pair<Dof, double>> small = {{Dof::kXa, 0.2}, {Dof::kZb, 1.0}};
+  EXPECT_EQ(ShapeReference(m, belt), static_cast<int>(Dof::kXa));
+  EXPECT_EQ(ShapeReference(m, all), static_cast<int>(Dof::kXb));
+  EXPECT_EQ(ShapeReference(m, small), static_cast<int>(Dof::kXa));  // |z_b| = 0.3 < 0.5
+  // In the measured phase, x_b is real: 0.8; in the hub's, Re(0.8 e^0.5i).
+  EXPECT_NEAR(ComparableShape(m, ShapeConvention::kContract, all)[static_cast<int>(Dof::kXb)], 0.8,
+              1e-12);
+  EXPECT_NEAR(ComparableShape(m, ShapeConvention::kContract, belt)[static_cast<int>(Dof::kXb)],
+              0.8 * std::cos(0.5), 1e-12);
+}
+
 TEST(PairingTest, StaysOneToOneWhenAShapeTakesTheModeOfAnotherLabel) {
   const Dataset d = ShapeTakesAnotherLabelsMode();
   Status status;

@@ -475,8 +475,6 @@ TEST(HtmlReportTest, IdentifyHeadsThePageWithItsWarnings) {
   EXPECT_EQ(none.html.find("<h2>Warnings</h2>"), std::string::npos);
 }
 
-// Table 1's fit breaks rules of docs/plausibility.md: each flag is listed
-// before the modes; a fit within every range says so.
 // The interval shown is the report's interval_95, symmetric in the
 // coordinate fitted: value x exp(+-1.96 std/value) for a positive parameter
 // (fitted in its log), value +- 1.96 std for k_xy (lug_coupling, fitted in
@@ -537,6 +535,8 @@ TEST(HtmlReportTest, DiagnoseThresholdsAreTheReportsAtItsLevel) {
   }
 }
 
+// Table 1's fit breaks rules of docs/plausibility.md: each flag is listed
+// before the modes; a fit within every range says so.
 TEST(HtmlReportTest, IdentifyListsThePlausibilityFlags) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = IdentifyPaper();

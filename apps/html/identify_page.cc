@@ -122,9 +122,10 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
   std::string role = q.free ? "free" : "fixed";
   if (q.tied_to) role = std::string("tied to ") + ToString(*q.tied_to);
   // The report's interval, drawn relative to the value where both ends are
-  // positive (a log axis).
+  // positive (a log axis); a positive parameter's lower end may underflow to 0.
   const auto& interval = q.interval_95;
-  if (q.free && interval && q.value > 0 && interval->first >= 0) {
+  const bool positive = Info(q.param()).domain == Domain::kPositive;
+  if (q.free && interval && q.value > 0 && (positive || interval->first > 0)) {
     const double low = interval->first / q.value, high = interval->second / q.value;
     if (low < 1 / kClipFactor || high > kClipFactor) intervals->clipped.push_back(name);
     intervals->names.push_back(name);
