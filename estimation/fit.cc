@@ -31,28 +31,47 @@ class HistoryCallback : public ceres::IterationCallback {
   LocalFit* fit_;
 };
 
-// Stops in statistical units (issue 21): once the full Gauss-Newton step
-// from the current point (the pseudo-inverse of the Jacobian, coordinates on
-// a bound and a profile's fixed one held) promises less than `stop` in chi-square. It is checked, at
-// the price of one Jacobian, only after a successful step that gained less
-// than `stop` itself (and then at most every kCheckEvery iterations). Then no step can move chi-square by a visible fraction
-// of one unit, so neither an estimate nor its interval moves visibly.
+// Stops in statistical units (issue 21), by either of two rules:
+// - the full Gauss-Newton step from the current point (the pseudo-inverse of
+//   the Jacobian, coordinates on a bound and a profile's fixed one held)
+//   promises less than `stop` in chi-square. It is checked, at the price of
+//   one Jacobian, only after a successful step that gained less than `stop`
+//   itself (and then at most every kCheckEvery iterations);
+// - the gains of the last kShrinking successful steps shrink geometrically
+//   (each at most kShrink times the one before) and their tail, gain r/(1-r),
+//   is below `stop`: the crawl to a kink of the cost (a label or pairing that
+//   changes), where Gauss-Newton keeps promising what no step delivers.
+// Then no step can move chi-square by a visible fraction of one unit, so
+// neither an estimate nor its interval moves visibly.
 class StatisticalStop : public ceres::IterationCallback {
  public:
   StatisticalStop(const ModalResiduals& residuals, const Eigen::VectorXd& x, const Box& box,
                   int fixed, double stop)
       : residuals_(residuals), x_(x), box_(box), fixed_(fixed), stop_(stop) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    if (s.iteration == 0 || !s.step_is_successful || !(2 * s.cost_change < stop_) ||
-        s.iteration < next_check_) {
-      return ceres::SOLVER_CONTINUE;
-    }
+    if (s.iteration == 0 || !s.step_is_successful) return ceres::SOLVER_CONTINUE;
+    gains_.push_back(2 * s.cost_change);
+    if (GeometricTail() < stop_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    if (!(gains_.back() < stop_) || s.iteration < next_check_) return ceres::SOLVER_CONTINUE;
     next_check_ = s.iteration + kCheckEvery;
     return GaussNewtonGain() < stop_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
                                      : ceres::SOLVER_CONTINUE;
   }
 
  private:
+  // What the last gains promise in all, if they keep shrinking at their
+  // slowest recent rate; infinite unless they shrink geometrically.
+  double GeometricTail() const {
+    const int n = static_cast<int>(gains_.size());
+    if (n < kShrinking + 1) return kInf;
+    double r = 0;
+    for (int k = n - kShrinking; k < n; ++k) {
+      if (!(gains_[k] >= 0 && gains_[k] <= kShrink * gains_[k - 1])) return kInf;
+      r = std::max(r, gains_[k] / gains_[k - 1]);
+    }
+    return gains_.back() * r / (1 - r);
+  }
+
   // ||r||^2 - ||r + J dx||^2 for the least-squares step dx.
   double GaussNewtonGain() const {
     Eigen::MatrixXd J;
@@ -78,7 +97,10 @@ class StatisticalStop : public ceres::IterationCallback {
   // While a crawl keeps promising more, the check is repeated every few
   // iterations, not at each: it costs a Jacobian.
   static constexpr int kCheckEvery = 4;
+  static constexpr int kShrinking = 3;
+  static constexpr double kShrink = 0.8;
   int next_check_ = 0;
+  std::vector<double> gains_;  // chi-square gained by each successful step
 };
 
 LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,

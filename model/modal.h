@@ -6,6 +6,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,14 +90,28 @@ ModalSolution SolveModes(const MechanicalSystem& system,
 
 // The modes at `speed` of the systems assemble(v), labelled by continuation
 // from standstill: each step in speed pairs modes by shape (MAC) and keeps
-// each eigenvalue nearer its predecessor than to the predecessor's
-// neighbours, halving the step until it does (docs/rolling.md §5).
+// each eigenvalue nearer its prediction (linear in speed from the two steps
+// before) than to the predictions of its neighbours, quartering the step
+// until it does (docs/rolling.md §5).
 // `standing` is SolveModes(assemble(0)). With `assemble_jets` the modes at
-// `speed` carry their derivatives.
+// `speed` carry their derivatives. `forced`, if given, says whether a step of
+// the finest size took the assignment by shape as it is.
 ModalSolution SolveRolling(
     const std::function<MechanicalSystem(double)>& assemble, double speed,
     ModalSolution standing,
-    const std::function<BasicSystem<ParameterJet>(double)>& assemble_jets = nullptr);
+    const std::function<BasicSystem<ParameterJet>(double)>& assemble_jets = nullptr,
+    bool* forced = nullptr);
+
+// The modes of `system` labelled as those of `near`, the solution of a nearby
+// system at the same speed, where one step of SolveRolling's strict rule
+// joins them (docs/rolling.md §5); nullopt where it does not.
+std::optional<ModalSolution> SolveNear(const ModalSolution& near, const MechanicalSystem& system,
+                                       const BasicSystem<ParameterJet>* jets = nullptr);
+
+// Whether `at`'s labels are those one strict step carries from `near`, the
+// modes of a nearby system at the same speed (at standstill, where labels are
+// by energy, two nearby points can label a pair of modes differently).
+bool SameLabelsNear(const ModalSolution& near, const ModalSolution& at);
 
 }  // namespace ringid
 

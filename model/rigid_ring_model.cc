@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 
 namespace ringid {
@@ -29,6 +30,19 @@ void AddRolling(const T& c_bx, const T& c_bz, const T& c_bgamma, const T& c_bpsi
   const T spin = s->M()(static_cast<int>(Dof::kThetaB), static_cast<int>(Dof::kThetaB));
   s->AddVelocityCoupling(Dof::kGammaB, Dof::kPsiB, spin * omega);
   s->AddVelocityCoupling(Dof::kPsiB, Dof::kGammaB, -spin * omega);
+}
+
+// p with every value rounded to `bits` bits of mantissa: nearby points share
+// it, and it depends on p alone (docs/rolling.md §5).
+Parameters Anchor(const Parameters& p, int bits) {
+  Parameters a = p;
+  for (int i = 0; i < kNumParams; ++i) {
+    if (!std::isfinite(p[ParamAt(i)])) continue;  // unset: NaN
+    int exponent = 0;
+    const double mantissa = std::frexp(p[ParamAt(i)], &exponent);
+    a[ParamAt(i)] = std::ldexp(std::round(std::ldexp(mantissa, bits)), exponent - bits);
+  }
+  return a;
 }
 
 // Eqs. (12) and (15) as corrected in docs/model.md, then each effect, then
@@ -124,32 +138,58 @@ ModalSolution RigidRingModel::Solve(const Parameters& p, double speed, bool deri
     bad.error = "speed must be finite and not negative";
     return bad;
   }
-  const auto jets = [&](double v) { return Assemble(Seeded(p), v); };
-  if (derivatives && speed == 0) {
-    const BasicSystem<ParameterJet> s = jets(0);
+  if (speed == 0) {
+    if (!derivatives) return Standing(p);
+    const BasicSystem<ParameterJet> s = Assemble(Seeded(p), 0);
     return SolveModes(Assemble(p), &s);
   }
-  ModalSolution standing = standing_.Get(p, [&] { return SolveModes(Assemble(p)); });
-  if (speed == 0) return standing;
-  return SolveRolling([&](double v) { return Assemble(p, v); }, speed, std::move(standing),
-                      derivatives ? std::function<BasicSystem<ParameterJet>(double)>(jets)
-                                  : nullptr);
+  const Parameters anchor = Anchor(p, kAnchorBits);
+  if (std::memcmp(&anchor, &p, sizeof(Parameters)) != 0 &&
+      SameLabelsNear(Standing(anchor), Standing(p))) {
+    // An anchor whose labels a finest step forced is not carried from.
+    const ModalSolution at_anchor = anchors_.Get(anchor, speed, [&] {
+      bool forced = false;
+      ModalSolution s = SolveByContinuation(anchor, speed, false, &forced);
+      if (forced) s.ok = false;
+      return s;
+    });
+    std::optional<BasicSystem<ParameterJet>> jets;
+    if (derivatives) jets = Assemble(Seeded(p), speed);
+    if (std::optional<ModalSolution> near =
+            SolveNear(at_anchor, Assemble(p, speed), jets ? &*jets : nullptr)) {
+      return *std::move(near);
+    }
+  }
+  return SolveByContinuation(p, speed, derivatives);
 }
 
-ModalSolution RigidRingModel::StandingCache::Get(
-    const Parameters& p, const std::function<ModalSolution()>& solve) const {
+ModalSolution RigidRingModel::Standing(const Parameters& p) const {
+  return standing_.Get(p, 0, [&] { return SolveModes(Assemble(p)); });
+}
+
+ModalSolution RigidRingModel::SolveByContinuation(const Parameters& p, double speed,
+                                                  bool derivatives, bool* forced) const {
+  const auto jets = [&](double v) { return Assemble(Seeded(p), v); };
+  return SolveRolling([&](double v) { return Assemble(p, v); }, speed, Standing(p),
+                      derivatives ? std::function<BasicSystem<ParameterJet>(double)>(jets)
+                                  : nullptr,
+                      forced);
+}
+
+ModalSolution RigidRingModel::SolutionCache::Get(
+    const Parameters& p, double speed, const std::function<ModalSolution()>& solve) const {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& [key, solution] : entries_) {
-      if (std::memcmp(&key, &p, sizeof(Parameters)) == 0) return *solution;
+      if (key.speed == speed && std::memcmp(&key.p, &p, sizeof(Parameters)) == 0) return *solution;
     }
   }
   auto solution = std::make_shared<const ModalSolution>(solve());
   std::lock_guard<std::mutex> lock(mutex_);
   if (static_cast<int>(entries_.size()) < kCapacity) {
-    entries_.emplace_back(p, solution);
+    entries_.push_back({Key{p, speed}, solution});
   } else {
-    entries_[next_] = {p, solution};
+    entries_[next_] = {Key{p, speed}, solution};
     next_ = (next_ + 1) % kCapacity;
   }
   return *solution;

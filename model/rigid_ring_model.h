@@ -49,7 +49,10 @@ class RigidRingModel final : public ModalModel {
     return std::make_unique<RigidRingModel>(*this);
   }
   using ModalModel::Solve;
-  // At speed the labels follow the standing ones by continuation.
+  // At speed the labels follow the standing ones by continuation, taken at
+  // p's anchor (each parameter rounded to kAnchorBits bits of mantissa) and
+  // carried to p by one strict step; at p itself where that step fails
+  // (docs/rolling.md §5). Labels are thus a function of p alone.
   ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const override;
   std::vector<Param> parameters() const override;
   const std::vector<const Effect*>& effects() const { return effects_; }
@@ -58,27 +61,42 @@ class RigidRingModel final : public ModalModel {
   RigidRingModel With(const Effect* effect) const;
 
  private:
-  // The standstill modes of the last kCapacity parameter sets. Each condition
-  // of a fit solves the same points (numeric differentiation perturbs the
-  // shared coordinates alike), and a rolling one starts its continuation
-  // from standstill. A copy starts empty; safe across threads.
-  class StandingCache {
+  static constexpr int kAnchorBits = 10;
+
+  // The modes of the last kCapacity (parameters, speed) points solved. Each
+  // condition of a fit solves the same points (numeric differentiation
+  // perturbs the shared coordinates alike), a rolling one starts its
+  // continuation from standstill, and nearby points share an anchor. A copy
+  // starts empty; safe across threads.
+  class SolutionCache {
    public:
-    StandingCache() = default;
-    StandingCache(const StandingCache&) {}
-    StandingCache& operator=(const StandingCache&) { return *this; }
-    ModalSolution Get(const Parameters& p, const std::function<ModalSolution()>& solve) const;
+    SolutionCache() = default;
+    SolutionCache(const SolutionCache&) {}
+    SolutionCache& operator=(const SolutionCache&) { return *this; }
+    ModalSolution Get(const Parameters& p, double speed,
+                      const std::function<ModalSolution()>& solve) const;
 
    private:
+    struct Key {
+      Parameters p;
+      double speed;
+    };
     static constexpr int kCapacity = 64;
     mutable std::mutex mutex_;
-    mutable std::vector<std::pair<Parameters, std::shared_ptr<const ModalSolution>>> entries_;
+    mutable std::vector<std::pair<Key, std::shared_ptr<const ModalSolution>>> entries_;
     mutable int next_ = 0;
   };
 
+  // The modes at standstill, labelled by energy; kept.
+  ModalSolution Standing(const Parameters& p) const;
+  // Continuation from standstill at p itself (SolveRolling).
+  ModalSolution SolveByContinuation(const Parameters& p, double speed, bool derivatives,
+                                    bool* forced = nullptr) const;
+
   std::vector<const Effect*> effects_;
   std::vector<Param> used_;
-  StandingCache standing_;
+  SolutionCache standing_;  // speed 0
+  SolutionCache anchors_;   // rolling, at anchors
 };
 
 }  // namespace ringid

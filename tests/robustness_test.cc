@@ -169,6 +169,27 @@ TEST(StoppingTest, TableOneWithPriorsConvergesWithinTheDefaultIterations) {
   }
 }
 
+// From its initial values this rolling dataset's fit crawls to a kink of the
+// cost (gradient 7 to the end, each gain a fixed fraction of the one before):
+// 67 iterations to Ceres' relative 1e-12 step. The geometric tail of the gains
+// stops it where the rest is below the rule's resolution, at the same cost.
+TEST(StoppingTest, ACrawlToAKinkStopsWhenWhatItsGainsPromiseIsBelowTheResolution) {
+  const Dataset d = Case("newcomer_rolling.json");
+  IdentifyOptions o;
+  o.starts = 1;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  IdentifySummary s, crawled;
+  Identify(RigidRingModel(), d, o, &s);
+  o.stop_chi_square = 0;
+  Identify(RigidRingModel(), d, o, &crawled);
+  ASSERT_TRUE(s.status.ok() && crawled.status.ok());
+  EXPECT_TRUE(s.converged) << s.status.message;
+  EXPECT_NE(s.status.message.find("statistical stopping rule"), std::string::npos)
+      << s.status.message;
+  EXPECT_LT(s.evaluations, crawled.evaluations);
+  EXPECT_NEAR(s.fit.chi_square, crawled.fit.chi_square, 2 * internal::kStopChiSquare);
+}
+
 // The profile bounds move by less than 1 % when the fits inside them stop in
 // chi-square units instead of at 1e-14.
 TEST(StoppingTest, ProfileBoundsDoNotMoveWithTheStoppingRule) {

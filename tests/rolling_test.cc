@@ -4,9 +4,11 @@
 #include <cmath>
 #include <complex>
 #include <map>
+#include <random>
 
 #include <gtest/gtest.h>
 
+#include "datasets/dataset.h"
 #include "model/rigid_ring_model.h"
 #include "tests/test_support.h"
 
@@ -206,6 +208,84 @@ TEST(RollingTest, KeptStandstillModesChangeNoResult) {
       EXPECT_EQ(a.real_roots, b.real_roots);
     }
   }
+}
+
+// Continuation with its predictor and doubling steps, and labels carried
+// from anchors, give the labels of the reference continuation in 3000 equal
+// steps, on scattered starts of a rolling dataset (factor 3 of its initial
+// values), where modes cross, veer and vanish.
+TEST(RollingTest, LabelsAtScatteredPointsAreThoseOfTheReferenceContinuation) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
+      << e.message;
+  const RigidRingModel model;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> factor(-std::log(3.0), std::log(3.0));
+  int compared = 0;
+  for (int n = 0; n < 20; ++n) {
+    for (int c = 1; c < static_cast<int>(d.conditions.size()); ++c) {
+      const double v = d.conditions[c].speed_m_s;
+      Parameters p = InitialParameters(d, c);
+      for (Param q : model.parameters()) {
+        if (p[q] > 0) p[q] *= std::exp(factor(rng));
+      }
+      const ModalSolution s = model.Solve(p, v);
+      if (!s.ok) continue;
+      ++compared;
+      const auto reference = FineContinuation(model, p, v);
+      for (const Mode& m : s.modes) {
+        ASSERT_TRUE(reference.count(m.label)) << LabelName(m.label);
+        EXPECT_LT(std::abs(reference.at(m.label) - m.eigenvalue), 1e-9 * std::abs(m.eigenvalue))
+            << "point " << n << " at " << v << " m/s: " << LabelName(m.label);
+      }
+    }
+  }
+  EXPECT_GE(compared, 30);
+}
+
+// A point's labels at speed come from continuation at its anchor, carried by
+// one step to the point (docs/rolling.md §5). They are those of continuation
+// at the point itself, on scattered starts of a rolling dataset (factor 3 of
+// its initial values) and on neighbours at the numeric derivatives' distance.
+TEST(RollingTest, LabelsCarriedFromAnAnchorAreThoseOfContinuationAtThePoint) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
+      << e.message;
+  const RigidRingModel model;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> factor(-std::log(3.0), std::log(3.0));
+  std::uniform_real_distribution<double> nudge(-1e-3, 1e-3);
+  int compared = 0, carried = 0;
+  for (int n = 0; n < 1500; ++n) {
+    for (int c = 1; c < static_cast<int>(d.conditions.size()); ++c) {
+      const double v = d.conditions[c].speed_m_s;
+      Parameters p = InitialParameters(d, c);
+      for (Param q : model.parameters()) {
+        if (p[q] > 0) p[q] *= std::exp(factor(rng));
+      }
+      Parameters near = p;
+      for (Param q : model.parameters()) near[q] *= 1 + nudge(rng);
+      for (const Parameters& x : {p, near}) {
+        const ModalSolution anchored = model.Solve(x, v);
+        const ModalSolution continued = SolveRolling(
+            [&](double s) { return model.Assemble(x, s); }, v, SolveModes(model.Assemble(x)));
+        ASSERT_EQ(anchored.ok, continued.ok) << anchored.error << continued.error;
+        if (!anchored.ok) continue;
+        ++compared;
+        ASSERT_EQ(anchored.modes.size(), continued.modes.size());
+        bool same = true;
+        for (size_t i = 0; i < anchored.modes.size(); ++i) {
+          EXPECT_EQ(anchored.modes[i].eigenvalue, continued.modes[i].eigenvalue);
+          same = same && anchored.modes[i].label == continued.modes[i].label;
+        }
+        EXPECT_TRUE(same) << "point " << n << " at " << v << " m/s";
+        EXPECT_EQ(anchored.vanished, continued.vanished);
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
 }
 
 }  // namespace
