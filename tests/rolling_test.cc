@@ -210,26 +210,49 @@ TEST(RollingTest, KeptStandstillModesChangeNoResult) {
   }
 }
 
+// Points a fit of a rolling dataset (written as a new user would) visits:
+// its initial values at one condition, each scattered log-uniformly within a
+// factor 3, as the scattered starts are.
+class ScatteredStarts {
+ public:
+  explicit ScatteredStarts(unsigned seed) : rng_(seed) {
+    LoadError e;
+    loaded_ = LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"),
+                          &dataset_, &e);
+    EXPECT_TRUE(loaded_) << e.message;
+  }
+  bool loaded() const { return loaded_; }
+  const Dataset& dataset() const { return dataset_; }
+  Parameters Next(const RigidRingModel& model, int condition) {
+    Parameters p = InitialParameters(dataset_, condition);
+    for (Param q : model.parameters()) {
+      if (p[q] > 0) p[q] *= std::exp(factor_(rng_));
+    }
+    return p;
+  }
+  std::mt19937_64& rng() { return rng_; }
+
+ private:
+  Dataset dataset_;
+  bool loaded_ = false;
+  std::mt19937_64 rng_;
+  std::uniform_real_distribution<double> factor_{-std::log(3.0), std::log(3.0)};
+};
+
 // Continuation with its predictor and doubling steps, and labels carried
 // from anchors, give the labels of the reference continuation in 3000 equal
 // steps, on scattered starts of a rolling dataset (factor 3 of its initial
 // values), where modes cross, veer and vanish.
 TEST(RollingTest, LabelsAtScatteredPointsAreThoseOfTheReferenceContinuation) {
-  Dataset d;
-  LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
-      << e.message;
+  ScatteredStarts starts(11);
+  ASSERT_TRUE(starts.loaded());
+  const Dataset& d = starts.dataset();
   const RigidRingModel model;
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> factor(-std::log(3.0), std::log(3.0));
   int compared = 0;
   for (int n = 0; n < 20; ++n) {
     for (int c = 1; c < static_cast<int>(d.conditions.size()); ++c) {
       const double v = d.conditions[c].speed_m_s;
-      Parameters p = InitialParameters(d, c);
-      for (Param q : model.parameters()) {
-        if (p[q] > 0) p[q] *= std::exp(factor(rng));
-      }
+      const Parameters p = starts.Next(model, c);
       const ModalSolution s = model.Solve(p, v);
       if (!s.ok) continue;
       ++compared;
@@ -249,24 +272,18 @@ TEST(RollingTest, LabelsAtScatteredPointsAreThoseOfTheReferenceContinuation) {
 // at the point itself, on scattered starts of a rolling dataset (factor 3 of
 // its initial values) and on neighbours at the numeric derivatives' distance.
 TEST(RollingTest, LabelsCarriedFromAnAnchorAreThoseOfContinuationAtThePoint) {
-  Dataset d;
-  LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
-      << e.message;
+  ScatteredStarts starts(7);
+  ASSERT_TRUE(starts.loaded());
+  const Dataset& d = starts.dataset();
   const RigidRingModel model;
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> factor(-std::log(3.0), std::log(3.0));
   std::uniform_real_distribution<double> nudge(-1e-3, 1e-3);
-  int compared = 0, carried = 0;
+  int compared = 0;
   for (int n = 0; n < 1500; ++n) {
     for (int c = 1; c < static_cast<int>(d.conditions.size()); ++c) {
       const double v = d.conditions[c].speed_m_s;
-      Parameters p = InitialParameters(d, c);
-      for (Param q : model.parameters()) {
-        if (p[q] > 0) p[q] *= std::exp(factor(rng));
-      }
+      const Parameters p = starts.Next(model, c);
       Parameters near = p;
-      for (Param q : model.parameters()) near[q] *= 1 + nudge(rng);
+      for (Param q : model.parameters()) near[q] *= 1 + nudge(starts.rng());
       for (const Parameters& x : {p, near}) {
         const ModalSolution anchored = model.Solve(x, v);
         const ModalSolution continued = SolveRolling(
