@@ -21,8 +21,9 @@ using ringid::testing::RunResult;
 using ringid::testing::Scratch;
 using ringid::testing::SourcePath;
 
-// Four withheld-effect datasets (one without an effect) in a fresh directory.
-std::string MakeDatasets(const std::string& name) {
+// Four withheld-effect datasets (one without an effect) in a fresh directory,
+// at `speeds` (m/s, one condition each).
+std::string MakeDatasets(const std::string& name, const std::string& speeds = "0") {
   const std::string dir = Scratch(name);
   fs::remove_all(dir);
   fs::create_directories(dir + "/data");
@@ -31,7 +32,7 @@ std::string MakeDatasets(const std::string& name) {
     std::string args = "simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
                        " --set=m_a=15 --seed=" + std::to_string(i + 1) + " --output=" + dir +
                        "/data/case" + std::to_string(i) + ".json --truth=" + dir + "/truth" +
-                       std::to_string(i) + ".json";
+                       std::to_string(i) + ".json --speeds=" + speeds;
     if (*effects[i]) args += std::string(" --effects=") + effects[i] + " --shift=0.05";
     const RunResult r = Ringid(args);
     EXPECT_EQ(r.status, 0) << r.err;
@@ -52,6 +53,21 @@ nlohmann::json Untimed(nlohmann::json j) {
 }
 
 nlohmann::json Load(const std::string& path) { return nlohmann::json::parse(ReadFile(path)); }
+
+// Rolling conditions share the model's kept anchors between threads; what
+// each thread answers is the same.
+TEST(CampaignTest, RollingIdentificationDoesNotDependOnJobs) {
+  const std::string dir = MakeDatasets("rolling_jobs", "0,10,20");
+  for (const char* jobs : {"1", "2"}) {
+    const RunResult r = Ringid("identify --derivatives=analytic --dataset=" + dir +
+                               "/data --output_dir=" + dir + "/out" + jobs + " --jobs=" + jobs);
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "/case" + std::to_string(i) + ".json";
+    EXPECT_EQ(Untimed(Load(dir + "/out1" + name)), Untimed(Load(dir + "/out2" + name))) << name;
+  }
+}
 
 TEST(CampaignTest, DiagnosisDoesNotDependOnJobs) {
   const std::string dir = MakeDatasets("jobs");

@@ -305,5 +305,43 @@ TEST(RollingTest, LabelsCarriedFromAnAnchorAreThoseOfContinuationAtThePoint) {
   EXPECT_GT(compared, 500);
 }
 
+// What a model kept from the points it solved before (standstill modes,
+// anchors) changes nothing it answers: points solved forwards, backwards and
+// each by a fresh model give the same modes bit for bit.
+TEST(RollingTest, RollingModesDoNotDependOnTheOrderOfEvaluation) {
+  ScatteredStarts starts(3);
+  ASSERT_TRUE(starts.loaded());
+  const RigidRingModel model;
+  std::uniform_real_distribution<double> nudge(-1e-3, 1e-3);
+  std::vector<Parameters> points;
+  for (int n = 0; n < 60; ++n) {
+    points.push_back(starts.Next(model, 1));
+    Parameters near = points.back();
+    for (Param q : model.parameters()) near[q] *= 1 + nudge(starts.rng());
+    points.push_back(near);
+  }
+  const double v = starts.dataset().conditions[1].speed_m_s;
+  const RigidRingModel forwards, backwards;
+  std::vector<ModalSolution> a, b(points.size());
+  for (const Parameters& p : points) a.push_back(forwards.Solve(p, v, true));
+  for (size_t i = points.size(); i-- > 0;) b[i] = backwards.Solve(points[i], v, true);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const ModalSolution fresh = RigidRingModel().Solve(points[i], v, true);
+    for (const ModalSolution* s : {&a[i], &b[i]}) {
+      ASSERT_EQ(s->ok, fresh.ok) << i;
+      ASSERT_EQ(s->modes.size(), fresh.modes.size()) << i;
+      for (size_t k = 0; k < fresh.modes.size(); ++k) {
+        EXPECT_EQ(s->modes[k].label, fresh.modes[k].label) << i;
+        EXPECT_EQ(s->modes[k].eigenvalue, fresh.modes[k].eigenvalue) << i;
+        EXPECT_EQ(s->modes[k].shape, fresh.modes[k].shape) << i;
+        ASSERT_EQ(s->modes[k].derivatives != nullptr, fresh.modes[k].derivatives != nullptr);
+        if (fresh.modes[k].derivatives) {
+          EXPECT_EQ(s->modes[k].derivatives->eigenvalue, fresh.modes[k].derivatives->eigenvalue);
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ringid
