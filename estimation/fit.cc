@@ -38,11 +38,13 @@ class HistoryCallback : public ceres::IterationCallback {
 //   one Jacobian, only after a successful step that gained less than `stop`
 //   itself (and then at most every kCheckEvery iterations);
 // - the gains of the last kShrinking successful steps shrink geometrically
-//   (each at most kShrink times the one before) and their tail, gain r/(1-r),
-//   is below `stop`: the crawl to a kink of the cost (a label or pairing that
-//   changes), where Gauss-Newton keeps promising what no step delivers.
-// Then no step can move chi-square by a visible fraction of one unit, so
-// neither an estimate nor its interval moves visibly.
+//   (each at most kShrink times the one before) and their extrapolated tail,
+//   gain r/(1-r) with r their slowest ratio but at least kSlowest (so the last
+//   gain itself is below `stop`), is below `stop`: the crawl to a kink of the
+//   cost (a label or pairing that changes), where Gauss-Newton keeps
+//   promising what no step delivers.
+// Then no step is seen or expected to move chi-square by a visible fraction
+// of one unit, so neither an estimate nor its interval moves visibly.
 class StatisticalStop : public ceres::IterationCallback {
  public:
   StatisticalStop(const ModalResiduals& residuals, const Eigen::VectorXd& x, const Box& box,
@@ -51,22 +53,31 @@ class StatisticalStop : public ceres::IterationCallback {
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (s.iteration == 0 || !s.step_is_successful) return ceres::SOLVER_CONTINUE;
     gains_.push_back(2 * s.cost_change);
-    if (GeometricTail() < stop_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    if (GeometricTail() < stop_) {
+      by_tail_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
     if (!(gains_.back() < stop_) || s.iteration < next_check_) return ceres::SOLVER_CONTINUE;
     next_check_ = s.iteration + kCheckEvery;
     return GaussNewtonGain() < stop_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
                                      : ceres::SOLVER_CONTINUE;
   }
 
+  // Whether the gains' tail stopped the fit (else Gauss-Newton's promise).
+  bool by_tail() const { return by_tail_; }
+
  private:
-  // What the last gains promise in all, if they keep shrinking at their
-  // slowest recent rate; infinite unless they shrink geometrically.
+  // What further steps would gain in all if the gains kept shrinking at
+  // their slowest recent rate (at least kSlowest); infinite unless they
+  // shrink geometrically.
   double GeometricTail() const {
     const int n = static_cast<int>(gains_.size());
     if (n < kShrinking + 1) return kInf;
-    double r = 0;
+    double r = kSlowest;
     for (int k = n - kShrinking; k < n; ++k) {
-      if (!(gains_[k] >= 0 && gains_[k] <= kShrink * gains_[k - 1])) return kInf;
+      if (!(gains_[k - 1] > 0 && gains_[k] >= 0 && gains_[k] <= kShrink * gains_[k - 1])) {
+        return kInf;
+      }
       r = std::max(r, gains_[k] / gains_[k - 1]);
     }
     return gains_.back() * r / (1 - r);
@@ -99,7 +110,9 @@ class StatisticalStop : public ceres::IterationCallback {
   static constexpr int kCheckEvery = 4;
   static constexpr int kShrinking = 3;
   static constexpr double kShrink = 0.8;
+  static constexpr double kSlowest = 0.5;
   int next_check_ = 0;
+  bool by_tail_ = false;
   std::vector<double> gains_;  // chi-square gained by each successful step
 };
 
@@ -162,9 +175,12 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   fit.converged = summary.termination_type == ceres::CONVERGENCE ||
                   summary.termination_type == ceres::USER_SUCCESS;
   if (summary.termination_type == ceres::USER_SUCCESS) {
-    char words[120];
+    char words[200];
     std::snprintf(words, sizeof words,
-                  "chi-square converged: no step changes it by %g (statistical stopping rule)",
+                  stop.by_tail() ? "chi-square converged: its gains shrink geometrically and "
+                                   "promise less than %g in all (statistical stopping rule)"
+                                 : "chi-square converged: no step changes it by %g "
+                                   "(statistical stopping rule)",
                   stop_chi_square);
     fit.message = words;
   } else {

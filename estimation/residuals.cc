@@ -43,7 +43,7 @@ int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& 
     if (std::abs(v) > v_largest) v_largest = std::abs(v), data_largest = static_cast<int>(dof);
     largest_measured |= static_cast<int>(dof) == model_largest;
   }
-  if (largest_measured && data_largest >= 0 &&
+  if (largest_measured && data_largest >= 0 && std::abs(mode.shape[data_largest]) > 0 &&
       std::abs(mode.shape[data_largest]) >=
           kShapeReferenceShare * std::abs(mode.shape[model_largest])) {
     return data_largest;
@@ -100,7 +100,8 @@ double Mac(const RealShapeVector& model,
     mu += u * v;
   }
   if (!(mm > 0) || !(uu > 0)) return 0;
-  return mu * mu / (mm * uu);
+  const double mac = mu * mu / (mm * uu);
+  return std::isfinite(mac) ? mac : 0;  // components beyond the range of their squares
 }
 
 namespace internal {
@@ -196,6 +197,7 @@ bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
       }
     }
     const std::vector<int> pick = AssignMaxScore(score);
+    if (!Assigned(pick, c, why)) return false;
     for (size_t a = 0; a < shaped.size(); ++a) (*pairs)[shaped[a]] = pick[a];
   }
   // ... and the label decides the rest, one to one: a label whose model mode
@@ -238,8 +240,16 @@ bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
     }
   }
   const std::vector<int> pick = AssignMaxScore(score);
+  if (!Assigned(pick, c, why)) return false;
   for (size_t a = 0; a < left.size(); ++a) (*pairs)[left[a]] = free[pick[a]];
   return true;
+}
+
+bool ModalResiduals::Assigned(const std::vector<int>& pick, int c, std::string* why) const {
+  if (std::find(pick.begin(), pick.end(), -1) == pick.end()) return true;
+  *why = "the measured modes of condition " + dataset_.conditions[c].name +
+         " cannot be paired one to one with the model's (a score is not finite)";
+  return false;
 }
 
 namespace {

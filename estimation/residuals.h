@@ -188,6 +188,8 @@ class ModalResiduals {
   // Pairs the measured modes of condition c with `solution`'s.
   bool PairCondition(int c, const ModalSolution& solution, std::vector<int>* pairs,
                      std::string* why) const;
+  // Whether an assignment paired every row; else says so in `why`.
+  bool Assigned(const std::vector<int>& pick, int c, std::string* why) const;
 
   std::vector<Slot> slots_;
   std::vector<PriorTerm> priors_;

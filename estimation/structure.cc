@@ -250,6 +250,7 @@ std::vector<KnownDependence> FindKnownDependence(const ModalResiduals& residuals
     // Freed, q's unit vector projected on the null space: the free direction
     // that moves q most, orthogonal to every one that leaves q alone.
     const Eigen::MatrixXd null = NullSpace(g, Columns(n, {n + j}, conditions, total));
+    if (null.cols() == 0) continue;  // the data fix every direction
     const Eigen::VectorXd v = null * null.row(n).transpose();
     if (!(v[n] > 1e-6)) continue;  // |component|^2: freeing q adds no direction
     for (int i = 0; i < n; ++i) {

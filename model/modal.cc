@@ -610,12 +610,13 @@ double ComplexMac(const ShapeVector& a, const ShapeVector& b) {
 enum class Rule {
   kShape,  // as it is
   // A step in speed: every pair looks alike (MAC >= 0.8) and each eigenvalue
-  // moved less than half the distance from its predecessor to that one's
-  // nearest neighbour of shared support.
+  // lies less than half the distance from its prediction (`expected`, else
+  // its predecessor) to the nearest other prediction of shared support.
   kStep,
-  // A nearby point at the same speed: every pair looks alike (MAC >= 0.9),
-  // and each other predecessor of shared support is told apart by shape
-  // (MAC < 0.5) or lies farther from the new eigenvalue than the pair's own.
+  // A nearby point at the same speed, with as many modes: every pair looks
+  // alike (MAC >= 0.9), and each other predecessor of shared support is told
+  // apart by shape (MAC < 0.5) or lies farther from the new eigenvalue than
+  // the pair's own. With roughly orthogonal shapes the first clause decides.
   kNear,
 };
 
@@ -627,6 +628,7 @@ bool Follow(const ModalSolution& prev, ModalSolution* next, Rule rule,
   const int np = static_cast<int>(prev.modes.size());
   const int nn = static_cast<int>(next->modes.size());
   if (np == 0 || nn == 0) return nn == np;
+  if (rule == Rule::kNear && nn != np) return false;  // a pair turned real or back
   Eigen::MatrixXd mac(nn, np);
   for (int i = 0; i < nn; ++i) {
     for (int j = 0; j < np; ++j) mac(i, j) = ComplexMac(next->modes[i].shape, prev.modes[j].shape);

@@ -103,12 +103,13 @@ ModalSolution SolveRolling(
     bool* forced = nullptr);
 
 // The modes of `system` labelled as those of `near`, the solution of a nearby
-// system at the same speed, where one step of SolveRolling's strict rule
-// joins them (docs/rolling.md §5); nullopt where it does not.
+// system at the same speed, where Follow's rule for nearby points joins them
+// (MAC >= 0.9 one to one, as many modes; docs/rolling.md §5); nullopt where
+// it does not.
 std::optional<ModalSolution> SolveNear(const ModalSolution& near, const MechanicalSystem& system,
                                        const BasicSystem<ParameterJet>* jets = nullptr);
 
-// Whether `at`'s labels are those one strict step carries from `near`, the
+// Whether `at`'s labels are those the same rule carries from `near`, the
 // modes of a nearby system at the same speed (at standstill, where labels are
 // by energy, two nearby points can label a pair of modes differently).
 bool SameLabelsNear(const ModalSolution& near, const ModalSolution& at);

@@ -37,7 +37,7 @@ void AddRolling(const T& c_bx, const T& c_bz, const T& c_bgamma, const T& c_bpsi
 Parameters Anchor(const Parameters& p, int bits) {
   Parameters a = p;
   for (int i = 0; i < kNumParams; ++i) {
-    if (!std::isfinite(p[ParamAt(i)])) continue;  // unset: NaN
+    if (!std::isfinite(p[ParamAt(i)])) continue;  // unset (NaN), or refused by Solve
     int exponent = 0;
     const double mantissa = std::frexp(p[ParamAt(i)], &exponent);
     a[ParamAt(i)] = std::ldexp(std::round(std::ldexp(mantissa, bits)), exponent - bits);

@@ -38,12 +38,17 @@ for target in $targets; do
   [ "$target" = tir ] && cp datasets/examples/*.tir "$work"/
   echo "fuzzing $target for ${seconds}s" >&2
   # The last status line carries the executions reached over all workers.
+  log=$build/fuzz-$target.log
   ./$build/tests/fuzz/${target}_fuzzer "$work" -fork="$(nproc)" -max_total_time="$seconds" \
-    -max_len=8192 -timeout=10 -rss_limit_mb=2048 2>&1 \
-    | grep -E "^#[0-9]+:|ERROR|SUMMARY|crash-|timeout-|oom-" | tail -3 || true
-  # libFuzzer leaves crash-*/timeout-*/oom-* files behind on a finding.
-  if ls crash-* timeout-* oom-* leak-* > /dev/null 2>&1; then
-    echo "fuzz finding in $target: $(ls crash-* timeout-* oom-* leak-* 2>/dev/null)" >&2
+    -max_len=8192 -timeout=10 -rss_limit_mb=2048 > "$log" 2>&1 || true
+  grep -E "^#[0-9]+:|ERROR|SUMMARY|crash-|timeout-|oom-" "$log" | tail -3 || true
+  # A finding: libFuzzer says where it wrote the input (in fork mode the
+  # crash-*/timeout-*/oom-* file can appear only after the parent returns,
+  # so the log, not the directory, is what is read).
+  if grep -qE "Test unit written to|^SUMMARY: |ERROR: libFuzzer" "$log" ||
+     ls crash-* timeout-* oom-* leak-* > /dev/null 2>&1; then
+    echo "fuzz finding in $target (the input is in tests/fuzz/corpus after a fix):" >&2
+    grep -E "Test unit written to|^SUMMARY: |runtime error" "$log" | head -5 >&2
     exit 1
   fi
 done

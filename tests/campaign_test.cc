@@ -54,8 +54,8 @@ nlohmann::json Untimed(nlohmann::json j) {
 
 nlohmann::json Load(const std::string& path) { return nlohmann::json::parse(ReadFile(path)); }
 
-// Rolling conditions share the model's kept anchors between threads; what
-// each thread answers is the same.
+// Rolling labels come from anchors each thread's model keeps for itself
+// (docs/rolling.md §5); what the threads answer is what one thread does.
 TEST(CampaignTest, RollingIdentificationDoesNotDependOnJobs) {
   const std::string dir = MakeDatasets("rolling_jobs", "0,10,20");
   for (const char* jobs : {"1", "2"}) {
