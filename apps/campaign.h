@@ -5,9 +5,13 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/progress.h"
+#include "datasets/dataset.h"
+#include "model/rigid_ring_model.h"
+#include "report/report.h"
 
 namespace ringid {
 
@@ -32,6 +36,35 @@ bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
 // Runs work(i) for i in [0, n) on `jobs` threads (work must only touch
 // item i), ticking `progress` as items finish.
 void ParallelFor(int n, int jobs, Progress* progress, const std::function<void(int)>& work);
+
+// One dataset's share of a campaign: its report and its row of the summary.
+struct CampaignItem {
+  std::string report;
+  CampaignRow row;
+};
+using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
+
+// A campaign as the command line asks for it.
+struct CampaignRequest {
+  ReportKind command = ReportKind::kIdentify;
+  std::string datasets;    // --dataset: FILE,DIR,...
+  std::string output_dir;  // --output_dir
+  std::string shard = "0/1";
+  int jobs = 1;
+  // Applied to each dataset as it is loaded (--fix); false with one line.
+  std::function<bool(Dataset*, std::string*)> prepare;
+  // The summary's provenance, given its inputs as (flag, path).
+  std::function<Provenance(const std::vector<std::pair<std::string, std::string>>&)> provenance;
+};
+
+// Runs `work` on every dataset of the request's shard, `jobs` at once, each
+// report written as its dataset finishes, then the summary (campaign.json, or
+// campaign.I-of-N.json for a shard) and its table on standard output. Every
+// input is loaded and checked before anything runs: a bad one, or a dataset
+// `model` cannot start on, is exit status 2 with `error` set to one line and
+// nothing written. Otherwise 0 when every analysis succeeded, else 1.
+int RunCampaign(const CampaignRequest& request, const ModalModel& model,
+                const CampaignWork& work, std::string* error);
 
 }  // namespace ringid
 

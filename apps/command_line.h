@@ -11,6 +11,11 @@
 
 namespace ringid {
 
+// The exit status of every command.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // the analysis ran but failed numerically
+inline constexpr int kExitUsage = 2;    // bad input: file, field or flag
+
 struct Command {
   std::string name;
   std::string usage;    // the flags it cannot run without, e.g. "--dataset=FILE"

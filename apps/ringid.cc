@@ -95,10 +95,6 @@ namespace ringid {
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;   // the analysis ran but failed numerically
-constexpr int kExitUsage = 2;     // bad input: file, field or flag
-
 int Usage(const std::string& line) {
   std::fprintf(stderr, "ringid: %s\n", line.c_str());
   return kExitUsage;
@@ -369,115 +365,18 @@ bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
   return ApplyFix(d, error);
 }
 
-// One dataset's share of a campaign: its report and its row of the summary.
-struct CampaignItem {
-  std::string report;
-  CampaignRow row;
-};
-using CampaignWork = std::function<CampaignItem(const Dataset&, const std::string& file)>;
-
-// What an interrupted campaign kept: the reports finished whole (each is
-// written as its dataset finishes), and whether the summary was written.
-std::string CampaignKept(const std::vector<std::string>& written,
-                         const std::vector<std::string>& reports, const std::string& summary) {
-  std::string names;
-  int finished = 0;
-  bool summarised = false;
-  for (const std::string& w : written) {
-    if (w == summary) {
-      summarised = true;
-    } else if (std::find(reports.begin(), reports.end(), w) != reports.end()) {
-      names += (finished++ ? ", " : "") + std::filesystem::path(w).filename().string();
-    }
-  }
-  const std::string dir = std::filesystem::path(summary).parent_path().string();
-  const std::string of = " of " + std::to_string(reports.size()) + " report(s)";
-  if (finished == 0) return "none" + of + " finished; nothing written in " + dir;
-  return "kept the " + std::to_string(finished) + of + " finished whole, in " + dir + ": " +
-         names + "; " + std::filesystem::path(summary).filename().string() +
-         (summarised ? " written" : " not written");
-}
-
-// --output_dir: every dataset of --dataset (this shard's share), --jobs at
-// once. Every input is loaded and checked before anything runs, so a bad one
-// stops the campaign with exit 2 and nothing written, as does a dataset
-// `model` cannot start on.
-int RunCampaign(int argc, char** argv, ReportKind command, const ModalModel& model,
-                const CampaignWork& work) {
-  std::string error;
-  Shard shard;
+// --output_dir: a campaign of `command` over --dataset (apps/campaign.h).
+int Campaign(int argc, char** argv, ReportKind command, const ModalModel& model,
+             const CampaignWork& work) {
   if (!FLAGS_output.empty()) return Usage("--output: a campaign writes to --output_dir");
-  if (FLAGS_jobs < 1) return Usage("--jobs: must be at least 1");
-  if (!ParseShard(FLAGS_shard, &shard, &error)) return Usage(error);
-  std::vector<std::string> files, reports;
-  if (!ListDatasets(FLAGS_dataset, shard, &files, &error)) return Usage(error);
-  if (!ReportNames(files, FLAGS_output_dir, &reports, &error)) return Usage(error);
-  for (size_t i = 0; i < reports.size(); ++i) {  // --output_dir=the datasets' own directory
-    for (const std::string& f : files) {
-      if (SameFile(reports[i], f)) {
-        return Usage("--output_dir: " + reports[i] + ", the report of " + files[i] +
-                     ", would overwrite the dataset " + f);
-      }
-    }
-  }
-  const std::string summary_path =
-      (std::filesystem::path(FLAGS_output_dir) /
-       (shard.count == 1 ? std::string("campaign.json")
-                         : "campaign." + std::to_string(shard.index) + "-of-" +
-                               std::to_string(shard.count) + ".json")).string();
-  std::vector<Dataset> datasets(files.size());
-  for (size_t i = 0; i < files.size(); ++i) {
-    LoadError load;
-    if (!LoadDataset(files[i], &datasets[i], &load)) return Usage(load.OneLine());
-    if (!ApplyFix(&datasets[i], &error)) return Usage(error);
-    Status status;  // a dataset the model cannot start on
-    if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
-      return Usage(files[i] + ": " + status.message);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Usage("--output_dir: " + FLAGS_output_dir + ": " + ec.message());
-  for (const std::string& out : reports) {
-    if (!CanWrite(out, &error)) return Usage("--output_dir: " + error);
-  }
-  if (!CanWrite(summary_path, &error)) return Usage("--output_dir: " + error);
-  const int n = static_cast<int>(files.size());
-  const KeptNote kept([&](const std::vector<std::string>& written) {
-    return CampaignKept(written, reports, summary_path);
-  });
-  std::vector<CampaignItem> items(n);
-  std::vector<std::string> write_errors(n);
-  const auto t0 = std::chrono::steady_clock::now();
-  {
-    Progress progress(ToString(command), n);
-    ParallelFor(n, FLAGS_jobs, &progress, [&](int i) {
-      items[i] = work(datasets[i], files[i]);
-      WriteFileAtomically(reports[i], items[i].report, &write_errors[i]);
-    });
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (const std::string& e : write_errors) {
-    if (!e.empty()) return Usage(e);
-  }
-  std::vector<std::pair<std::string, std::string>> inputs;
-  for (const std::string& f : files) inputs.emplace_back("dataset", f);
-  CampaignReport summary{MakeProvenance(argc, argv, inputs, FLAGS_seed),
-                         {command, FLAGS_shard, FLAGS_jobs, seconds, {}}};
-  bool all_ok = true;
-  for (int i = 0; i < n; ++i) {
-    items[i].row.dataset = files[i];
-    items[i].row.report_file = reports[i];
-    all_ok &= items[i].row.status.ok();
-    summary.body.datasets.push_back(items[i].row);
-  }
-  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; reports in %s\n",
-              CampaignTable(summary.body).c_str(), n, FLAGS_jobs, seconds,
-              FLAGS_output_dir.c_str());
-  const int rc = Write(summary_path, ReportText(summary));
-  if (rc != kExitOk) return rc;
-  return all_ok ? kExitOk : kExitFailure;
+  CampaignRequest request{command, FLAGS_dataset, FLAGS_output_dir, FLAGS_shard, FLAGS_jobs};
+  request.prepare = ApplyFix;
+  request.provenance = [&](const std::vector<std::pair<std::string, std::string>>& inputs) {
+    return MakeProvenance(argc, argv, inputs, FLAGS_seed);
+  };
+  std::string error;
+  const int rc = RunCampaign(request, model, work, &error);
+  return rc == kExitUsage ? Usage(error) : rc;
 }
 
 // The end of an analysis of one dataset: bad input is exit 2; otherwise its
@@ -501,7 +400,7 @@ int IdentifyCommand(int argc, char** argv) {
     if (!ReadFitOptions(&o, &effects, &error)) return Usage(error);
     if (!FLAGS_save_parameters.empty()) return Usage("--save_parameters: not in a campaign");
     const RigidRingModel model(effects);
-    return RunCampaign(
+    return Campaign(
         argc, argv, ReportKind::kIdentify, model,
         [&](const Dataset& d, const std::string& file) {
           IdentifySummary s;
@@ -774,7 +673,7 @@ int DiagnoseCommand(int argc, char** argv) {
   if (!FLAGS_output_dir.empty()) {
     if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
     const RigidRingModel baseline(effects);
-    return RunCampaign(
+    return Campaign(
         argc, argv, ReportKind::kDiagnose, baseline,
         [&](const Dataset& d, const std::string& file) {
           DiagnosisReport r;
