@@ -493,44 +493,6 @@ bool ParseNumberList(const char* name, const std::string& text, bool positive, c
   }
 }
 
-// `v` as short as it reads back exactly, in fixed notation where that is
-// exact (6, 12.5, 3000), for condition names: letters, digits, '-', '.'.
-std::string CompactNumber(double v) {
-  char buffer[64];
-  for (int digits = 0; digits <= 17; ++digits) {
-    const int n = std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
-    if (n < static_cast<int>(sizeof buffer) && std::strtod(buffer, nullptr) == v) return buffer;
-  }
-  for (int digits = 1; digits <= 17; ++digits) {  // tiny or huge: 3e-300, 1e+300
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
-    if (std::strtod(buffer, nullptr) == v) break;
-  }
-  std::string text = buffer;
-  text.erase(std::remove(text.begin(), text.end(), '+'), text.end());
-  return text;
-}
-
-// The conditions of --speeds x --loads (docs/conventions.md §7): "standing"
-// at 0 m/s, "drum_V" otherwise, "_FN" appended for each load, which is then
-// the condition's known F_cz0.
-std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
-                                           const std::vector<double>& loads) {
-  std::vector<Condition> conditions;
-  for (double v : speeds) {
-    Condition c;
-    c.name = v == 0 ? "standing" : "drum_" + CompactNumber(v);
-    c.speed_m_s = v;
-    if (loads.empty()) conditions.push_back(c);
-    for (double f : loads) {
-      Condition with_load = c;
-      with_load.name += "_" + CompactNumber(f) + "N";
-      with_load.known[Param::F_cz0] = f;
-      conditions.push_back(with_load);
-    }
-  }
-  return conditions;
-}
-
 // simulate: every effect of --effects has a size (non-zero, from --set, the
 // parameter file or --shift), and every effect size in --set has its effect
 // in --effects. Either alone would simulate the baseline while the truth file
@@ -617,18 +579,10 @@ int SimulateCommand(int argc, char** argv) {
       return kExitFailure;
     }
   }
-  Dataset d;
+  std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
+  Dataset d = PlanSimulation(truth, FLAGS_prior_spread, speeds, loads, &rng);
   d.name = std::filesystem::path(FLAGS_output).stem().string();
   d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
-  std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
-  SetEngineerPriors(truth, FLAGS_prior_spread, &rng, &d);
-  d.conditions = SimulatedConditions(speeds, loads);
-  if (!loads.empty()) {  // the load is known in each condition, not shared
-    d.known.erase(Param::F_cz0);
-    d.initial.erase(Param::F_cz0);
-    d.per_condition = {Param::F_cz0};
-  }
-  if (d.conditions.size() > 1 || !loads.empty()) d.format = 2;
   SimulateOptions so;
   so.frequency_noise = FLAGS_frequency_noise;
   so.damping_noise = FLAGS_damping_noise;

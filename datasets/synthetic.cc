@@ -1,6 +1,8 @@
 #include "datasets/synthetic.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstdio>
 #include <cmath>
 
 namespace ringid {
@@ -129,6 +131,61 @@ double ValueForShift(const Parameters& truth, const Effect& effect, Param p, dou
     (LargestShift(truth, effect, p, mid) < target ? lo : hi) = mid;
   }
   return std::sqrt(lo * hi);
+}
+
+namespace {
+
+// `v` as short as it reads back exactly, in fixed notation where that is
+// exact (6, 12.5, 3000), for condition names: letters, digits, '-', '.'.
+std::string CompactNumber(double v) {
+  char buffer[64];
+  for (int digits = 0; digits <= 17; ++digits) {
+    const int n = std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
+    if (n < static_cast<int>(sizeof buffer) && std::strtod(buffer, nullptr) == v) return buffer;
+  }
+  for (int digits = 1; digits <= 17; ++digits) {  // tiny or huge: 3e-300, 1e+300
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    if (std::strtod(buffer, nullptr) == v) break;
+  }
+  std::string text = buffer;
+  text.erase(std::remove(text.begin(), text.end(), '+'), text.end());
+  return text;
+}
+
+}  // namespace
+
+std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
+                                           const std::vector<double>& loads) {
+  std::vector<Condition> conditions;
+  for (double v : speeds) {
+    Condition c;
+    c.name = v == 0 ? "standing" : "drum_" + CompactNumber(v);
+    c.speed_m_s = v;
+    if (loads.empty()) conditions.push_back(c);
+    for (double f : loads) {
+      Condition with_load = c;
+      with_load.name += "_" + CompactNumber(f) + "N";
+      with_load.known[Param::F_cz0] = f;
+      conditions.push_back(with_load);
+    }
+  }
+  return conditions;
+}
+
+
+Dataset PlanSimulation(const Parameters& truth, double prior_spread,
+                       const std::vector<double>& speeds, const std::vector<double>& loads,
+                       std::mt19937_64* rng) {
+  Dataset d;
+  SetEngineerPriors(truth, prior_spread, rng, &d);
+  d.conditions = SimulatedConditions(speeds, loads);
+  if (!loads.empty()) {  // the load is known in each condition, not shared
+    d.known.erase(Param::F_cz0);
+    d.initial.erase(Param::F_cz0);
+    d.per_condition = {Param::F_cz0};
+  }
+  if (d.conditions.size() > 1 || !loads.empty()) d.format = 2;
+  return d;
 }
 
 }  // namespace ringid

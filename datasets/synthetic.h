@@ -4,6 +4,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "datasets/dataset.h"
 #include "model/rigid_ring_model.h"
@@ -50,6 +51,20 @@ double LargestShift(const Parameters& truth, const Effect& effect, Param p, doub
 
 // The value of `p` whose largest frequency shift is `target` (bisection in log).
 double ValueForShift(const Parameters& truth, const Effect& effect, Param p, double target);
+
+// The conditions of a test at `speeds` (m/s) x `loads` (N; none: one load,
+// the set's) of docs/conventions.md §7: "standing" at 0 m/s, "drum_V"
+// otherwise, "_FN" appended for each load, then that condition's known F_cz0.
+std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
+                                           const std::vector<double>& loads);
+
+// A dataset to Simulate into at those conditions: the initial values a tire
+// engineer would give (SetEngineerPriors), each load known per condition,
+// format 2 when it has several conditions or a load. Name and description are
+// the caller's.
+Dataset PlanSimulation(const Parameters& truth, double prior_spread,
+                       const std::vector<double>& speeds, const std::vector<double>& loads,
+                       std::mt19937_64* rng);
 
 }  // namespace ringid
 
