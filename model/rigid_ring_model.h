@@ -51,7 +51,8 @@ class RigidRingModel final : public ModalModel {
   using ModalModel::Solve;
   // At speed the labels follow the standing ones by continuation, taken at
   // p's anchor (each parameter rounded to kAnchorBits bits of mantissa) and
-  // carried to p by one strict step; at p itself where that step fails
+  // carried to p by one SolveNear step; at p itself where the standstill
+  // labels differ, the anchor's were forced or that step fails
   // (docs/rolling.md §5). Labels are thus a function of p alone.
   ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const override;
   std::vector<Param> parameters() const override;
