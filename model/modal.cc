@@ -734,8 +734,8 @@ ModalSolution SolveRolling(
     std::vector<std::complex<double>> expected;
     for (const Mode& m : prev.modes) {
       const Mode* o = older.ok ? older.Find(m.label) : nullptr;
-      expected.push_back(o ? m.eigenvalue + (m.eigenvalue - o->eigenvalue) * ((to - at) / (at - older_at))
-                           : m.eigenvalue);
+      const double ahead = (to - at) / (at - older_at);
+      expected.push_back(o ? m.eigenvalue + (m.eigenvalue - o->eigenvalue) * ahead : m.eigenvalue);
     }
     const bool coarse = step <= finest;
     if (Follow(prev, &next, coarse ? Rule::kShape : Rule::kStep, expected)) {
