@@ -1,17 +1,16 @@
 #include "apps/campaign.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
-#include <thread>
 
 #include "apps/command_line.h"
 #include "apps/interrupt.h"
 #include "apps/reports.h"
+#include "estimation/parallel.h"
 #include "estimation/problem.h"
 
 namespace ringid {
@@ -82,20 +81,6 @@ bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
     reports->push_back((fs::path(dir) / (stem + ".json")).string());
   }
   return true;
-}
-
-void ParallelFor(int n, int jobs, Progress* progress, const std::function<void(int)>& work) {
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int i; (i = next++) < n;) {
-      work(i);
-      if (progress) progress->Add();
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int t = 1; t < std::min(jobs, n); ++t) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
 }
 
 namespace {
@@ -175,9 +160,10 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
   const auto t0 = std::chrono::steady_clock::now();
   {
     Progress progress(ToString(request.command), n);
-    ParallelFor(n, request.jobs, &progress, [&](int i) {
+    internal::ParallelFor(n, request.jobs, [&](int i) {
       items[i] = work(datasets[i], files[i]);
       WriteFileAtomically(reports[i], items[i].report, &write_errors[i]);
+      progress.Add();
     });
   }
   const double seconds =

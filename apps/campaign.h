@@ -33,10 +33,6 @@ bool ListDatasets(const std::string& list, const Shard& shard,
 bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
                  std::vector<std::string>* reports, std::string* error);
 
-// Runs work(i) for i in [0, n) on `jobs` threads (work must only touch
-// item i), ticking `progress` as items finish.
-void ParallelFor(int n, int jobs, Progress* progress, const std::function<void(int)>& work);
-
 // One dataset's share of a campaign: its report and its row of the summary.
 struct CampaignItem {
   std::string report;

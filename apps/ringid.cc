@@ -38,6 +38,7 @@
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
+#include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "model/effects.h"
 #include "model/spelling.h"
@@ -89,6 +90,7 @@ DEFINE_string(fix, "", "NAME,...: parameters held at their initial values");
 DEFINE_string(effects, "", "EFFECT,...: effects of docs/conventions.md §4 to add to the model (diagnose: to its baseline; the others are tried on top)");
 DEFINE_double(level, ringid::DiagnoseOptions().effect_significance,
               "significance level of each effect's likelihood-ratio test and of the verdict's group (the default is Bonferroni-safe for six candidates)");
+DEFINE_int32(threads, 0, "starts (diagnose: and candidate effects) fitted at once; 0: the cores, shared among --jobs");
 DEFINE_string(format, "", "what to write: the rigid-ring part of an MF-Swift .tir (docs/tir.md) or a parameter set (ringid-parameters/1 JSON)");
 
 namespace ringid {
@@ -341,6 +343,8 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
     return false;
   }
   o->starts = FLAGS_starts;
+  o->threads = FLAGS_threads ? FLAGS_threads
+                             : std::max(1, internal::ThreadsFor(0) / std::max(1, FLAGS_jobs));
   o->seed = static_cast<unsigned>(FLAGS_seed);
   o->residuals.relative_sigma = FLAGS_relative_sigma;
   o->residuals.use_shapes = FLAGS_shapes;
@@ -774,7 +778,7 @@ int ExportCommand(int, char**) {
 // The flags every fitting command takes, and a campaign's.
 const std::vector<std::string> kFitFlags = {
     "dataset", "output", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix"};
+    "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix", "threads"};
 const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
 std::vector<std::string> Joined(std::vector<std::string> a, const std::vector<std::string>& b) {

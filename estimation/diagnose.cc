@@ -1,5 +1,6 @@
 #include "estimation/diagnose.h"
 
+#include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "estimation/statistics.h"
 
@@ -523,11 +524,25 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
 std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
                             const DiagnoseOptions& o, DiagnosisReport* r) {
   const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
+  struct Size {
+    const Effect* effect;
+    Param p;
+    double* v;
+  };
+  std::vector<Size> sizes;
+  for (EffectFit& f : r->ranking) {
+    for (auto& [name, v] : f.minimal_detectable) sizes.push_back({f.effect, *ParseParam(name), &v});
+  }
+  DiagnoseOptions one_thread = o;
+  one_thread.fit.threads = 1;
+  internal::ParallelFor(static_cast<int>(sizes.size()), o.fit.threads, [&](int k) {
+    const Size& s = sizes[k];
+    *s.v = CheckedDetectable(baseline, *s.effect, s.p, *s.v, r->baseline, warm, one_thread, zero,
+                             o.detectable_likelihood_ratio);
+  });
   std::ostringstream small;
   for (EffectFit& f : r->ranking) {
     for (auto& [name, v] : f.minimal_detectable) {
-      v = CheckedDetectable(baseline, *f.effect, *ParseParam(name), v, r->baseline, warm, o, zero,
-                            o.detectable_likelihood_ratio);
       char b[96];
       std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect->name(),
                     name.c_str(), v);
@@ -571,17 +586,26 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     r->significant = r->p_value && *r->p_value < o.gap_significance;
     r->gap_before = std::max(0.0, r->chi2_before - std::max(r->dof, 0));
     const Dataset warm = WarmStart(dataset, r->baseline);
-    r->ranking.clear();
-    fits.clear();
-    int better = -1;
+    std::vector<const Effect*> candidates;
     for (const Effect* effect : EffectCatalogue()) {
-      if (baseline.Has(effect)) continue;
-      fits.emplace_back();
-      r->ranking.push_back(FitCandidate(baseline, *effect, warm, dataset, *r, o, &fits.back()));
-      const IdentifySummary& s = fits.back();
+      if (!baseline.Has(effect)) candidates.push_back(effect);
+    }
+    const int n = static_cast<int>(candidates.size());
+    r->ranking.assign(n, EffectFit{});
+    fits.assign(n, IdentifySummary{});
+    // Candidates on o.fit.threads, each fit within one.
+    DiagnoseOptions one_thread = o;
+    one_thread.fit.threads = 1;
+    internal::ParallelFor(n, o.fit.threads, [&](int k) {
+      r->ranking[k] =
+          FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k]);
+    });
+    int better = -1;
+    for (int k = 0; k < n; ++k) {
+      const IdentifySummary& s = fits[k];
       if (s.status.ok() && s.cost < r->baseline.cost - 0.5 * kSameOptimumChiSquare &&
-          EffectOff(*effect, s) && (better < 0 || s.cost < fits[better].cost)) {
-        better = static_cast<int>(fits.size()) - 1;
+          EffectOff(*candidates[k], s) && (better < 0 || s.cost < fits[better].cost)) {
+        better = k;
       }
     }
     if (better < 0 || attempt == 2) break;

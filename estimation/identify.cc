@@ -1,5 +1,6 @@
 #include "estimation/identify.h"
 
+#include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "estimation/statistics.h"
 
@@ -384,6 +385,10 @@ bool IdentifyOptions::IsValid(std::string* why) const {
     *why = "max_iterations must be at least 1";
     return false;
   }
+  if (threads < 0) {
+    *why = "threads must not be negative";
+    return false;
+  }
   return simplex.IsValid(why) && residuals.IsValid(why) &&
          uncertainty.IsValid(why);
 }
@@ -415,19 +420,27 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   auto usable = [&](const Eigen::VectorXd& x) {
     return std::isfinite(CostAt(residuals, x));
   };
+  const std::vector<internal::Start> plan =
+      PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
+  // Each start on its own copy of the problem, which counts its evaluations.
+  std::vector<LocalFit> fits(plan.size());
+  internal::ParallelFor(static_cast<int>(plan.size()), o.threads, [&](int k) {
+    Status created;
+    const auto own = Problem::Create(model, dataset, o.residuals, &created);
+    fits[k] = FitLocally(own->residuals(), o.method, plan[k].x, box, o.max_iterations,
+                         o.simplex, -1, o.stop_chi_square);
+  });
+  s->evaluations = residuals.evaluations();
   LocalFit best;
   std::vector<Eigen::VectorXd> ends;
-  for (const internal::Start& start :
-       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable)) {
-    LocalFit fit = FitLocally(residuals, o.method, start.x, box, o.max_iterations, o.simplex,
-                              -1, o.stop_chi_square);
-    s->start_costs.push_back(fit.cost);
-    s->start_origins.push_back(start.origin);
-    ends.push_back(fit.x);
-    if (s->start_costs.size() == 1 || fit.cost < best.cost) best = std::move(fit);
+  for (size_t k = 0; k < plan.size(); ++k) {
+    s->start_costs.push_back(fits[k].cost);
+    s->start_origins.push_back(plan[k].origin);
+    s->evaluations += fits[k].evaluations;
+    ends.push_back(fits[k].x);
+    if (k == 0 || fits[k].cost < best.cost) best = std::move(fits[k]);
   }
   s->starts = static_cast<int>(s->start_costs.size());
-  s->evaluations = residuals.evaluations();
   if (!std::isfinite(best.cost)) {
     s->status = Status::Failed("no start produced a usable fit: " + best.message);
     s->seconds = Seconds(t0);

@@ -40,6 +40,9 @@ struct IdentifyOptions {
   SimplexOptions simplex;
   ResidualOptions residuals;
   UncertaintyOptions uncertainty;
+  // Starts (and diagnose's candidate effects) fitted at once; 0: one thread
+  // per core. Results are the same on any number.
+  int threads = 0;
 
   bool IsValid(std::string* why) const;
 };

@@ -447,11 +447,18 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
   return !derive || dr.allFinite();
 }
 
-bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double* own,
-                                       double* r) const {
+ModalSolution ModalResiduals::SolveCondition(int c, const double* shared,
+                                             const double* own) const {
   ++evaluations_;
-  const ModalSolution solution =
-      model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
+  return model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
+}
+
+bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double* own,
+                                       double* r, const ModalSolution* near) const {
+  ++evaluations_;
+  const Parameters p = setup_.Decode(shared, own, c);
+  const double speed = dataset_.conditions[c].speed_m_s;
+  const ModalSolution solution = near ? model_.SolveFrom(*near, p, speed) : model_.Solve(p, speed);
   RowMatrix none;
   return Rows(c, solution, r, none);
 }
@@ -490,9 +497,13 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
   return true;
 }
 
-bool ModalResiduals::Evaluate(const double* x, double* r) const {
+bool ModalResiduals::Evaluate(const double* x, double* r,
+                              const std::vector<ModalSolution>* near) const {
   for (int c = 0; c < setup_.num_conditions(); ++c) {
-    if (!EvaluateCondition(c, x, x + setup_.own_begin(c), r + row_begin_[c])) return false;
+    if (!EvaluateCondition(c, x, x + setup_.own_begin(c), r + row_begin_[c],
+                           near ? &(*near)[c] : nullptr)) {
+      return false;
+    }
   }
   const int first = row_begin_.back();
   for (size_t k = 0; k < priors_.size(); ++k) {
@@ -521,38 +532,100 @@ struct ConditionRows {
   const ModalResiduals* residuals;
   int condition;
   bool shared, own;
+  const ModalSolution* near;
   bool operator()(double const* const* x, double* r) const {
     const double* s = shared ? x[0] : nullptr;
     const double* o = own ? x[shared ? 1 : 0] : nullptr;
-    return residuals->EvaluateCondition(condition, s, o, r);
+    return residuals->EvaluateCondition(condition, s, o, r, near);
   }
 };
 
-// Central differences with a relative step of 1e-4 (NewResidualCost).
-ceres::NumericDiffOptions CentralDifferences() {
+// Every row, labels carried from `near` (one solution per condition).
+struct AllRows {
+  const ModalResiduals* residuals;
+  const std::vector<ModalSolution>* near;
+  bool operator()(double const* const* x, double* r) const {
+    return residuals->Evaluate(x[0], r, near);
+  }
+};
+
+// Central differences with a relative step of 1e-4 whose perturbed points
+// keep the labels of the point they perturb (ModalModel::SolveFrom): a step
+// across a relabelling of nearly degenerate modes is no derivative, and
+// carrying spares each perturbed point a continuation in speed. `Rows` is
+// ConditionRows or AllRows; `Solve` gives its `near` at x.
+template <class Rows, class Solve>
+bool CarriedDifferences(const ceres::CostFunction& cost, Rows rows, const Solve& solve,
+                        double const* const* x, double* r, double** jacobians) {
+  const auto near = solve(x);
+  rows.near = &near;
   ceres::NumericDiffOptions options;
   options.relative_step_size = 1e-4;
-  return options;
+  ceres::DynamicNumericDiffCostFunction<Rows, ceres::CENTRAL> numeric(
+      &rows, ceres::DO_NOT_TAKE_OWNERSHIP, options);
+  for (int size : cost.parameter_block_sizes()) numeric.AddParameterBlock(size);
+  numeric.SetNumResiduals(cost.num_residuals());
+  return numeric.Evaluate(x, r, jacobians);
 }
 
-// One condition's rows with the exact Jacobian; central differences where
-// the derivatives do not exist.
+// One condition's rows, differentiated by CarriedDifferences.
+class NumericConditionCost final : public ceres::CostFunction {
+ public:
+  NumericConditionCost(const ModalResiduals& residuals, int condition, int num_shared,
+                       int num_own)
+      : rows_{&residuals, condition, num_shared > 0, num_own > 0, nullptr} {
+    for (int size : {num_shared, num_own}) {
+      if (size > 0) mutable_parameter_block_sizes()->push_back(size);
+    }
+    set_num_residuals(residuals.row_begin(condition + 1) - residuals.row_begin(condition));
+  }
+  bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    if (!jacobians) return rows_(x, r);
+    const auto solve = [&](double const* const* at) {
+      return rows_.residuals->SolveCondition(rows_.condition, rows_.shared ? at[0] : nullptr,
+                                             rows_.own ? at[rows_.shared ? 1 : 0] : nullptr);
+    };
+    return CarriedDifferences(*this, rows_, solve, x, r, jacobians);
+  }
+
+ private:
+  ConditionRows rows_;
+};
+
+// Every row (one block of all coordinates), differentiated by CarriedDifferences.
+class NumericResidualCost final : public ceres::CostFunction {
+ public:
+  explicit NumericResidualCost(const ModalResiduals& residuals) : rows_{&residuals, nullptr} {
+    mutable_parameter_block_sizes()->push_back(residuals.num_parameters());
+    set_num_residuals(residuals.num_residuals());
+  }
+  bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    if (!jacobians) return rows_(x, r);
+    const ModalResiduals& residuals = *rows_.residuals;
+    const auto solve = [&](double const* const* at) {
+      std::vector<ModalSolution> near;
+      for (int c = 0; c < residuals.setup().num_conditions(); ++c) {
+        near.push_back(residuals.SolveCondition(c, at[0], at[0] + residuals.setup().own_begin(c)));
+      }
+      return near;
+    };
+    return CarriedDifferences(*this, rows_, solve, x, r, jacobians);
+  }
+
+ private:
+  AllRows rows_;
+};
+
+// One condition's rows with the exact Jacobian; CarriedDifferences where the
+// derivatives do not exist.
 class AnalyticConditionCost final : public ceres::CostFunction {
  public:
   AnalyticConditionCost(const ModalResiduals& residuals, int condition, int num_shared,
                         int num_own)
       : residuals_(residuals), condition_(condition), shared_(num_shared > 0),
-        own_(num_own > 0),
-        numeric_(new ConditionRows{&residuals, condition, num_shared > 0, num_own > 0},
-                 ceres::TAKE_OWNERSHIP, CentralDifferences()) {
-    for (int size : {num_shared, num_own}) {
-      if (size == 0) continue;
-      mutable_parameter_block_sizes()->push_back(size);
-      numeric_.AddParameterBlock(size);
-    }
-    const int rows = residuals.row_begin(condition + 1) - residuals.row_begin(condition);
-    set_num_residuals(rows);
-    numeric_.SetNumResiduals(rows);
+        own_(num_own > 0), numeric_(residuals, condition, num_shared, num_own) {
+    *mutable_parameter_block_sizes() = numeric_.parameter_block_sizes();
+    set_num_residuals(numeric_.num_residuals());
   }
   bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
     const double* s = shared_ ? x[0] : nullptr;
@@ -569,7 +642,7 @@ class AnalyticConditionCost final : public ceres::CostFunction {
   const ModalResiduals& residuals_;
   int condition_;
   bool shared_, own_;
-  ceres::DynamicNumericDiffCostFunction<ConditionRows, ceres::CENTRAL> numeric_;
+  NumericConditionCost numeric_;
 };
 
 // The priors, with their exact derivatives, on the shared block.
@@ -602,10 +675,7 @@ class PriorCost final : public ceres::CostFunction {
 }  // namespace
 
 ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
-  auto* numeric = new ceres::DynamicNumericDiffCostFunction<ModalResiduals, ceres::CENTRAL>(
-      &residuals, ceres::DO_NOT_TAKE_OWNERSHIP, CentralDifferences());
-  numeric->AddParameterBlock(residuals.num_parameters());
-  numeric->SetNumResiduals(residuals.num_residuals());
+  auto* numeric = new NumericResidualCost(residuals);
   if (residuals.options().derivatives == Derivatives::kNumeric) return numeric;
 
   // Every condition's exact rows placed in x's columns, then the priors.
@@ -673,12 +743,7 @@ std::vector<std::pair<int, int>> AddResidualBlocks(const ModalResiduals& residua
                                 parameters);
       continue;
     }
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<ConditionRows, ceres::CENTRAL>(
-        new ConditionRows{&residuals, c, ns > 0, size > 0}, ceres::TAKE_OWNERSHIP,
-        CentralDifferences());
-    if (ns > 0) cost->AddParameterBlock(ns);
-    if (size > 0) cost->AddParameterBlock(size);
-    cost->SetNumResiduals(rows);
+    auto* cost = new NumericConditionCost(residuals, c, ns, size);
     problem->AddResidualBlock(cost, nullptr, parameters);
   }
   if (!residuals.priors().empty()) {

@@ -113,14 +113,20 @@ class ModalResiduals {
   // r(x): every condition's residuals in order, then the priors. False when
   // the model cannot be solved or a measured mode has no model counterpart
   // (say, its pair of roots became real).
-  bool Evaluate(const double* x, double* residuals) const;
+  // With `near`, each condition's solution at a nearby point, labels are
+  // carried from it (ModalModel::SolveFrom), as numeric derivatives ask.
+  bool Evaluate(const double* x, double* residuals,
+                const std::vector<ModalSolution>* near = nullptr) const;
   // For ceres::DynamicNumericDiffCostFunction.
   bool operator()(double const* const* x, double* residuals) const {
     return Evaluate(x[0], residuals);
   }
   // The rows of condition c, [row_begin(c), row_begin(c + 1)), from the
   // shared coordinates and that condition's own; rows of the priors follow.
-  bool EvaluateCondition(int c, const double* shared, const double* own, double* r) const;
+  bool EvaluateCondition(int c, const double* shared, const double* own, double* r,
+                         const ModalSolution* near = nullptr) const;
+  // Condition c's model solution there (one evaluation).
+  ModalSolution SolveCondition(int c, const double* shared, const double* own) const;
   // The same rows and their exact derivatives with respect to the shared and
   // own coordinates (row-major; either may be null). False as
   // EvaluateCondition; *defined false where the derivatives do not exist

@@ -163,6 +163,21 @@ ModalSolution RigidRingModel::Solve(const Parameters& p, double speed, bool deri
   return SolveByContinuation(p, speed, derivatives);
 }
 
+ModalSolution RigidRingModel::SolveFrom(const ModalSolution& near, const Parameters& p,
+                                        double speed) const {
+  // At standstill labels are by energy, a function of p alone.
+  if (speed > 0 && near.ok) {
+    const bool finite = std::all_of(used_.begin(), used_.end(),
+                                    [&](Param q) { return std::isfinite(p[q]); });
+    if (finite) {
+      if (std::optional<ModalSolution> carried = SolveNear(near, Assemble(p, speed))) {
+        return *std::move(carried);
+      }
+    }
+  }
+  return Solve(p, speed, false);
+}
+
 ModalSolution RigidRingModel::Standing(const Parameters& p) const {
   return standing_.Get(p, 0, [&] { return SolveModes(Assemble(p)); });
 }

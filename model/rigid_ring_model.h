@@ -28,6 +28,15 @@ class ModalModel {
   // With `derivatives` each mode carries its derivatives with respect to
   // the parameters (ModeDerivatives), unless derivatives_undefined says why not.
   virtual ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const = 0;
+  // The modes at p labelled as those of `near`, the solution at a nearby
+  // point and the same speed, where one strict step carries them (SolveNear);
+  // else Solve(p, speed_m_s). A numeric derivative takes its perturbed points
+  // so, to differentiate the branches of the point it perturbs.
+  virtual ModalSolution SolveFrom(const ModalSolution& near, const Parameters& p,
+                                  double speed_m_s) const {
+    (void)near;
+    return Solve(p, speed_m_s);
+  }
   // The system at `speed_m_s`, every value carrying its derivatives with
   // respect to the parameters (model/structure.h).
   virtual BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
@@ -55,6 +64,8 @@ class RigidRingModel final : public ModalModel {
   // labels differ, the anchor's were forced or that step fails
   // (docs/rolling.md §5). Labels are thus a function of p alone.
   ModalSolution Solve(const Parameters& p, double speed_m_s, bool derivatives) const override;
+  ModalSolution SolveFrom(const ModalSolution& near, const Parameters& p,
+                          double speed_m_s) const override;
   std::vector<Param> parameters() const override;
   const std::vector<const Effect*>& effects() const { return effects_; }
   bool Has(const Effect* effect) const;

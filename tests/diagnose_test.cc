@@ -1,6 +1,7 @@
 // The gap diagnosis on withheld-effect data, whose truth it never sees.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -18,10 +19,8 @@ namespace {
 
 using testing::PaperIdentified;
 
-// `baseline`: the model the diagnosis calibrates first.
-DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
-                                 bool held_out = false,
-                                 const RigidRingModel& baseline = RigidRingModel()) {
+// Simulated data of the paper's tire with `effect` (none: null) at p = value.
+Dataset Withheld(const char* effect, Param p, double value, unsigned seed) {
   Parameters truth = PaperIdentified();
   truth[Param::m_a] = 15;
   std::vector<const Effect*> withheld;
@@ -35,10 +34,17 @@ DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsi
   SetEngineerPriors(truth, 0.1, &rng, &d);
   std::string why;
   EXPECT_TRUE(Simulate(RigidRingModel(withheld), truth, SimulateOptions{}, &rng, &d, &why)) << why;
+  return d;
+}
+
+// `baseline`: the model the diagnosis calibrates first.
+DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
+                                 bool held_out = false,
+                                 const RigidRingModel& baseline = RigidRingModel()) {
   DiagnoseOptions o;
   o.held_out = held_out;
   DiagnosisReport r;
-  Diagnose(baseline, d, o, &r);
+  Diagnose(baseline, Withheld(effect, p, value, seed), o, &r);
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
@@ -61,6 +67,31 @@ TEST(DiagnoseTest, PerConditionParametersAreRefusedAsInput) {
   Diagnose(RigidRingModel(), d, DiagnoseOptions(), &r);
   EXPECT_TRUE(r.status.invalid_input());
   EXPECT_NE(r.status.message.find("per_condition"), std::string::npos) << r.status.message;
+}
+
+// Starts and candidate effects fitted on several threads give the report of
+// one thread, timings aside.
+TEST(DiagnoseTest, TheReportIsTheSameOnOneThreadAndOnSeveral) {
+  const Dataset d = Withheld("lug_coupling", Param::k_xy, 1.5e5, 3);
+  std::vector<Json> reports;
+  for (int threads : {1, 3}) {
+    DiagnoseOptions o;
+    o.fit.threads = threads;
+    DiagnosisReport r;
+    Diagnose(RigidRingModel(), d, o, &r);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    Json j = Json::parse(ReportText(DiagnoseReport{{}, {d.name, r}}));
+    // Every "seconds" (the whole run's, each fit's) removed.
+    std::function<void(Json*)> untimed = [&](Json* node) {
+      if (node->is_object()) node->erase("seconds");
+      if (node->is_structured()) {
+        for (Json& child : *node) untimed(&child);
+      }
+    };
+    untimed(&j);
+    reports.push_back(j);
+  }
+  EXPECT_EQ(reports[0], reports[1]);
 }
 
 TEST(DiagnoseTest, NoEffectNoAlarm) {

@@ -1,0 +1,20 @@
+// Work spread over threads; results are the same on any number of them.
+#ifndef RINGID_ESTIMATION_PARALLEL_H_
+#define RINGID_ESTIMATION_PARALLEL_H_
+
+#include <functional>
+
+namespace ringid {
+namespace internal {
+
+// The threads `threads` asks for: itself when positive, else one per core.
+int ThreadsFor(int threads);
+
+// Runs work(i) for every i in [0, n) on up to ThreadsFor(threads) threads,
+// the calling one among them. work must only write what item i owns.
+void ParallelFor(int n, int threads, const std::function<void(int)>& work);
+
+}  // namespace internal
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_PARALLEL_H_
