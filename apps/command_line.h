@@ -1,7 +1,7 @@
 // The command line of ringid: one table of commands, each with the flags it
 // takes. SetFlags reads argv into gflags from that table, and each command's
 // --help is drawn from it and the flags' own definitions (DEFINE_* in
-// apps/ringid.cc), so no second list of flags can drift from the first.
+// apps/flags.cc), so no second list of flags can drift from the first.
 #ifndef RINGID_APPS_COMMAND_LINE_H_
 #define RINGID_APPS_COMMAND_LINE_H_
 

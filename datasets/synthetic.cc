@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 namespace ringid {
 
 bool Simulate(const ModalModel& model, const Parameters& truth,
@@ -186,6 +188,29 @@ Dataset PlanSimulation(const Parameters& truth, double prior_spread,
   }
   if (d.conditions.size() > 1 || !loads.empty()) d.format = 2;
   return d;
+}
+
+std::string EffectList(const std::vector<const Effect*>& effects) {
+  std::string names;
+  for (const std::string& name : EffectNames(effects)) names += (names.empty() ? "" : ",") + name;
+  return names.empty() ? "none" : names;
+}
+
+std::string TruthText(const RigidRingModel& model, const Parameters& truth, const Dataset& d,
+                      const std::string& dataset_file) {
+  nlohmann::json t;
+  t["format"] = "ringid-truth/1";
+  t["dataset"] = dataset_file;
+  t["effect"] = EffectList(model.effects());
+  for (Param q : model.parameters()) {
+    if (!d.IsPerCondition(q)) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
+  }
+  for (const Condition& c : d.conditions) {
+    for (const auto& [q, v] : c.known) {
+      t["parameters"][std::string(ParamName(q)) + "@" + c.name] = {{"value", v}};
+    }
+  }
+  return t.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace ringid

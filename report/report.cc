@@ -119,4 +119,21 @@ PredictBody PredictBody::From(const ModalSolution& solution) {
   return b;
 }
 
+std::string PredictBody::FullReport() const {
+  std::string text;
+  char line[160];
+  std::snprintf(line, sizeof line, "%-22s %-13s %10s %8s\n", "mode", "plane", "Hz", "zeta");
+  text += line;
+  for (const PredictedMode& m : modes) {
+    std::snprintf(line, sizeof line, "%-22s %-13s %10.3f %8.4f\n", LabelName(m.label),
+                  PlaneName(LabelPlane(m.label)), m.model_hz, m.damping_ratio);
+    text += line;
+  }
+  for (ModeLabel l : overdamped) {
+    std::snprintf(line, sizeof line, "%-22s overdamped: no oscillating mode\n", LabelName(l));
+    text += line;
+  }
+  return text;
+}
+
 }  // namespace ringid

@@ -113,6 +113,8 @@ struct PredictBody {
   std::vector<ModeLabel> overdamped;  // labels whose roots are real
 
   static PredictBody From(const ModalSolution& solution);
+  // The modes as a table (mode, plane, Hz, zeta) and the overdamped labels.
+  std::string FullReport() const;
   template <class Archive>
   void Serialize(Archive* a) {
     status.Serialize(a);
