@@ -1,7 +1,9 @@
 #include "estimation/compare.h"
 
 #include "datasets/paper.h"
+#include "estimation/fit.h"
 #include "estimation/problem.h"
+#include "estimation/starts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,18 +26,8 @@ double Median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-}  // namespace
-
-bool CompareOptions::IsValid(std::string* why) const {
-  if (!(success_absolute >= 0) || !(success_relative >= 0)) {
-    *why = "success tolerances must not be negative";
-    return false;
-  }
-  return fit.IsValid(why);
-}
-
-namespace internal {
-
+// Eqs. (19), (20): sum ((f_exp - f_cal) / f_exp)^2 per plane at x; NaN where
+// the plane has no measured mode or the model cannot be solved.
 void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
                     const Eigen::VectorXd& x, double* in_plane,
                     double* out_of_plane) {
@@ -58,7 +50,15 @@ void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
   if (n[1]) *out_of_plane = e[1];
 }
 
-}  // namespace internal
+}  // namespace
+
+bool CompareOptions::IsValid(std::string* why) const {
+  if (!(success_absolute >= 0) || !(success_relative >= 0)) {
+    *why = "success tolerances must not be negative";
+    return false;
+  }
+  return fit.IsValid(why);
+}
 
 void CompareMethods(const ModalModel& model, const Dataset& dataset,
                     const CompareOptions& o, ComparisonReport* r) {

@@ -89,15 +89,6 @@ struct ComparisonReport {
 void CompareMethods(const ModalModel& model, const Dataset& dataset,
                     const CompareOptions& options, ComparisonReport* report);
 
-namespace internal {
-
-// Eqs. (19), (20): sum ((f_exp - f_cal) / f_exp)^2 per plane at x; NaN where
-// the plane has no measured mode or the model cannot be solved.
-void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
-                    const Eigen::VectorXd& x, double* in_plane,
-                    double* out_of_plane);
-
-}  // namespace internal
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_COMPARE_H_

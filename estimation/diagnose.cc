@@ -1,8 +1,11 @@
+#include "estimation/diagnose_internal.h"
 #include "estimation/diagnose.h"
 
+#include "estimation/fit.h"
 #include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "estimation/statistics.h"
+#include "estimation/uncertainty.h"
 
 #include <algorithm>
 #include <chrono>

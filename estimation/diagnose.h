@@ -191,13 +191,6 @@ struct DiagnosisReport {
 void Diagnose(const RigidRingModel& baseline, const Dataset& dataset,
               const DiagnoseOptions& options, DiagnosisReport* report);
 
-namespace internal {
-// The explanation's words on held-out modes: the leave-one-mode-out
-// chi-square of the baseline (`before`) and of the verdict (`after`), said to
-// fall or to rise.
-std::string HeldOutChange(double before, double after);
-}  // namespace internal
-
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_DIAGNOSE_H_

@@ -13,31 +13,12 @@
 
 #include <Eigen/Core>
 
+#include "estimation/options.h"
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
 #include "estimation/simplex.h"
 
 namespace ringid {
-
-enum class Method { kLevenbergMarquardt, kSimplex };
-template <>
-struct EnumNames<Method> {
-  static constexpr std::array<const char*, 2> kNames = {"lm", "simplex"};
-};
-
-// Bounds a user sets on one parameter, in its units; they replace the box of
-// bound_factor for every coordinate of the parameter.
-struct Bound {
-  double lower = 0, upper = 0;
-};
-using Bounds = std::map<Param, Bound>;
-
-// Which bound a fitted coordinate sits on.
-enum class BoundSide { kLower, kUpper };
-template <>
-struct EnumNames<BoundSide> {
-  static constexpr std::array<const char*, 2> kNames = {"lower", "upper"};
-};
 
 namespace internal {
 
@@ -70,11 +51,6 @@ struct LocalFit {
   // (model solutions so far, cost) per iteration, thinned to at most 200.
   std::vector<std::pair<long, double>> history;
 };
-
-// Levenberg-Marquardt stops once no step can change chi-square by more than
-// this (estimation/fit.cc, StatisticalStop); 0 leaves only Ceres' own
-// relative tolerances of 1e-14.
-inline constexpr double kStopChiSquare = 1e-4;
 
 // Levenberg-Marquardt (ceres::Solve on the residuals' Jacobians) or the
 // Downhill Simplex from `start`. `fixed` >= 0 holds that coordinate at its

@@ -1,6 +1,9 @@
+#include "estimation/identifiability_internal.h"
 #include "estimation/identifiability.h"
 
+#include "estimation/fit.h"
 #include "estimation/problem.h"
+#include "estimation/uncertainty.h"
 #include "estimation/statistics.h"
 
 #include <algorithm>

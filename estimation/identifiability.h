@@ -194,17 +194,6 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                             const IdentifiabilityOptions& options,
                             IdentifiabilityReport* report);
 
-namespace internal {
-
-// The profile of free coordinate i about the optimum xhat (cost cost_min),
-// as AnalyzeIdentifiability computes it; wald_std its Wald standard
-// deviation in coordinates (not finite where there is none).
-ProfileInterval ProfileCoordinate(const Problem& problem, const Eigen::VectorXd& xhat,
-                                  double cost_min, int i, double wald_std,
-                                  const IdentifiabilityOptions& options);
-
-}  // namespace internal
-
 }  // namespace ringid
 
 #endif  // RINGID_ESTIMATION_IDENTIFIABILITY_H_

@@ -2,7 +2,9 @@
 
 #include "estimation/parallel.h"
 #include "estimation/problem.h"
+#include "estimation/starts.h"
 #include "estimation/statistics.h"
+#include "estimation/uncertainty.h"
 
 #include <algorithm>
 #include <chrono>
@@ -54,7 +56,7 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
   e.reason = u.reasons[i];
   if (e.tied_to) e.reason = std::string("tied to ") + ParamName(*e.tied_to) + "; " + e.reason;
   if (e.identifiable != Identifiability::kNo) {
-    for (const internal::KnownDependence& d : u.known_dependence) {
+    for (const KnownDependence& d : u.known_dependence) {
       if (d.coordinate == i) {
         e.conditional_on.push_back({d.known, d.known_value, d.measured, d.structural});
       }
@@ -127,7 +129,7 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
     // exact claim, and j lies in J's range but for rounding, where b / s
     // would be noise.
     const bool structural = std::any_of(u->known_dependence.begin(), u->known_dependence.end(),
-                                        [&](const internal::KnownDependence& d) { return d.known == q; });
+                                        [&](const KnownDependence& d) { return d.known == q; });
     if (structural) continue;
     Eigen::VectorXd xp = xf, xm = xf;
     xp[k] += h;
@@ -147,7 +149,7 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
       if (!(std::sqrt(var) * to_relative > o.uncertainty.practical_relative_std)) continue;
       const double share = std::abs(b[i]) * to_relative / per_q;
       if (!(share >= kKnownDependenceShare && share <= 1 / kKnownDependenceShare)) continue;
-      internal::KnownDependence d;
+      KnownDependence d;
       d.coordinate = i;
       d.known = q;
       d.known_value = p[q];
@@ -201,7 +203,7 @@ const char* DecidedByWords(DecidedBy d) {
   return "";
 }
 
-StartAgreement AssessStarts(const ParameterSetup& setup, const std::vector<double>& costs,
+StartAgreement internal::AssessStarts(const ParameterSetup& setup, const std::vector<double>& costs,
                             const std::vector<Eigen::VectorXd>& ends) {
   StartAgreement a;
   const double best = *std::min_element(costs.begin(), costs.end());
@@ -446,7 +448,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->seconds = Seconds(t0);
     return;
   }
-  s->start_agreement = AssessStarts(setup, s->start_costs, ends);
+  s->start_agreement = internal::AssessStarts(setup, s->start_costs, ends);
   s->status = Status::Success(best.message);
   s->converged = best.converged;
   s->cost = best.cost;

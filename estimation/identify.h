@@ -9,13 +9,10 @@
 #include <vector>
 
 #include "datasets/dataset.h"
-#include "estimation/fit.h"
-#include "estimation/residuals.h"
-#include "estimation/setup.h"
-#include "estimation/simplex.h"
-#include "estimation/starts.h"
+#include "estimation/options.h"
 #include "estimation/status.h"
-#include "estimation/uncertainty.h"
+#include "estimation/types.h"
+#include "estimation/uncertainty_result.h"
 #include "model/plausibility.h"
 #include "model/rigid_ring_model.h"
 
@@ -36,7 +33,7 @@ struct IdentifyOptions {
   int max_iterations = 200;  // Levenberg-Marquardt, per start
   // Levenberg-Marquardt stops when no step changes chi-square by more than
   // this (0: only Ceres' relative tolerances of 1e-14).
-  double stop_chi_square = internal::kStopChiSquare;
+  double stop_chi_square = kStopChiSquare;
   SimplexOptions simplex;
   ResidualOptions residuals;
   UncertaintyOptions uncertainty;
@@ -234,9 +231,6 @@ struct StartAgreement {
     a->Visit("verdict", &verdict);
   }
 };
-StartAgreement AssessStarts(const internal::ParameterSetup& setup,
-                            const std::vector<double>& costs,
-                            const std::vector<Eigen::VectorXd>& ends);
 
 struct IdentifySummary {
   // Success: a fit was obtained, and message says how the winning start

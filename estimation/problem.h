@@ -9,12 +9,15 @@
 #include <Eigen/Core>
 
 #include "datasets/dataset.h"
-#include "estimation/residuals.h"
-#include "estimation/setup.h"
+#include "estimation/options.h"
 #include "estimation/status.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
+namespace internal {
+class ModalResiduals;   // estimation/residuals.h
+class ParameterSetup;   // estimation/setup.h
+}  // namespace internal
 
 class Problem {
  public:
@@ -25,20 +28,21 @@ class Problem {
 
   Problem(const Problem&) = delete;
   Problem& operator=(const Problem&) = delete;
+  ~Problem();
 
   const ModalModel& model() const { return *model_; }
   const Dataset& dataset() const { return dataset_; }
-  const internal::ParameterSetup& setup() const { return setup_; }
+  const internal::ParameterSetup& setup() const { return *setup_; }
   const internal::ModalResiduals& residuals() const { return *residuals_; }
   // The dataset's initial point in coordinates.
-  Eigen::VectorXd start() const { return setup_.StartCoordinates(); }
+  Eigen::VectorXd start() const;
 
  private:
   Problem(std::unique_ptr<ModalModel> model, const Dataset& dataset);
 
   std::unique_ptr<ModalModel> model_;
   Dataset dataset_;
-  internal::ParameterSetup setup_;
+  std::unique_ptr<internal::ParameterSetup> setup_;
   std::unique_ptr<internal::ModalResiduals> residuals_;  // refers to the members above
 };
 

@@ -13,56 +13,12 @@
 #include <ceres/problem.h>
 
 #include "datasets/dataset.h"
+#include "estimation/options.h"
 #include "estimation/setup.h"
 #include "model/modal.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
-enum class FrequencyWeighting {
-  kSigma,     // 1 / frequency_sigma_hz (relative_sigma * f where absent)
-  kRelative,  // 1 / (relative_sigma * f): eqs. (19)-(20) up to a constant
-};
-
-// How a measured real shape was made from a complex eigenvector.
-enum class ShapeConvention {
-  kContract,  // docs/conventions.md §2: largest displacement real, real part
-  kPaper,     // the paper's Tables 4-5 (Mode::PaperShape)
-};
-
-// How the Jacobians of the residuals are made.
-enum class Derivatives {
-  kNumeric,   // central differences through the eigen-solution
-  kAnalytic,  // eigenvalue and eigenvector derivatives (docs/model.md §15),
-              // central differences where two eigenvalues coincide
-};
-
-template <>
-struct EnumNames<Derivatives> {
-  static constexpr std::array<const char*, 2> kNames = {"numeric", "analytic"};
-};
-template <>
-struct EnumNames<FrequencyWeighting> {
-  static constexpr std::array<const char*, 2> kNames = {"sigma", "relative"};
-};
-template <>
-struct EnumNames<ShapeConvention> {
-  static constexpr std::array<const char*, 2> kNames = {"contract", "paper"};
-};
-
-struct ResidualOptions {
-  FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
-  // Relative frequency standard error used where no sigma is given.
-  double relative_sigma = 0.01;
-  // Damping and shape residuals are used where the dataset gives them.
-  bool use_damping = true;
-  bool use_shapes = true;
-  double default_damping_sigma = 0.02;  // where damping_sigma is absent
-  double default_shape_sigma = 0.05;    // where shape_sigma is absent
-  ShapeConvention shape_convention = ShapeConvention::kContract;
-  Derivatives derivatives = Derivatives::kNumeric;
-  bool IsValid(std::string* why) const;
-};
 
 // The model's real shape under a convention, as measured shapes are made
 // (docs/conventions.md §2: the largest component's phase removed).

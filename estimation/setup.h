@@ -12,24 +12,11 @@
 #include <Eigen/Core>
 
 #include "datasets/dataset.h"
+#include "estimation/types.h"
 #include "model/parameters.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
-// A parameter, or its value in one condition: "NAME" or "NAME@CONDITION".
-struct ParameterKey {
-  Param param = Param::m_b;
-  std::string condition;  // empty: shared by every condition
-
-  std::string Text() const;
-  static bool Parse(const std::string& text, ParameterKey* key);
-  static constexpr char kKeyDescription[] =
-      "parameter name, or NAME@CONDITION for a per-condition parameter of a format-2 dataset";
-  bool operator==(const ParameterKey& o) const {
-    return param == o.param && condition == o.condition;
-  }
-};
 
 namespace internal {
 

@@ -11,17 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "estimation/options.h"
 namespace ringid {
-
-struct SimplexOptions {
-  int max_evaluations = 20000;
-  double initial_step = 0.1;  // edge of the first simplex, per coordinate
-  // Stops when the spread of values over the simplex is below
-  // f_tolerance * (|f_best| + tiny) and its diameter below x_tolerance.
-  double f_tolerance = 1e-14;
-  double x_tolerance = 1e-10;
-  bool IsValid(std::string* why) const;
-};
 
 namespace internal {
 

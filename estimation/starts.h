@@ -9,22 +9,20 @@
 
 #include <Eigen/Core>
 
+#include "estimation/types.h"
 #include "estimation/fit.h"
+#include "estimation/identify.h"
 #include "estimation/residuals.h"
 #include "model/enum_names.h"
 
 namespace ringid {
 
-// kEffectAtZero: diagnose's re-calibration of the baseline from an effect's
-// fit that held the effect at 0 and beat the baseline.
-enum class StartOrigin { kInitial, kFrequencyMatched, kScattered, kEffectAtZero };
-template <>
-struct EnumNames<StartOrigin> {
-  static constexpr std::array<const char*, 4> kNames = {"initial", "frequency_matched",
-                                                        "scattered", "effect_at_zero"};
-};
-
 namespace internal {
+
+StartAgreement AssessStarts(const ParameterSetup& setup,
+                            const std::vector<double>& costs,
+                            const std::vector<Eigen::VectorXd>& ends);
+
 
 // x0 with every free stiffness (IsStiffness) moved so that the measured modes
 // get their measured frequencies, and with measured damping ratios every

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "estimation/residuals.h"
+#include "estimation/uncertainty_result.h"
 #include "estimation/setup.h"
 
 namespace ringid::internal {
@@ -32,24 +33,6 @@ struct StructuralFreedom {
 // largest) and every other one is far above.
 StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals,
                                         const Eigen::VectorXd& x);
-
-// A free coordinate that the model separates from a known (fixed) parameter
-// only because that one is fixed: with `known` freed as well, a direction
-// along which no condition's system changes moves both.
-struct KnownDependence {
-  int coordinate = 0;
-  Param known = Param::m_b;
-  double known_value = 0;  // of the first condition
-  // The combination of the two the model sees along that direction:
-  // "K_cx/sigma_cx" (logs moving together), "K_cx*sigma_cx" (opposite),
-  // "A + B" / "A - B" (values moving opposite / alike), "A/B^0.5" (logs in
-  // another ratio), else the linear combination that stays, "A + 0.25 B (to
-  // first order)".
-  std::string measured;
-  // True: the model cannot tell them apart (this test); false: the data
-  // hardly can (the Schur-complement test in estimation/identify.cc).
-  bool structural = true;
-};
 
 // What the data measure of coordinate i and known q when a direction moves
 // coordinate i by vi and q by vq, both in coordinate units (log for positive

@@ -41,7 +41,7 @@ namespace ringid {
 // Reports keep their fields in the order Serialize lists them.
 using Json = nlohmann::ordered_json;
 
-namespace internal {
+namespace detail {  // of the templates below, installed with them
 
 template <class T> struct IsOptional : std::false_type {};
 template <class T> struct IsOptional<std::optional<T>> : std::true_type {};
@@ -81,7 +81,7 @@ bool KeyFromText(const std::string& text, K* key) {
   }
 }
 
-}  // namespace internal
+}  // namespace detail
 
 class JsonWriter {
  public:
@@ -98,7 +98,7 @@ class JsonWriter {
   template <class T, class K>
   void VisitKeyed(const char* name, std::vector<T>* items, K T::*key) {
     Json object = Json::object();
-    for (const T& item : *items) object[internal::KeyText(item.*key)] = ToJson(item);
+    for (const T& item : *items) object[detail::KeyText(item.*key)] = ToJson(item);
     (*object_)[name] = std::move(object);
   }
   template <class F>
@@ -120,26 +120,26 @@ class JsonWriter {
     } else if constexpr (std::is_enum_v<T>) {
       return ToString(v);
     } else if constexpr (std::is_pointer_v<T>) {
-      return internal::PointerNamesOf<T>::ToString(v);
+      return detail::PointerNamesOf<T>::ToString(v);
     } else if constexpr (std::is_integral_v<T>) {
       return v;
     } else if constexpr (std::is_floating_point_v<T>) {
       return std::isfinite(v) ? Json(v) : Json(nullptr);
     } else if constexpr (std::is_same_v<T, std::complex<double>>) {
       return Json{{"re", ToJson(v.real())}, {"im", ToJson(v.imag())}};
-    } else if constexpr (internal::IsOptional<T>::value) {
+    } else if constexpr (detail::IsOptional<T>::value) {
       return v ? ToJson(*v) : Json(nullptr);
-    } else if constexpr (internal::IsVector<T>::value) {
+    } else if constexpr (detail::IsVector<T>::value) {
       Json array = Json::array();
       for (const auto& item : v) array.push_back(ToJson(item));
       return array;
-    } else if constexpr (internal::IsPair<T>::value) {
+    } else if constexpr (detail::IsPair<T>::value) {
       return Json::array({ToJson(v.first), ToJson(v.second)});
-    } else if constexpr (internal::IsMap<T>::value) {
+    } else if constexpr (detail::IsMap<T>::value) {
       Json object = Json::object();
-      for (const auto& [key, item] : v) object[internal::KeyText(key)] = ToJson(item);
+      for (const auto& [key, item] : v) object[detail::KeyText(key)] = ToJson(item);
       return object;
-    } else if constexpr (internal::IsEigen<T>::value) {
+    } else if constexpr (detail::IsEigen<T>::value) {
       Json rows = Json::array();
       for (Eigen::Index i = 0; i < v.rows(); ++i) {
         if (T::ColsAtCompileTime == 1) {
@@ -200,7 +200,7 @@ class JsonReader {
     for (const auto& [text, item] : field->items()) {
       const std::string path = Path(name) + "." + text;
       T value{};
-      if (!internal::KeyFromText(text, &(value.*key))) {
+      if (!detail::KeyFromText(text, &(value.*key))) {
         Fail(path + ": unknown name '" + text + "'");
         return;
       }
@@ -260,10 +260,10 @@ class JsonReader {
       *v = *parsed;
     } else if constexpr (std::is_pointer_v<T>) {
       if (!Expect(j, j.is_string(), path, "a name", error)) return false;
-      const auto parsed = internal::PointerNamesOf<T>::FromString(j.get<std::string>());
+      const auto parsed = detail::PointerNamesOf<T>::FromString(j.get<std::string>());
       if (!parsed) {
         *error = path + ": unknown name '" + j.get<std::string>() + "' (expected " +
-                 internal::PointerNamesOf<T>::Choices() + ")";
+                 detail::PointerNamesOf<T>::Choices() + ")";
         return false;
       }
       *v = *parsed;
@@ -281,35 +281,35 @@ class JsonReader {
       reader.Visit("im", &im);
       if (!reader.Finish()) return false;
       *v = {re, im};
-    } else if constexpr (internal::IsOptional<T>::value) {
+    } else if constexpr (detail::IsOptional<T>::value) {
       if (j.is_null()) {
         v->reset();
         return true;
       }
       v->emplace();
       return FromJson(j, path, &**v, error);
-    } else if constexpr (internal::IsVector<T>::value) {
+    } else if constexpr (detail::IsVector<T>::value) {
       if (!Expect(j, j.is_array(), path, "an array", error)) return false;
       v->assign(j.size(), typename T::value_type{});
       for (size_t i = 0; i < j.size(); ++i) {
         if (!FromJson(j[i], path + "[" + std::to_string(i) + "]", &(*v)[i], error)) return false;
       }
-    } else if constexpr (internal::IsPair<T>::value) {
+    } else if constexpr (detail::IsPair<T>::value) {
       if (!Expect(j, j.is_array() && j.size() == 2, path, "a pair [a, b]", error)) return false;
       return FromJson(j[0], path + "[0]", &v->first, error) &&
              FromJson(j[1], path + "[1]", &v->second, error);
-    } else if constexpr (internal::IsMap<T>::value) {
+    } else if constexpr (detail::IsMap<T>::value) {
       if (!Expect(j, j.is_object(), path, "an object", error)) return false;
       v->clear();
       for (const auto& [text, item] : j.items()) {
         typename T::key_type key{};
-        if (!internal::KeyFromText(text, &key)) {
+        if (!detail::KeyFromText(text, &key)) {
           *error = path + "." + text + ": unknown name '" + text + "'";
           return false;
         }
         if (!FromJson(item, path + "." + text, &(*v)[key], error)) return false;
       }
-    } else if constexpr (internal::IsEigen<T>::value) {
+    } else if constexpr (detail::IsEigen<T>::value) {
       return EigenFromJson(j, path, v, error);
     } else {
       if (!Expect(j, j.is_object(), path, "an object", error)) return false;

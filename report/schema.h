@@ -60,25 +60,25 @@ class SchemaWriter {
     } else if constexpr (std::is_enum_v<T>) {
       return "one of " + EnumChoices<T>();
     } else if constexpr (std::is_pointer_v<T>) {
-      return "one of " + internal::PointerNamesOf<T>::Choices();
+      return "one of " + detail::PointerNamesOf<T>::Choices();
     } else if constexpr (std::is_integral_v<T>) {
       return "integer";
     } else if constexpr (std::is_floating_point_v<T>) {
       return "number (null where not available)";
     } else if constexpr (std::is_same_v<T, std::complex<double>>) {
       return "{re, im}";
-    } else if constexpr (internal::IsOptional<T>::value) {
+    } else if constexpr (detail::IsOptional<T>::value) {
       if constexpr (std::is_floating_point_v<typename T::value_type>) return "number or null";
       return TypeName<typename T::value_type>() + " or null";
-    } else if constexpr (internal::IsVector<T>::value) {
+    } else if constexpr (detail::IsVector<T>::value) {
       return "list of " + TypeName<typename T::value_type>();
-    } else if constexpr (internal::IsPair<T>::value) {
+    } else if constexpr (detail::IsPair<T>::value) {
       return "[" + TypeName<typename T::first_type>() + ", " +
              TypeName<typename T::second_type>() + "]";
-    } else if constexpr (internal::IsMap<T>::value) {
+    } else if constexpr (detail::IsMap<T>::value) {
       return "object keyed by " + KeyName<typename T::key_type>() + " of " +
              TypeName<typename T::mapped_type>();
-    } else if constexpr (internal::IsEigen<T>::value) {
+    } else if constexpr (detail::IsEigen<T>::value) {
       return T::ColsAtCompileTime == 1 ? "list of numbers" : "list of rows (lists of numbers)";
     } else {
       return "object";
@@ -89,9 +89,9 @@ class SchemaWriter {
   template <class T>
   static constexpr bool IsStruct() {
     return std::is_class_v<T> && !std::is_same_v<T, std::string> &&
-           !std::is_same_v<T, std::complex<double>> && !internal::IsOptional<T>::value &&
-           !internal::IsVector<T>::value && !internal::IsPair<T>::value &&
-           !internal::IsMap<T>::value && !internal::IsEigen<T>::value;
+           !std::is_same_v<T, std::complex<double>> && !detail::IsOptional<T>::value &&
+           !detail::IsVector<T>::value && !detail::IsPair<T>::value &&
+           !detail::IsMap<T>::value && !detail::IsEigen<T>::value;
   }
   template <class K>
   static std::string KeyName() {
@@ -114,14 +114,14 @@ class SchemaWriter {
   // The line of a value of type T at `path`, and those of its parts.
   template <class T>
   void Entry(const std::string& path, const std::string& note) {
-    if constexpr (internal::IsVector<T>::value) {
+    if constexpr (detail::IsVector<T>::value) {
       if constexpr (IsStruct<typename T::value_type>()) {
         Line(path, "list of objects" + note);
         Describe<typename T::value_type>(path + "[]");
       } else {
         Line(path, TypeName<T>() + note);
       }
-    } else if constexpr (internal::IsMap<T>::value) {
+    } else if constexpr (detail::IsMap<T>::value) {
       using Key = typename T::key_type;
       Line(path, "object keyed by " + KeyName<Key>() + note);
       Entry<typename T::mapped_type>(path + ".<" + ShortKey<Key>() + ">", "");

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic.h"
+#include "estimation/residuals.h"
+#include "estimation/setup.h"
 #include "estimation/identify.h"
 #include "estimation/statistics.h"
 #include "tests/test_support.h"

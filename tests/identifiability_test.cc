@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic.h"
+#include "estimation/identifiability_internal.h"
 #include "estimation/fit.h"
 #include "estimation/identifiability.h"
 #include "estimation/problem.h"

@@ -53,4 +53,31 @@ TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {
   EXPECT_GT(checked, 50);  // the scan found the includes it is about
 }
 
+// The installed headers (cmake/public_headers.txt) include only each other:
+// the install tree compiles, and no internal unit leaks into the API.
+TEST(LayeringTest, PublicHeadersIncludeOnlyPublicHeaders) {
+  std::ifstream list(fs::path(RINGID_SOURCE_DIR) / "cmake/public_headers.txt");
+  ASSERT_TRUE(list.good());
+  std::set<std::string> is_public;
+  for (std::string line; std::getline(list, line);) {
+    if (!line.empty() && line[0] != '#') is_public.insert(line);
+  }
+  ASSERT_GT(is_public.size(), 20u);
+  const std::regex include(R"re(^\s*#\s*include\s+"([a-z_]+/[a-z_]+\.h)")re");
+  int checked = 0;
+  for (const std::string& header : is_public) {
+    std::ifstream in(fs::path(RINGID_SOURCE_DIR) / header);
+    ASSERT_TRUE(in.good()) << header << " is listed but missing";
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      ++checked;
+      EXPECT_TRUE(is_public.count(m[1])) << header << ":" << n << " includes " << m[1]
+                                          << ", which is not public";
+    }
+  }
+  EXPECT_GT(checked, 30);
+}
+
 }  // namespace

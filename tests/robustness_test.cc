@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic.h"
+#include "estimation/diagnose_internal.h"
 #include "estimation/diagnose.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
@@ -131,14 +132,14 @@ TEST(StartsTest, StartsAtTheBestAreCountedAndALoneOneIsWarnedAbout) {
   Eigen::VectorXd y = x;
   y[0] += std::log(2.0);  // a positive parameter twice as large
   ASSERT_TRUE(setup.is_log(0));
-  const StartAgreement two = AssessStarts(setup, {10.0, 10.3, 50.0}, {x, y, x});
+  const StartAgreement two = internal::AssessStarts(setup, {10.0, 10.3, 50.0}, {x, y, x});
   EXPECT_EQ(two.at_best, 2);
   EXPECT_EQ(two.of, 3);
   ASSERT_EQ(two.disagree.count(setup.name(0)), 1u);
   EXPECT_NEAR(two.disagree.at(setup.name(0)), 2.0, 1e-12);
   EXPECT_NE(two.verdict.find("different values of " + setup.name(0)), std::string::npos)
       << two.verdict;
-  const StartAgreement alone = AssessStarts(setup, {10.0, 10.6, 50.0}, {x, y, x});
+  const StartAgreement alone = internal::AssessStarts(setup, {10.0, 10.6, 50.0}, {x, y, x});
   EXPECT_EQ(alone.at_best, 1);  // 10.6 is chi-square 1.2 above
   EXPECT_TRUE(alone.disagree.empty());
   EXPECT_NE(alone.verdict.find("only 1 of 3"), std::string::npos) << alone.verdict;
@@ -159,7 +160,7 @@ TEST(StoppingTest, TableOneWithPriorsConvergesWithinTheDefaultIterations) {
   Identify(RigidRingModel(), d, o, &crawled);
   ASSERT_TRUE(s.status.ok() && crawled.status.ok());
   EXPECT_TRUE(s.converged) << s.status.message;
-  EXPECT_NEAR(s.fit.chi_square, crawled.fit.chi_square, 2 * internal::kStopChiSquare);
+  EXPECT_NEAR(s.fit.chi_square, crawled.fit.chi_square, 2 * kStopChiSquare);
   for (size_t k = 0; k < s.estimates.size(); ++k) {
     const ParameterEstimate& a = s.estimates[k];
     const ParameterEstimate& b = crawled.estimates[k];
@@ -187,7 +188,7 @@ TEST(StoppingTest, ACrawlToAKinkStopsWhenWhatItsGainsPromiseIsBelowTheResolution
   EXPECT_NE(s.status.message.find("gains shrink geometrically"), std::string::npos)
       << s.status.message;
   EXPECT_LT(s.evaluations, crawled.evaluations);
-  EXPECT_NEAR(s.fit.chi_square, crawled.fit.chi_square, 2 * internal::kStopChiSquare);
+  EXPECT_NEAR(s.fit.chi_square, crawled.fit.chi_square, 2 * kStopChiSquare);
   ASSERT_EQ(s.x.size(), crawled.x.size());
   for (int i = 0; i < s.x.size(); ++i) {
     EXPECT_NEAR(s.x[i], crawled.x[i], 1e-3) << s.coordinate_names[i];  // log: 0.1 %
