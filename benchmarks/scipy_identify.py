@@ -96,7 +96,7 @@ MAX_ITERATIONS = 200
 RELATIVE_SIGMA = 0.01
 DEFAULT_DAMPING_SIGMA = 0.02
 DEFAULT_SHAPE_SIGMA = 0.05
-# estimation/residuals.cc AddResidualBlocks: NumericDiffOptions.relative_step_size.
+# estimation/residual_costs.cc CarriedDifferences: NumericDiffOptions.relative_step_size.
 RELATIVE_STEP = 1e-4
 
 
@@ -488,7 +488,7 @@ class Residuals:
 
 def ceres_central_jacobian(res):
     """ceres::DynamicNumericDiffCostFunction<..., CENTRAL> with
-    relative_step_size 1e-4 (residuals.cc): step max(sqrt(eps), 1e-4 |x_j|),
+    relative_step_size 1e-4 (residual_costs.cc): step max(sqrt(eps), 1e-4 |x_j|),
     (r(x + h e_j) - r(x - h e_j)) / 2h, no regard for the bounds. Ceres also
     evaluates r(x) once per Jacobian; least_squares has it already, so this
     saves one model solution per iteration over ringid."""

@@ -156,9 +156,6 @@ MeasuredMode Mode(const json& j, const std::string& field) {
   return m;
 }
 
-const char kFormat1[] = "ringid-modal-dataset/1";
-const char kFormat2[] = "ringid-modal-dataset/2";
-
 // "name" and "description", required and optional, as in both formats.
 void NameAndDescription(const json& j, Dataset* d) {
   if (!j.contains("name")) Fail("name", "missing");
@@ -237,9 +234,9 @@ void CheckFormat1(const json& j, Dataset* d) {
   OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
                    "modes"});
   if (!j.contains("format")) Fail("format", "missing");
-  if (String(j["format"], "format") != kFormat1) {
-    Fail("format", std::string("must be \"") + kFormat1 + "\" or \"" +
-                       kFormat2 + "\"");
+  if (String(j["format"], "format") != kDatasetFormat1) {
+    Fail("format", std::string("must be \"") + kDatasetFormat1 + "\" or \"" +
+                       kDatasetFormat2 + "\"");
   }
   NameAndDescription(j, d);
   SharedValues(j, d);
@@ -421,8 +418,6 @@ void CheckFormat2(const json& j, Dataset* d) {
   }
 }
 
-const char kParameterSetFormat[] = "ringid-parameters/1";
-
 // A file of the other kind, named as what it is rather than by the first key
 // a dataset does not have ("parameters: unknown key"). A parameter set may
 // leave out its format (LoadParameterSet).
@@ -444,7 +439,7 @@ void NotADataset(const json& j) {
 void Check(const json& j, Dataset* d) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
   NotADataset(j);
-  if (j.contains("format") && j["format"] == kFormat2) {
+  if (j.contains("format") && j["format"] == kDatasetFormat2) {
     CheckFormat2(j, d);
   } else {
     CheckFormat1(j, d);
@@ -567,7 +562,7 @@ bool ParseChecked(const std::string& text, LoadError* error,
 // "parameters" object is read, each entry a number or {"value": number}.
 void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
-  if (j.contains("format") && (j["format"] == kFormat1 || j["format"] == kFormat2)) {
+  if (j.contains("format") && (j["format"] == kDatasetFormat1 || j["format"] == kDatasetFormat2)) {
     Fail("format", "this is a modal dataset (" + j["format"].get<std::string>() +
                        "), not a parameter set");
   }
@@ -652,115 +647,6 @@ bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
   std::string text;
   return ReadInputFile(path, &text, error) &&
          ParseDataset(text, path, dataset, error);
-}
-
-namespace {
-
-json ValuesJson(const std::map<Param, double>& m) {
-  json o = json::object();
-  for (const auto& [p, v] : m) o[ParamName(p)] = v;
-  return o;
-}
-
-json ModeJson(const MeasuredMode& m) {
-  json o;
-  o["label"] = LabelName(m.label);
-  o["plane"] = PlaneName(LabelPlane(m.label));
-  o["frequency_hz"] = m.frequency_hz;
-  if (m.frequency_sigma_hz) o["frequency_sigma_hz"] = *m.frequency_sigma_hz;
-  if (m.damping_ratio) o["damping_ratio"] = *m.damping_ratio;
-  if (m.damping_sigma) o["damping_sigma"] = *m.damping_sigma;
-  if (!m.shape.empty()) {
-    json s = json::object();
-    for (const auto& [dof, v] : m.shape) s[DofName(dof)] = v;
-    o["shape"] = s;
-  }
-  if (m.shape_sigma) o["shape_sigma"] = *m.shape_sigma;
-  return o;
-}
-
-// Whether format 1 cannot hold `d`.
-bool NeedsFormat2(const Dataset& d) {
-  if (d.format == 2 || d.conditions.size() > 1 || !d.priors.empty() ||
-      !d.per_condition.empty()) {
-    return true;
-  }
-  if (d.conditions.empty()) return false;
-  const Condition& c = d.conditions[0];
-  const Condition standing;
-  return c.name != standing.name || c.speed_m_s != standing.speed_m_s ||
-         !c.known.empty() || !c.initial.empty();
-}
-
-}  // namespace
-
-std::string ParameterSetToJson(const Parameters& p, const std::string& name,
-                               const std::string& description) {
-  json j;
-  j["format"] = "ringid-parameters/1";
-  j["name"] = name;
-  j["description"] = description;
-  j["parameters"] = json::object();
-  for (int i = 0; i < kNumParams; ++i) {
-    const Param q = ParamAt(i);
-    const bool baseline = Info(q).group == Group::kEffect && p[q] == 0;  // the default
-    if (p.IsSet(q) && !baseline) j["parameters"][ParamName(q)] = {{"value", p[q]}};
-  }
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-}
-
-std::string DatasetToJson(const Dataset& d) {
-  const bool format2 = NeedsFormat2(d);
-  json j;
-  j["format"] = format2 ? kFormat2 : kFormat1;
-  j["name"] = d.name;
-  if (!d.description.empty()) j["description"] = d.description;
-  if (!d.known.empty()) j["known"] = ValuesJson(d.known);
-  if (!d.initial.empty()) j["initial"] = ValuesJson(d.initial);
-  if (!d.ties.empty()) {
-    json t = json::object();
-    for (const auto& [a, b] : d.ties) t[ParamName(a)] = ParamName(b);
-    j["ties"] = t;
-  }
-  if (!format2) {
-    j["modes"] = json::array();
-    for (const MeasuredMode& m : d.modes) j["modes"].push_back(ModeJson(m));
-  } else {
-    if (!d.priors.empty()) {
-      json priors = json::object();
-      for (const auto& [p, prior] : d.priors) {
-        const bool normal = prior.distribution == PriorDistribution::kNormal;
-        json o;
-        o["distribution"] = ToString(prior.distribution);
-        o[normal ? "mean" : "median"] = prior.center;
-        o[normal ? "sigma" : "factor_95"] = prior.spread;
-        priors[ParamName(p)] = o;
-      }
-      j["priors"] = priors;
-    }
-    if (!d.per_condition.empty()) {
-      j["per_condition"] = json::array();
-      for (const Param p : d.per_condition) {
-        j["per_condition"].push_back(ParamName(p));
-      }
-    }
-    j["conditions"] = json::array();
-    for (size_t i = 0; i < d.conditions.size(); ++i) {
-      const Condition& c = d.conditions[i];
-      json o;
-      o["name"] = c.name;
-      o["speed_m_s"] = c.speed_m_s;
-      if (!c.known.empty()) o["known"] = ValuesJson(c.known);
-      if (!c.initial.empty()) o["initial"] = ValuesJson(c.initial);
-      o["modes"] = json::array();
-      for (const MeasuredMode& m : d.modes) {
-        if (m.condition == static_cast<int>(i)) o["modes"].push_back(ModeJson(m));
-      }
-      j["conditions"].push_back(o);
-    }
-  }
-  // Names may come from file names, which need not be UTF-8.
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 bool Dataset::IsPerCondition(Param p) const {

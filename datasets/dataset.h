@@ -63,6 +63,11 @@ struct Dataset {
   bool IsPerCondition(Param p) const;
 };
 
+// The "format" of each kind of file (docs/conventions.md §3, §7).
+inline constexpr char kDatasetFormat1[] = "ringid-modal-dataset/1";
+inline constexpr char kDatasetFormat2[] = "ringid-modal-dataset/2";
+inline constexpr char kParameterSetFormat[] = "ringid-parameters/1";
+
 // Limits the loader enforces (README "Limits").
 // At most one measured mode per mode label of docs/conventions.md §1, one
 // shape component per degree of freedom.
@@ -135,7 +140,8 @@ bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error,
 std::string ParameterSetToJson(const Parameters& p, const std::string& name,
                                const std::string& description);
 
-// Writes a dataset back to the JSON form of docs/conventions.md §3.
+// Writes a dataset back to the JSON form of docs/conventions.md §3
+// (datasets/dataset_writer.cc, as ParameterSetToJson).
 std::string DatasetToJson(const Dataset& dataset);
 
 }  // namespace ringid

@@ -36,7 +36,7 @@ const std::vector<TirUnit>& TirUnits() {
   return units;
 }
 
-const std::vector<TirField>& TirFields() {
+const std::vector<TirField>& TirFields() {  // size-check: data table
   static const std::vector<TirField> fields = {
       {"INERTIA", "BELT_MASS", "kg", "Belt mass", "m_b", "m_b = BELT_MASS", "", true,
        {P::m_b}, {P::m_b},
@@ -258,14 +258,11 @@ std::string SectionHeader(const std::string& section) {
   return "$" + std::string(70 - lower.size(), '-') + lower + "\n[" + section + "]\n";
 }
 
-}  // namespace
-
-bool ParametersToTir(const Parameters& p, const std::string& name, const std::string& source,
-                     std::string* text, LoadError* error, const Undetermined& undetermined) {
-  error->file = source;
-  error->field.clear();
-  std::vector<const TirField*> written;
-  std::vector<std::string> unset;
+// The fields of TirFields() that `p` can write, into `written`; those an
+// optional parameter left unset named in `unset`. False, with `error`, where a
+// required parameter is missing or a value cannot be written.
+bool FieldsToWrite(const Parameters& p, std::vector<const TirField*>* written,
+                   std::vector<std::string>* unset, LoadError* error) {
   for (const TirField& f : TirFields()) {
     const std::string key = std::string("[") + f.section + "] " + f.key;
     const auto missing = std::find_if(f.inputs.begin(), f.inputs.end(),
@@ -276,7 +273,7 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
         error->message = "missing (the .tir's " + key + " needs it)";
         return false;
       }
-      unset.push_back(std::string(f.key) + " (" + ParamName(*missing) + ")");
+      unset->push_back(std::string(f.key) + " (" + ParamName(*missing) + ")");
       continue;
     }
     for (Param q : f.inputs) {
@@ -292,23 +289,15 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
       error->message = "cannot be written: its parameters give " + TirNumber(v);
       return false;
     }
-    written.push_back(&f);
+    written->push_back(&f);
   }
+  return true;
+}
 
+// The header's lines where the parameters break an assumption of the
+// format: what the key holds, and what it does not.
+std::string AssumptionNotes(const Parameters& p) {
   std::string out;
-  out += "[MDI_HEADER]\n";
-  out += KeyLine("FILE_TYPE", "'tir'", "");
-  out += KeyLine("FILE_VERSION", "3.0", "");
-  out += KeyLine("FILE_FORMAT", "'ASCII'", "");
-  out += "$ ringid export: the rigid-ring (SWIFT) belt of '" + CommentText(name) + "' from " +
-         CommentText(source) + "\n";
-  out += "$ Only the rigid-ring part of an MF-Swift tire: merge these sections into the tire's\n";
-  out += "$ full .tir. Every key, its formula and its assumption: docs/tir.md of ringid.\n";
-  if (p.IsSet(P::F_cz0)) {
-    out += "$ Stiffnesses are the model's at standstill at F_cz0 = " + TirNumber(p[P::F_cz0]) +
-           " N; no FNOMIN is written.\n";
-  }
-  // Where the parameters break an assumption of the format: what is held.
   const auto note = [&](bool breaks, const std::string& line) {
     if (breaks) out += "$ " + line + "\n";
   };
@@ -345,6 +334,33 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
              TirNumber(camber) + " (c_bgamma = " + TirNumber(p[P::c_bgamma]) +
              " N m s/rad) differs and is not held.");
   }
+  return out;
+}
+
+}  // namespace
+
+bool ParametersToTir(const Parameters& p, const std::string& name, const std::string& source,
+                     std::string* text, LoadError* error, const Undetermined& undetermined) {
+  error->file = source;
+  error->field.clear();
+  std::vector<const TirField*> written;
+  std::vector<std::string> unset;
+  if (!FieldsToWrite(p, &written, &unset, error)) return false;
+
+  std::string out;
+  out += "[MDI_HEADER]\n";
+  out += KeyLine("FILE_TYPE", "'tir'", "");
+  out += KeyLine("FILE_VERSION", "3.0", "");
+  out += KeyLine("FILE_FORMAT", "'ASCII'", "");
+  out += "$ ringid export: the rigid-ring (SWIFT) belt of '" + CommentText(name) + "' from " +
+         CommentText(source) + "\n";
+  out += "$ Only the rigid-ring part of an MF-Swift tire: merge these sections into the tire's\n";
+  out += "$ full .tir. Every key, its formula and its assumption: docs/tir.md of ringid.\n";
+  if (p.IsSet(P::F_cz0)) {
+    out += "$ Stiffnesses are the model's at standstill at F_cz0 = " + TirNumber(p[P::F_cz0]) +
+           " N; no FNOMIN is written.\n";
+  }
+  out += AssumptionNotes(p);
   std::vector<std::string> not_held, effects;
   for (Param q : ParametersNotHeldByTir()) {
     not_held.push_back(std::string(ParamName(q)) +

@@ -13,6 +13,7 @@ namespace internal {
 // The profile of free coordinate i about the optimum xhat (cost cost_min),
 // as AnalyzeIdentifiability computes it; wald_std its Wald standard
 // deviation in coordinates (not finite where there is none).
+// In estimation/profile.cc.
 ProfileInterval ProfileCoordinate(const Problem& problem, const Eigen::VectorXd& xhat,
                                   double cost_min, int i, double wald_std,
                                   const IdentifiabilityOptions& options);

@@ -353,6 +353,117 @@ std::string FewObservables(const ModalResiduals& residuals) {
   return o.str();
 }
 
+// The multistart: the starts PlanStarts gives, each fitted on its own copy
+// of the problem (which counts its evaluations) on o.threads. Each start's
+// cost, origin and end point (`ends`) and every evaluation are recorded in
+// `s`; returns the best fit, the first of equal costs.
+LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const IdentifyOptions& o,
+                       const Problem& problem, const Eigen::VectorXd& x0, const Box& box,
+                       IdentifySummary* s, std::vector<Eigen::VectorXd>* ends) {
+  const ModalResiduals& residuals = problem.residuals();
+  const int starts = problem.setup().size() == 0 ? 1 : o.starts;
+  auto usable = [&](const Eigen::VectorXd& x) {
+    return std::isfinite(CostAt(residuals, x));
+  };
+  const std::vector<internal::Start> plan =
+      PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
+  std::vector<LocalFit> fits(plan.size());
+  internal::ParallelFor(static_cast<int>(plan.size()), o.threads, [&](int k) {
+    Status created;
+    const auto own = Problem::Create(model, dataset, o.residuals, &created);
+    fits[k] = FitLocally(own->residuals(), o.method, plan[k].x, box, o.max_iterations,
+                         o.simplex, -1, o.stop_chi_square);
+  });
+  s->evaluations = residuals.evaluations();
+  LocalFit best;
+  for (size_t k = 0; k < plan.size(); ++k) {
+    s->start_costs.push_back(fits[k].cost);
+    s->start_origins.push_back(plan[k].origin);
+    s->evaluations += fits[k].evaluations;
+    ends->push_back(fits[k].x);
+    if (k == 0 || fits[k].cost < best.cost) best = std::move(fits[k]);
+  }
+  s->starts = static_cast<int>(s->start_costs.size());
+  return best;
+}
+
+// The chi-square test of the best fit (AssessFit, one scale per measured
+// shape), on the Jacobian's rank where the uncertainty has one. Where it is
+// poor but not every start agrees that it is the best point, the verdict
+// says the start may be to blame, not the model.
+FitQuality JudgeFit(const ModalResiduals& residuals, double cost, const Uncertainty& u,
+                    const StartAgreement& agreement) {
+  std::set<int> shapes;
+  for (const ModalResiduals::Slot& slot : residuals.slots()) {
+    if (slot.kind == ModalResiduals::Slot::kShape) shapes.insert(slot.mode);
+  }
+  const int scales = static_cast<int>(shapes.size());
+  FitQuality fit = u.ok ? AssessFit(cost, static_cast<int>(u.jacobian.rows()), u.rank, scales)
+                        : AssessFit(cost, residuals.num_residuals(), residuals.setup().size(),
+                                    scales);
+  if (fit.poor && agreement.at_best < std::max(agreement.of, 2)) {
+    char words[400];
+    std::snprintf(words, sizeof words,
+                  "poor fit: chi-square %.4g on %d degrees of freedom (p = %.2g), reached by %d "
+                  "of %d starts. Either the model misses what the data show or no start found "
+                  "the best point: try more starts (--starts) before ringid diagnose",
+                  fit.chi_square, fit.degrees_of_freedom, *fit.p_value, agreement.at_best,
+                  agreement.of);
+    fit.verdict = words;
+  }
+  return fit;
+}
+
+// Each measured mode against the model mode paired with it at x, into
+// s->modes, and the sums of squared relative frequency errors in and out of
+// plane (NaN where a plane has no mode).
+void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const IdentifyOptions& o,
+              const Eigen::VectorXd& x, IdentifySummary* s) {
+  std::string why;
+  std::vector<ModalSolution> solutions;
+  std::vector<int> pairs;
+  double e_in = 0, e_out = 0;
+  int n_in = 0, n_out = 0;
+  if (residuals.Pair(x.data(), &solutions, &pairs, &why)) {
+    for (size_t i = 0; i < dataset.modes.size(); ++i) {
+      const MeasuredMode& m = dataset.modes[i];
+      const ModalSolution& solution = solutions[m.condition];
+      const Mode& mode = solution.modes[pairs[i]];
+      ModeFit f;
+      if (dataset.format == 2) {
+        f.condition = dataset.conditions[m.condition].name;
+        f.speed_m_s = dataset.conditions[m.condition].speed_m_s;
+      }
+      f.label = m.label;
+      f.model_label = mode.label;
+      f.measured_hz = m.frequency_hz;
+      f.measured_sigma_hz = residuals.FrequencySigma(m);
+      f.model_hz = mode.frequency_hz;
+      f.measured_damping = m.damping_ratio;
+      f.model_damping = mode.damping_ratio;
+      if (!m.shape.empty()) {
+        f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention, m.shape), m.shape);
+        for (const Mode& other : solution.modes) {
+          f.mac_all[other.label] =
+              Mac(ComparableShape(other, o.residuals.shape_convention, m.shape), m.shape);
+        }
+      }
+      const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
+      if (LabelPlane(m.label) == Plane::kInPlane) {
+        e_in += rel * rel;
+        ++n_in;
+      } else {
+        e_out += rel * rel;
+        ++n_out;
+      }
+      s->modes.push_back(f);
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s->relative_error_in_plane = n_in ? e_in : nan;
+  s->relative_error_out_of_plane = n_out ? e_out : nan;
+}
+
 }  // namespace
 
 bool IdentifyOptions::IsValid(std::string* why) const {
@@ -418,31 +529,8 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->warnings = residuals.PairingWarnings(x0.data(), true);
   if (const std::string few = FewObservables(residuals); !few.empty()) s->warnings.push_back(few);
   const Box box = BoundsAround(setup, x0, o.bound_factor, o.bounds);
-  const int starts = setup.size() == 0 ? 1 : o.starts;
-  auto usable = [&](const Eigen::VectorXd& x) {
-    return std::isfinite(CostAt(residuals, x));
-  };
-  const std::vector<internal::Start> plan =
-      PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
-  // Each start on its own copy of the problem, which counts its evaluations.
-  std::vector<LocalFit> fits(plan.size());
-  internal::ParallelFor(static_cast<int>(plan.size()), o.threads, [&](int k) {
-    Status created;
-    const auto own = Problem::Create(model, dataset, o.residuals, &created);
-    fits[k] = FitLocally(own->residuals(), o.method, plan[k].x, box, o.max_iterations,
-                         o.simplex, -1, o.stop_chi_square);
-  });
-  s->evaluations = residuals.evaluations();
-  LocalFit best;
   std::vector<Eigen::VectorXd> ends;
-  for (size_t k = 0; k < plan.size(); ++k) {
-    s->start_costs.push_back(fits[k].cost);
-    s->start_origins.push_back(plan[k].origin);
-    s->evaluations += fits[k].evaluations;
-    ends.push_back(fits[k].x);
-    if (k == 0 || fits[k].cost < best.cost) best = std::move(fits[k]);
-  }
-  s->starts = static_cast<int>(s->start_costs.size());
+  const LocalFit best = FitFromStarts(model, dataset, o, *problem, x0, box, s, &ends);
   if (!std::isfinite(best.cost)) {
     s->status = Status::Failed("no start produced a usable fit: " + best.message);
     s->seconds = Seconds(t0);
@@ -456,27 +544,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->x = best.x;
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
   AddPracticalDependence(model, dataset, o, setup, best.x, &s->uncertainty);
-  std::set<int> shapes;
-  for (const ModalResiduals::Slot& slot : residuals.slots()) {
-    if (slot.kind == ModalResiduals::Slot::kShape) shapes.insert(slot.mode);
-  }
-  const int scales = static_cast<int>(shapes.size());
-  s->fit = s->uncertainty.ok
-               ? AssessFit(best.cost, static_cast<int>(s->uncertainty.jacobian.rows()),
-                           s->uncertainty.rank, scales)
-               : AssessFit(best.cost, residuals.num_residuals(), setup.size(), scales);
-  if (s->fit.poor && s->start_agreement.at_best < std::max(s->start_agreement.of, 2)) {
-    // The best of the starts is poor, but not every start agrees that it is
-    // the best point: the start may be to blame, not the model.
-    char words[400];
-    std::snprintf(words, sizeof words,
-                  "poor fit: chi-square %.4g on %d degrees of freedom (p = %.2g), reached by %d "
-                  "of %d starts. Either the model misses what the data show or no start found "
-                  "the best point: try more starts (--starts) before ringid diagnose",
-                  s->fit.chi_square, s->fit.degrees_of_freedom, *s->fit.p_value,
-                  s->start_agreement.at_best, s->start_agreement.of);
-    s->fit.verdict = words;
-  }
+  s->fit = JudgeFit(residuals, best.cost, s->uncertainty, s->start_agreement);
   for (int i = 0; i < setup.size(); ++i) s->coordinate_names.push_back(setup.name(i));
   for (Param p : model.parameters()) {
     const bool per_condition = dataset.IsPerCondition(p);
@@ -492,49 +560,8 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->warnings.push_back(std::move(w));
   }
 
-  std::vector<ModalSolution> solutions;
-  std::vector<int> pairs;
-  double e_in = 0, e_out = 0;
-  int n_in = 0, n_out = 0;
-  if (residuals.Pair(best.x.data(), &solutions, &pairs, &why)) {
-    for (size_t i = 0; i < dataset.modes.size(); ++i) {
-      const MeasuredMode& m = dataset.modes[i];
-      const ModalSolution& solution = solutions[m.condition];
-      const Mode& mode = solution.modes[pairs[i]];
-      ModeFit f;
-      if (dataset.format == 2) {
-        f.condition = dataset.conditions[m.condition].name;
-        f.speed_m_s = dataset.conditions[m.condition].speed_m_s;
-      }
-      f.label = m.label;
-      f.model_label = mode.label;
-      f.measured_hz = m.frequency_hz;
-      f.measured_sigma_hz = residuals.FrequencySigma(m);
-      f.model_hz = mode.frequency_hz;
-      f.measured_damping = m.damping_ratio;
-      f.model_damping = mode.damping_ratio;
-      if (!m.shape.empty()) {
-        f.mac = Mac(ComparableShape(mode, o.residuals.shape_convention, m.shape), m.shape);
-        for (const Mode& other : solution.modes) {
-          f.mac_all[other.label] =
-              Mac(ComparableShape(other, o.residuals.shape_convention, m.shape), m.shape);
-        }
-      }
-      const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
-      if (LabelPlane(m.label) == Plane::kInPlane) {
-        e_in += rel * rel;
-        ++n_in;
-      } else {
-        e_out += rel * rel;
-        ++n_out;
-      }
-      s->modes.push_back(f);
-    }
-  }
+  ModeFits(dataset, residuals, o, best.x, s);
   s->speed_curves = SpeedCurves(model, dataset, s->parameters);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  s->relative_error_in_plane = n_in ? e_in : nan;
-  s->relative_error_out_of_plane = n_out ? e_out : nan;
   s->seconds = Seconds(t0);
 }
 

@@ -161,6 +161,8 @@ class ModalResiduals {
   mutable std::atomic<long> evaluations_{0};
 };
 
+// The Ceres cost functions (estimation/residual_costs.cc).
+
 // The residuals as a Ceres cost function of one parameter block of all free
 // coordinates, with the Jacobian options().derivatives asks for. Numeric:
 // central differences through the eigen-solution. The relative

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <optional>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -284,7 +283,217 @@ bool AddDerivatives(const MatOf<ParameterJet>& dA, const CVec& lambda, const CMa
   return true;
 }
 
-// Solves one block of coupled degrees of freedom and appends its modes.
+using RootVec = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMaxState, 1>;
+
+// Whether root j opens a pair u +- i v (v > 0, the first), whose eigenvectors
+// are P_j +- i P_j+1; a pair whose v is rounding is two real roots
+// (EigenSolver::pseudoEigenvalueMatrix).
+bool IsPair(const RootVec& ev, int j) {
+  const int n = static_cast<int>(ev.size());
+  return j + 1 < n &&
+         !(std::abs(ev[j].imag()) <= 2 * std::numeric_limits<double>::epsilon() * std::abs(ev[j].real()));
+}
+
+// The roots of the block's state matrix A (eq. 13), into `ev` (of A's size).
+// Standing, one degree of freedom without vectors: m lambda^2 + c lambda + k
+// = 0 in closed form, Eigen's order (the root with Im > 0 first); real roots
+// without cancellation. Else Eigen's, in `es` with the vectors unless
+// `values_only`. False, with `error`, where the solver does not converge.
+bool Roots(const MechanicalSystem& s, const std::vector<int>& dofs, const Mat& A,
+           bool values_only, Eigen::EigenSolver<Mat>* es, RootVec* ev, std::string* error) {
+  if (values_only && dofs.size() == 1) {
+    const int d = dofs[0];
+    const double mass = s.M()(d, d), c = s.C()(d, d), kk = s.K()(d, d);
+    const double disc = c * c - 4 * mass * kk;
+    if (disc < 0) {
+      const double re = -c / (2 * mass), im = std::sqrt(-disc) / (2 * mass);
+      *ev << std::complex<double>(re, im), std::complex<double>(re, -im);
+    } else {
+      const double q = -0.5 * (c + std::copysign(std::sqrt(disc), c));
+      *ev << q / mass, q != 0 ? kk / q : 0.0;
+    }
+    return true;
+  }
+  es->compute(A, /*computeEigenvectors=*/!values_only);
+  if (es->info() != Eigen::Success) {
+    *error = "eigen-solution did not converge";
+    return false;
+  }
+  *ev = es->eigenvalues();
+  return true;
+}
+
+// The eigenvectors V of the state matrix from its pseudo-eigenvectors P, their
+// eigenvalues `lambda` (a real root's rounding imaginary part dropped), and
+// the left eigenvectors, the rows of Y = V^-1. False where V is singular.
+bool LeftVectors(const RootVec& ev, const Mat& P, CVec* lambda, CMat* V, CMat* Y) {
+  const int n = static_cast<int>(ev.size());
+  *lambda = ev;
+  V->resize(n, n);
+  for (int j = 0; j < n; ++j) {
+    if (IsPair(ev, j)) {
+      const std::complex<double> i(0, 1);
+      V->col(j) = P.col(j) + i * P.col(j + 1);
+      V->col(j + 1) = P.col(j) - i * P.col(j + 1);
+      ++j;
+    } else {
+      (*lambda)[j] = ev[j].real();
+      V->col(j) = P.col(j);
+    }
+  }
+  *Y = Eigen::PartialPivLU<CMat>(*V).inverse();
+  return Y->allFinite();
+}
+
+// The labels whose element lies in the block (LabelHome), in catalogue order.
+std::vector<ModeLabel> BlockLabels(const std::vector<int>& dofs) {
+  std::vector<ModeLabel> labels;
+  labels.reserve(dofs.size());
+  for (int l = 0; l < kNumLabels; ++l) {
+    const auto label = static_cast<ModeLabel>(l);
+    const int home = static_cast<int>(LabelHome(label));
+    if (std::find(dofs.begin(), dofs.end(), home) != dofs.end()) {
+      labels.push_back(label);
+    }
+  }
+  return labels;
+}
+
+// Whether M, C and K are symmetric over the block: left and right vectors of
+// lambda^2 M + lambda C + K then coincide.
+bool Symmetric(const MechanicalSystem& s, const std::vector<int>& dofs) {
+  const int k = static_cast<int>(dofs.size());
+  bool symmetric = true;
+  for (int a = 0; a < k && symmetric; ++a) {
+    for (int b = 0; b < a && symmetric; ++b) {
+      const int i = dofs[a], j = dofs[b];
+      symmetric = s.M()(i, j) == s.M()(j, i) && s.C()(i, j) == s.C()(j, i) &&
+                  s.K()(i, j) == s.K()(j, i);
+    }
+  }
+  return symmetric;
+}
+
+// What the modes of one block are made from (SolveBlock).
+struct Block {
+  const MechanicalSystem& s;
+  const std::vector<int>& dofs;
+  int m;             // slip lags in the state vector
+  bool values_only;  // the roots alone: each mode's vectors are null vectors
+  const Mat& P;      // the pseudo-eigenvectors, unless values_only
+  bool have_left;    // Y holds the left eigenvectors
+  const CMat& Y;
+  bool symmetric;
+  const std::vector<ModeLabel>& labels;
+};
+
+// The mode of the oscillating root `lam`, root j of the state matrix and
+// column `col` of its eigenvector in V: its displacements v, the left vector
+// w, the shares of strain energy |w^T K_label v| (docs/model.md §9) and the
+// shape v / v_big. False where the null vector v is not defined (a repeated
+// eigenvalue; only where values_only).
+bool ModeFromRoot(const Block& b, const std::complex<double>& lam, int j, int col, Mode* mode) {
+  const MechanicalSystem& s = b.s;
+  const std::vector<int>& dofs = b.dofs;
+  const int k = static_cast<int>(dofs.size());
+  const double modulus = Modulus(lam);
+  mode->eigenvalue = lam;
+  mode->frequency_hz = lam.imag() / (2 * M_PI);
+  mode->damping_ratio = -lam.real() / modulus;
+  DofVec v(k);
+  if (b.values_only) {
+    v = NullVector(s, dofs, lam, /*left=*/false);
+    if (v.size() == 0) return false;
+  } else {
+    const double sign = col == j ? 1 : -1;
+    for (int a = 0; a < k; ++a) v[a] = {b.P(a, j), sign * b.P(a, j + 1)};
+  }
+  // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
+  // standstill v if symmetric, else the left null vector; at speed, or
+  // where that is not defined (a repeated eigenvalue), w = M^-T y2 from
+  // the left eigenvector y of the state matrix.
+  DofVec w_left;
+  if (b.m == 0) w_left = b.symmetric ? v : NullVector(s, dofs, lam, /*left=*/true);
+  if (w_left.size() == 0 && b.have_left) {
+    w_left.resize(k);
+    for (int a = 0; a < k; ++a) w_left[a] = b.Y(col, k + a) / s.M()(dofs[a], dofs[a]);
+  } else if (w_left.size() == 0) {
+    w_left = b.m > 0 ? DofVec(v.conjugate()) : v;
+  }
+  mode->energy.fill(0);
+  // Unlabelled couplings (k_xy) count in the total, not for any label.
+  std::complex<double> rest = Bilinear(w_left, s.K(), dofs, v);
+  double total = 0;
+  for (ModeLabel l : b.labels) {
+    const std::complex<double> e = Bilinear(w_left, s.K_label(l), dofs, v);
+    mode->energy[static_cast<int>(l)] = Modulus(e);
+    total += Modulus(e);
+    rest -= e;
+  }
+  total += Modulus(rest);
+  if (!(total > 0) || !std::isfinite(total)) total = 1;
+  for (double& e : mode->energy) e /= total;
+  int big = 0;
+  for (int a = 1; a < k; ++a) {
+    if (std::norm(v[a]) > std::norm(v[big])) big = a;
+  }
+  const std::complex<double> inverse_pivot = 1.0 / v[big];
+  mode->shape.setZero();
+  for (int a = 0; a < k; ++a) mode->shape[dofs[a]] = v[a] * inverse_pivot;
+  return true;
+}
+
+// The derivatives of the block's modes (AddDerivatives, from A's derivatives
+// in `jets`), where the left eigenvectors exist; else why not, in
+// out->derivatives_undefined, and none.
+void BlockDerivatives(const BasicSystem<ParameterJet>& jets, const std::vector<int>& dofs,
+                      bool have_left, const CVec& lambda, const CMat& V, const CMat& Y,
+                      const std::vector<int>& columns, std::vector<Mode>* modes,
+                      ModalSolution* out) {
+  if (have_left && out->derivatives_undefined.empty()) {
+    double same_w;
+    const MatOf<ParameterJet> dA = StateMatrix(jets, dofs, BlockLags(jets, dofs), &same_w);
+    if (!AddDerivatives(dA, lambda, V, Y, dofs, columns, modes, &out->derivatives_undefined)) {
+      for (Mode& mode : *modes) mode.derivatives.reset();
+    }
+  } else if (!have_left) {
+    out->derivatives_undefined = "the eigenvectors of a block are not independent";
+  }
+}
+
+// One-to-one labels: maximise the product of energy shares. The modes are
+// appended to out->modes, labels left without a mode to out->vanished. False
+// where a mode gets no label.
+bool AssignLabels(std::vector<Mode>* modes, const std::vector<ModeLabel>& labels,
+                  ModalSolution* out) {
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kNumLabels, kNumLabels> score(
+      modes->size(), labels.size());
+  for (size_t i = 0; i < modes->size(); ++i) {
+    for (size_t l = 0; l < labels.size(); ++l) {
+      const double e = (*modes)[i].energy[static_cast<int>(labels[l])];
+      score(i, l) = std::log(std::max(e, 1e-300));
+    }
+  }
+  const std::vector<int> pick = AssignMaxScore(score);
+  std::array<bool, kNumLabels> used{};
+  for (size_t i = 0; i < modes->size(); ++i) {
+    if (pick[i] < 0) {
+      out->error = "could not label the modes of a block";
+      return false;
+    }
+    (*modes)[i].label = labels[pick[i]];
+    used[pick[i]] = true;
+    out->modes.push_back(std::move((*modes)[i]));
+  }
+  for (size_t l = 0; l < labels.size(); ++l) {
+    if (!used[l]) out->vanished.push_back(labels[l]);
+  }
+  return true;
+}
+
+// Solves one block of coupled degrees of freedom and appends its modes: the
+// roots, the left vectors where needed, a mode from each oscillating root
+// (the others are real roots), their derivatives and labels.
 bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets,
                 const std::vector<int>& dofs, ModalSolution* out,
                 bool vectors_from_solver = false) {
@@ -307,85 +516,24 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   // eigenvectors; where the null vector is not defined, Eigen's.
   const bool values_only = !jets && m == 0 && k <= 3 && !vectors_from_solver;
   const int n = 2 * k + m;
-  // A P = P D: a pair u +- i v (v > 0, the first) has the eigenvectors
-  // P_j +- i P_j+1; a pair whose v is rounding is two real roots
-  // (EigenSolver::pseudoEigenvalueMatrix).
+  // A P = P D (EigenSolver::pseudoEigenvectors).
   Eigen::EigenSolver<Mat> es;
-  Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMaxState, 1> ev(n);
-  if (values_only && k == 1) {
-    // One degree of freedom: m lambda^2 + c lambda + k = 0 in closed form,
-    // Eigen's order (the root with Im > 0 first); real roots without
-    // cancellation.
-    const int d = dofs[0];
-    const double mass = s.M()(d, d), c = s.C()(d, d), kk = s.K()(d, d);
-    const double disc = c * c - 4 * mass * kk;
-    if (disc < 0) {
-      const double re = -c / (2 * mass), im = std::sqrt(-disc) / (2 * mass);
-      ev << std::complex<double>(re, im), std::complex<double>(re, -im);
-    } else {
-      const double q = -0.5 * (c + std::copysign(std::sqrt(disc), c));
-      ev << q / mass, q != 0 ? kk / q : 0.0;
-    }
-  } else {
-    es.compute(A, /*computeEigenvectors=*/!values_only);
-    if (es.info() != Eigen::Success) {
-      out->error = "eigen-solution did not converge";
-      return false;
-    }
-    ev = es.eigenvalues();
-  }
+  RootVec ev(n);
+  if (!Roots(s, dofs, A, values_only, &es, &ev, &out->error)) return false;
   static const Mat kNone;
   const Mat& P = values_only ? kNone : es.pseudoEigenvectors();
   if (!ev.allFinite() || !P.allFinite()) {
     out->error = "eigen-solution is not finite";
     return false;
   }
-  const auto is_pair = [&](int j) {
-    return j + 1 < n &&
-           !(std::abs(ev[j].imag()) <= 2 * std::numeric_limits<double>::epsilon() * std::abs(ev[j].real()));
-  };
   // Left eigenvectors (rows of V^-1) where the modes need them: at speed,
   // for the energy shares, for derivatives, and at a repeated eigenvalue.
   CVec lambda;
   CMat V, Y;
   bool have_left = false;
-  if (jets || m > 0 || vectors_from_solver) {
-    lambda = ev;
-    V.resize(n, n);
-    for (int j = 0; j < n; ++j) {
-      if (is_pair(j)) {
-        const std::complex<double> i(0, 1);
-        V.col(j) = P.col(j) + i * P.col(j + 1);
-        V.col(j + 1) = P.col(j) - i * P.col(j + 1);
-        ++j;
-      } else {
-        lambda[j] = ev[j].real();
-        V.col(j) = P.col(j);
-      }
-    }
-    Y = Eigen::PartialPivLU<CMat>(V).inverse();
-    have_left = Y.allFinite();
-  }
-
-  std::vector<ModeLabel> labels;
-  labels.reserve(k);
-  for (int l = 0; l < kNumLabels; ++l) {
-    const auto label = static_cast<ModeLabel>(l);
-    const int home = static_cast<int>(LabelHome(label));
-    if (std::find(dofs.begin(), dofs.end(), home) != dofs.end()) {
-      labels.push_back(label);
-    }
-  }
-  // Where M, C and K are symmetric over the block, left and right vectors
-  // of lambda^2 M + lambda C + K coincide.
-  bool symmetric = true;
-  for (int a = 0; a < k && symmetric; ++a) {
-    for (int b = 0; b < a && symmetric; ++b) {
-      const int i = dofs[a], j = dofs[b];
-      symmetric = s.M()(i, j) == s.M()(j, i) && s.C()(i, j) == s.C()(j, i) &&
-                  s.K()(i, j) == s.K()(j, i);
-    }
-  }
+  if (jets || m > 0 || vectors_from_solver) have_left = LeftVectors(ev, P, &lambda, &V, &Y);
+  const std::vector<ModeLabel> labels = BlockLabels(dofs);
+  const Block block{s, dofs, m, values_only, P, have_left, Y, Symmetric(s, dofs), labels};
 
   std::vector<Mode> modes;
   std::vector<int> columns;  // of each mode in V
@@ -393,7 +541,7 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
   columns.reserve(k + m);
   const size_t real_roots_before = out->real_roots.size();
   for (int j = 0; j < n; ++j) {
-    const bool pair = is_pair(j);
+    const bool pair = IsPair(ev, j);
     const std::complex<double> lam(ev[j].real(), pair ? std::abs(ev[j].imag()) : 0.0);
     const double modulus = Modulus(lam);
     const double tiny = 1e-10 * std::max(1.0, modulus);
@@ -406,91 +554,18 @@ bool SolveBlock(const MechanicalSystem& s, const BasicSystem<ParameterJet>* jets
       j += pair;
       continue;
     }
-    Mode mode;
-    mode.eigenvalue = lam;
-    mode.frequency_hz = lam.imag() / (2 * M_PI);
-    mode.damping_ratio = -lam.real() / modulus;
     const int col = ev[j].imag() > 0 ? j : j + 1;  // of v in V
-    DofVec v(k);
-    if (values_only) {
-      v = NullVector(s, dofs, lam, /*left=*/false);
-      if (v.size() == 0) {  // a repeated eigenvalue: Eigen's vectors
-        out->real_roots.resize(real_roots_before);
-        return SolveBlock(s, jets, dofs, out, /*vectors_from_solver=*/true);
-      }
-    } else {
-      const double sign = col == j ? 1 : -1;
-      for (int a = 0; a < k; ++a) v[a] = {P(a, j), sign * P(a, j + 1)};
+    Mode mode;
+    if (!ModeFromRoot(block, lam, j, col, &mode)) {  // a repeated eigenvalue: Eigen's vectors
+      out->real_roots.resize(real_roots_before);
+      return SolveBlock(s, jets, dofs, out, /*vectors_from_solver=*/true);
     }
-    // w^T (lambda^2 M + lambda C + K) = 0 (docs/model.md section 9): at
-    // standstill v if symmetric, else the left null vector; at speed, or
-    // where that is not defined (a repeated eigenvalue), w = M^-T y2 from
-    // the left eigenvector y of the state matrix.
-    DofVec w_left;
-    if (m == 0) w_left = symmetric ? v : NullVector(s, dofs, lam, /*left=*/true);
-    if (w_left.size() == 0 && have_left) {
-      w_left.resize(k);
-      for (int a = 0; a < k; ++a) w_left[a] = Y(col, k + a) / s.M()(dofs[a], dofs[a]);
-    } else if (w_left.size() == 0) {
-      w_left = m > 0 ? DofVec(v.conjugate()) : v;
-    }
-    mode.energy.fill(0);
-    // Unlabelled couplings (k_xy) count in the total, not for any label.
-    std::complex<double> rest = Bilinear(w_left, s.K(), dofs, v);
-    double total = 0;
-    for (ModeLabel l : labels) {
-      const std::complex<double> e = Bilinear(w_left, s.K_label(l), dofs, v);
-      mode.energy[static_cast<int>(l)] = Modulus(e);
-      total += Modulus(e);
-      rest -= e;
-    }
-    total += Modulus(rest);
-    if (!(total > 0) || !std::isfinite(total)) total = 1;
-    for (double& e : mode.energy) e /= total;
-    int big = 0;
-    for (int a = 1; a < k; ++a) {
-      if (std::norm(v[a]) > std::norm(v[big])) big = a;
-    }
-    const std::complex<double> inverse_pivot = 1.0 / v[big];
-    mode.shape.setZero();
-    for (int a = 0; a < k; ++a) mode.shape[dofs[a]] = v[a] * inverse_pivot;
     modes.push_back(std::move(mode));
     columns.push_back(col);
     ++j;
   }
-  if (jets && have_left && out->derivatives_undefined.empty()) {
-    double same_w;
-    const MatOf<ParameterJet> dA = StateMatrix(*jets, dofs, BlockLags(*jets, dofs), &same_w);
-    if (!AddDerivatives(dA, lambda, V, Y, dofs, columns, &modes, &out->derivatives_undefined)) {
-      for (Mode& mode : modes) mode.derivatives.reset();
-    }
-  } else if (jets && !have_left) {
-    out->derivatives_undefined = "the eigenvectors of a block are not independent";
-  }
-  // One-to-one labels: maximise the product of energy shares.
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kNumLabels, kNumLabels> score(
-      modes.size(), labels.size());
-  for (size_t i = 0; i < modes.size(); ++i) {
-    for (size_t l = 0; l < labels.size(); ++l) {
-      const double e = modes[i].energy[static_cast<int>(labels[l])];
-      score(i, l) = std::log(std::max(e, 1e-300));
-    }
-  }
-  const std::vector<int> pick = AssignMaxScore(score);
-  std::array<bool, kNumLabels> used{};
-  for (size_t i = 0; i < modes.size(); ++i) {
-    if (pick[i] < 0) {
-      out->error = "could not label the modes of a block";
-      return false;
-    }
-    modes[i].label = labels[pick[i]];
-    used[pick[i]] = true;
-    out->modes.push_back(std::move(modes[i]));
-  }
-  for (size_t l = 0; l < labels.size(); ++l) {
-    if (!used[l]) out->vanished.push_back(labels[l]);
-  }
-  return true;
+  if (jets) BlockDerivatives(*jets, dofs, have_left, lambda, V, Y, columns, &modes, out);
+  return AssignLabels(&modes, labels, out);
 }
 
 }  // namespace
@@ -595,166 +670,6 @@ ModalSolution SolveModes(const MechanicalSystem& s, const BasicSystem<ParameterJ
             });
   out.ok = true;
   return out;
-}
-
-namespace {
-
-// |a^H b|^2 / (|a|^2 |b|^2): the complex MAC of two displacement shapes.
-double ComplexMac(const ShapeVector& a, const ShapeVector& b) {
-  const double ab = std::norm(a.dot(b));
-  const double aa = a.squaredNorm(), bb = b.squaredNorm();
-  return aa > 0 && bb > 0 ? ab / (aa * bb) : 0;
-}
-
-// How Follow accepts the assignment by shape (docs/rolling.md §5).
-enum class Rule {
-  kShape,  // as it is
-  // A step in speed: every pair looks alike (MAC >= 0.8) and each eigenvalue
-  // lies less than half the distance from its prediction (`expected`, else
-  // its predecessor) to the nearest other prediction of shared support.
-  kStep,
-  // A nearby point at the same speed, with as many modes: every pair looks
-  // alike (MAC >= 0.9), and each other predecessor of shared support is told
-  // apart by shape (MAC < 0.5) or lies farther from the new eigenvalue than
-  // the pair's own. With roughly orthogonal shapes the first clause decides.
-  kNear,
-};
-
-// Gives `next` the labels of `prev` by shape, where `rule` accepts the
-// assignment. A mode with no predecessor (a real pair turned oscillatory)
-// takes a label that had vanished, its own by energy where it can.
-bool Follow(const ModalSolution& prev, ModalSolution* next, Rule rule,
-            const std::vector<std::complex<double>>& expected = {}) {
-  const int np = static_cast<int>(prev.modes.size());
-  const int nn = static_cast<int>(next->modes.size());
-  if (np == 0 || nn == 0) return nn == np;
-  if (rule == Rule::kNear && nn != np) return false;  // a pair turned real or back
-  Eigen::MatrixXd mac(nn, np);
-  for (int i = 0; i < nn; ++i) {
-    for (int j = 0; j < np; ++j) mac(i, j) = ComplexMac(next->modes[i].shape, prev.modes[j].shape);
-  }
-  std::vector<int> pick(nn, -1);
-  if (nn <= np) {
-    pick = AssignMaxScore(mac);
-  } else {
-    const std::vector<int> back = AssignMaxScore(mac.transpose());
-    for (int j = 0; j < np; ++j) {
-      if (back[j] >= 0) pick[back[j]] = j;
-    }
-  }
-  const auto shared = [&](int o, int j) {
-    return ((prev.modes[o].shape.cwiseAbs().array() > 0) &&
-            (prev.modes[j].shape.cwiseAbs().array() > 0)).any();
-  };
-  for (int i = 0; i < nn; ++i) {
-    const int j = pick[i];
-    if (j < 0 || rule == Rule::kShape) continue;
-    if (mac(i, j) < (rule == Rule::kStep ? 0.8 : 0.9)) return false;
-    const auto before = [&](int k) {
-      return expected.empty() ? prev.modes[k].eigenvalue : expected[k];
-    };
-    const std::complex<double> now = next->modes[i].eigenvalue, was = before(j);
-    double limit = std::numeric_limits<double>::infinity();
-    for (int o = 0; o < np; ++o) {
-      if (o == j || !shared(o, j)) continue;
-      const std::complex<double> other = before(o);
-      if (rule == Rule::kStep) {
-        limit = std::min(limit, 0.5 * std::abs(other - was));
-      } else if (mac(i, o) >= 0.5) {
-        limit = std::min(limit, std::abs(other - now));
-      }
-    }
-    if (std::abs(now - was) > limit) return false;
-  }
-  std::vector<ModeLabel> free = prev.vanished;
-  std::vector<bool> used(np, false);
-  for (int i = 0; i < nn; ++i) {
-    if (pick[i] < 0) continue;
-    next->modes[i].label = prev.modes[pick[i]].label;
-    used[pick[i]] = true;
-  }
-  for (int i = 0; i < nn; ++i) {
-    if (pick[i] >= 0) continue;
-    auto it = std::find(free.begin(), free.end(), next->modes[i].label);
-    if (it == free.end()) {
-      it = std::find_if(free.begin(), free.end(),
-                        [&](ModeLabel l) { return LabelPlane(l) == next->modes[i].plane(); });
-    }
-    if (it == free.end()) return false;
-    next->modes[i].label = *it;
-    free.erase(it);
-  }
-  for (int j = 0; j < np; ++j) {
-    if (!used[j]) free.push_back(prev.modes[j].label);
-  }
-  next->vanished = free;
-  return true;
-}
-
-}  // namespace
-
-std::optional<ModalSolution> SolveNear(const ModalSolution& near, const MechanicalSystem& system,
-                                       const BasicSystem<ParameterJet>* jets) {
-  if (!near.ok) return std::nullopt;
-  ModalSolution next = SolveModes(system, jets);
-  if (!next.ok || !Follow(near, &next, Rule::kNear)) return std::nullopt;
-  return next;
-}
-
-bool SameLabelsNear(const ModalSolution& near, const ModalSolution& at) {
-  if (!near.ok || !at.ok) return false;
-  ModalSolution carried = at;
-  if (!Follow(near, &carried, Rule::kNear)) return false;
-  for (size_t i = 0; i < at.modes.size(); ++i) {
-    if (carried.modes[i].label != at.modes[i].label) return false;
-  }
-  return true;
-}
-
-ModalSolution SolveRolling(
-    const std::function<MechanicalSystem(double)>& assemble, double speed,
-    ModalSolution standing,
-    const std::function<BasicSystem<ParameterJet>(double)>& assemble_jets, bool* forced) {
-  if (forced) *forced = false;
-  ModalSolution prev = std::move(standing);
-  if (!prev.ok || !(speed > 0)) return prev;
-  // Below this step the assignment by shape is taken as it is (an exact
-  // degeneracy, where continuation has no direction to follow).
-  const double finest = speed / 256;
-  double at = 0, step = speed;
-  // The step before `prev`, to predict each eigenvalue by linear extrapolation.
-  ModalSolution older;
-  double older_at = 0;
-  while (at < speed) {
-    const double to = std::min(speed, at + step);
-    std::optional<BasicSystem<ParameterJet>> jets;
-    if (assemble_jets && to == speed) jets = assemble_jets(to);
-    ModalSolution next = SolveModes(assemble(to), jets ? &*jets : nullptr);
-    if (!next.ok) return next;
-    std::vector<std::complex<double>> expected;
-    for (const Mode& m : prev.modes) {
-      const Mode* o = older.ok ? older.Find(m.label) : nullptr;
-      const double ahead = (to - at) / (at - older_at);
-      expected.push_back(o ? m.eigenvalue + (m.eigenvalue - o->eigenvalue) * ahead : m.eigenvalue);
-    }
-    const bool coarse = step <= finest;
-    if (Follow(prev, &next, coarse ? Rule::kShape : Rule::kStep, expected)) {
-      if (coarse && forced) *forced = true;
-      older = std::move(prev);
-      older_at = at;
-      prev = std::move(next);
-      at = to;
-      step *= 2;
-    } else if (coarse) {
-      next.ok = false;
-      next.error = "the modes at " + std::to_string(to) + " m/s cannot be matched to those at " +
-                   std::to_string(at) + " m/s";
-      return next;
-    } else {
-      step /= 4;
-    }
-  }
-  return prev;
 }
 
 }  // namespace ringid

@@ -88,6 +88,8 @@ double BalancingFrequency(double largest_k_over_m);
 ModalSolution SolveModes(const MechanicalSystem& system,
                          const BasicSystem<ParameterJet>* jets = nullptr);
 
+// Labels by continuation (model/continuation.cc).
+
 // The modes at `speed` of the systems assemble(v), labelled by continuation
 // from standstill: each step in speed pairs modes by shape (MAC) and keeps
 // each eigenvalue nearer its prediction (linear in speed from the two steps

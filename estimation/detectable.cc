@@ -1,0 +1,179 @@
+#include "estimation/detectable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include <Eigen/SVD>
+
+#include "estimation/fit.h"
+#include "estimation/parallel.h"
+#include "estimation/problem.h"
+#include "estimation/residuals.h"
+#include "estimation/setup.h"
+#include "estimation/uncertainty.h"
+#include "model/effects.h"
+
+namespace ringid {
+
+using internal::LocalFit;
+using internal::ParameterSetup;
+
+namespace {
+
+// Noise-free data of `truth` under `model`, measured as `dataset` was (the
+// same modes, observables, degrees of freedom and sigmas). False when a
+// measured mode is lost.
+bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& dataset,
+               ShapeConvention convention, Dataset* out) {
+  std::vector<ModalSolution> solutions;  // per condition, at its speed
+  for (const Condition& c : dataset.conditions) {
+    solutions.push_back(model.Solve(truth, c.speed_m_s));
+    if (!solutions.back().ok) return false;
+  }
+  *out = dataset;
+  for (MeasuredMode& m : out->modes) {
+    const Mode* mode = solutions[m.condition].Find(m.label);
+    if (!mode) return false;
+    m.frequency_hz = mode->frequency_hz;
+    if (m.damping_ratio) m.damping_ratio = mode->damping_ratio;
+    const RealShapeVector u = ComparableShape(*mode, convention);
+    for (auto& [dof, v] : m.shape) v = u[static_cast<int>(dof)];
+  }
+  return true;
+}
+
+// The cost at which the baseline, re-calibrated from the calibrated point
+// with the diagnosis' prior, fits noise-free data of `truth` under `model`:
+// what the diagnosis would see of the difference, noise aside.
+double RecalibratedCost(const RigidRingModel& baseline, const ModalModel& model,
+                        const Parameters& truth, const Dataset& warm,
+                        const DiagnoseOptions& o) {
+  Dataset data;
+  if (!Remeasure(model, truth, warm, o.fit.residuals.shape_convention, &data)) return INFINITY;
+  Status status;
+  const auto problem = Problem::Create(baseline, data, o.fit.residuals, &status);
+  if (!problem) return NAN;
+  const Eigen::VectorXd x0 = problem->start();
+  const LocalFit fit = FitLocally(problem->residuals(), Method::kLevenbergMarquardt, x0,
+                                  BoundsAround(problem->setup(), x0, o.fit.bound_factor, o.fit.bounds),
+                                  o.fit.max_iterations, o.fit.simplex);
+  return fit.cost;
+}
+
+// RecalibratedCost of the calibrated point with `effect`'s parameter `p` at
+// `value` (its other parameters known, or at a typical value).
+double AbsorbedCost(const RigidRingModel& baseline, const Effect& effect, Param p, double value,
+                    const IdentifySummary& calibrated,
+                    const Dataset& warm, const DiagnoseOptions& o) {
+  Parameters truth = calibrated.parameters;
+  for (Param q : effect.parameters()) {
+    if (q == p) truth[q] = value;
+    else if (warm.known.count(q)) truth[q] = warm.known.at(q);
+    else truth[q] = Info(q).domain == Domain::kPositive ? TypicalScale(q) : 0.0;
+  }
+  return RecalibratedCost(baseline, baseline.With(&effect), truth, warm, o);
+}
+
+// The linearised detectable size `linear` of `p`, checked against the
+// re-calibrated baseline (AbsorbedCost) and moved by secant steps in log-log
+// until the likelihood ratio is within a factor 1.5 of `detect`. A column
+// outside the baseline's span can be absorbed at second order (a compliant
+// hub against softer stiffnesses): the linear size then promises too much.
+// `zero` is RecalibratedCost of the calibrated baseline itself.
+double CheckedDetectable(const RigidRingModel& baseline, const Effect& effect, Param p,
+                         double linear, const IdentifySummary& calibrated,
+                         const Dataset& warm, const DiagnoseOptions& o, double zero, double detect) {
+  if (!std::isfinite(linear) || !(linear > 0) || !std::isfinite(zero)) return linear;
+  double v = linear, v_prev = 0, lr_prev = 0;
+  for (int step = 0; step < 5; ++step) {
+    const double lr = 2 * (AbsorbedCost(baseline, effect, p, v, calibrated, warm, o) - zero);
+    if (!std::isfinite(lr)) return v;  // a mode is lost: certainly seen
+    if (lr > detect / 1.5 && lr < detect * 1.5) return v;
+    double next;
+    if (!(lr > 1e-3 * detect)) {
+      next = 4 * v;  // absorbed: no slope to follow
+    } else {
+      double k = 2;  // a likelihood ratio grows as the size squared at first order
+      if (v_prev > 0 && lr_prev > 1e-3 * detect && v != v_prev) {
+        k = std::clamp(std::log(lr / lr_prev) / std::log(v / v_prev), 1.0, 8.0);
+      }
+      next = v * std::pow(detect / lr, 1 / k);
+    }
+    v_prev = v, lr_prev = lr;
+    v = next;
+  }
+  return v;
+}
+
+}  // namespace
+
+namespace internal {
+
+std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
+                                                const Effect& effect, const Dataset& warm,
+                                                const Eigen::MatrixXd& J_base, int rank,
+                                                const DiagnoseOptions& o, double detect) {
+  std::map<std::string, double> out;
+  const RigidRingModel model = baseline.With(&effect);
+  Dataset at = warm;
+  for (Param p : effect.parameters()) {
+    if (!at.known.count(p)) at.initial[p] = TypicalScale(p);  // away from a kink at 0
+  }
+  Status status;
+  const auto problem = Problem::Create(model, at, o.fit.residuals, &status);
+  Eigen::MatrixXd J;
+  if (!problem || !EvaluateJacobian(problem->residuals(), problem->start(), &J) ||
+      J.rows() != J_base.rows()) {
+    return out;
+  }
+  const ParameterSetup& setup = problem->setup();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_base, Eigen::ComputeThinU);
+  const Eigen::MatrixXd U = svd.matrixU().leftCols(rank);
+  for (int c = static_cast<int>(J_base.cols()); c < J.cols(); ++c) {
+    const Eigen::VectorXd j = J.col(c);
+    const double outside = (j - U * (U.transpose() * j)).norm();
+    const Param p = setup.free()[c];
+    // A parameter that cannot be 0 (the hub mass m_a) sizes nothing.
+    if (Info(p).domain == Domain::kPositive) continue;
+    out[ParamName(p)] = outside > 0 ? std::sqrt(detect) / outside * TypicalScale(p) : INFINITY;
+  }
+  return out;
+}
+
+std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
+                            const DiagnoseOptions& o, DiagnosisReport* r) {
+  const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
+  struct Size {
+    const Effect* effect;
+    Param p;
+    double* v;
+  };
+  std::vector<Size> sizes;
+  for (EffectFit& f : r->ranking) {
+    for (auto& [name, v] : f.minimal_detectable) sizes.push_back({f.effect, *ParseParam(name), &v});
+  }
+  DiagnoseOptions one_thread = o;
+  one_thread.fit.threads = 1;
+  internal::ParallelFor(static_cast<int>(sizes.size()), o.fit.threads, [&](int k) {
+    const Size& s = sizes[k];
+    *s.v = CheckedDetectable(baseline, *s.effect, s.p, *s.v, r->baseline, warm, one_thread, zero,
+                             o.detectable_likelihood_ratio);
+  });
+  std::ostringstream small;
+  for (EffectFit& f : r->ranking) {
+    for (auto& [name, v] : f.minimal_detectable) {
+      char b[96];
+      std::snprintf(b, sizeof b, "%s%s |%s| < %.3g", small.tellp() ? ", " : "", f.effect->name(),
+                    name.c_str(), v);
+      small << b;
+    }
+  }
+  return small.str();
+}
+
+}  // namespace internal
+
+}  // namespace ringid
