@@ -15,7 +15,7 @@ namespace ringid {
 
 using nlohmann::json;
 
-json ParameterSetJson(const IdentifySummary& s, const std::string& name,
+json ParameterSetJson(const IdentifyResult& s, const std::string& name,
                       const std::string& description) {
   json r;
   r["format"] = "ringid-parameters/1";

@@ -14,7 +14,7 @@
 namespace ringid {
 
 // A parameter set (see LoadParameterSet in datasets/dataset.h).
-nlohmann::json ParameterSetJson(const IdentifySummary& s, const std::string& name,
+nlohmann::json ParameterSetJson(const IdentifyResult& s, const std::string& name,
                                 const std::string& description);
 
 // A report as text. Paths and names from the command line need not be UTF-8:

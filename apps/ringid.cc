@@ -88,7 +88,7 @@ int IdentifyCommand(int argc, char** argv) {
     return Campaign(
         argc, argv, ReportKind::kIdentify, model,
         [&](const Dataset& d, const std::string& file) {
-          IdentifySummary s;
+          IdentifyResult s;
           Identify(model, d, o, &s);
           CampaignItem item;
           item.report = ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, s}});
@@ -104,7 +104,7 @@ int IdentifyCommand(int argc, char** argv) {
   Dataset d;
   if (!ReadFitInputs(&o, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(model, d, o, &s);
   if (s.status.invalid_input()) return Usage(FLAGS_dataset + ": " + s.status.message);
   std::printf("%s", s.FullReport().c_str());
@@ -128,9 +128,9 @@ int IdentifiabilityCommand(int argc, char** argv) {
   Dataset d;
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(model, d, o, &r);
-  return Finish<IdentifiabilityFile>(argc, argv, d, r);
+  return Finish<IdentifiabilityReport>(argc, argv, d, r);
 }
 
 int CompareCommand(int argc, char** argv) {
@@ -140,7 +140,7 @@ int CompareCommand(int argc, char** argv) {
   Dataset d;
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
-  ComparisonReport r;
+  ComparisonResult r;
   {
     Progress progress("compare", 2 * o.fit.starts);
     o.on_fit = [&] { progress.Add(); };
@@ -227,7 +227,7 @@ int DiagnoseCommand(int argc, char** argv) {
     return Campaign(
         argc, argv, ReportKind::kDiagnose, baseline,
         [&](const Dataset& d, const std::string& file) {
-          DiagnosisReport r;
+          DiagnosisResult r;
           Diagnose(baseline, d, o, &r);
           CampaignItem item;
           item.report = ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}});
@@ -248,7 +248,7 @@ int DiagnoseCommand(int argc, char** argv) {
   Dataset d;
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel baseline(effects);
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(baseline, d, o, &r);
   return Finish<DiagnoseReport>(argc, argv, d, r);
 }

@@ -25,7 +25,7 @@ std::string ReportsMarkdown() {
          std::to_string(kReportSchemaVersion) + ".\n\n" +
          Section<IdentifyReport>("ringid identify --output=FILE") +
          Section<PredictReport>("ringid predict --output=FILE") +
-         Section<IdentifiabilityFile>("ringid identifiability --output=FILE") +
+         Section<IdentifiabilityReport>("ringid identifiability --output=FILE") +
          Section<CompareReport>("ringid compare --output=FILE") +
          Section<DiagnoseReport>("ringid diagnose --output=FILE") +
          Section<CampaignReport>("ringid identify|diagnose --output_dir=DIR (DIR/campaign.json)") +

@@ -93,7 +93,7 @@ void Fit(benchmark::State& state, bool in_plane_only, Derivatives derivatives) {
   o.residuals.derivatives = derivatives;
   for (auto _ : state) {
     const RigidRingModel model;  // a cold standstill cache
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(model, d, o, &s);
     if (!s.status.ok()) state.SkipWithError("fit failed");
     benchmark::DoNotOptimize(s);
@@ -130,7 +130,7 @@ void BM_JointFit(benchmark::State& state, std::vector<double> speeds, Derivative
   o.residuals.derivatives = derivatives;
   for (auto _ : state) {
     const RigidRingModel model;  // a cold standstill cache
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(model, d, o, &s);
     if (!s.status.ok()) state.SkipWithError("fit failed");
     benchmark::DoNotOptimize(s);

@@ -61,8 +61,8 @@ bool CompareOptions::IsValid(std::string* why) const {
 }
 
 void CompareMethods(const ModalModel& model, const Dataset& dataset,
-                    const CompareOptions& o, ComparisonReport* r) {
-  *r = ComparisonReport{};
+                    const CompareOptions& o, ComparisonResult* r) {
+  *r = ComparisonResult{};
   std::string why;
   if (!o.IsValid(&why)) {
     r->status = Status::InvalidInput(why);
@@ -129,7 +129,7 @@ void CompareMethods(const ModalModel& model, const Dataset& dataset,
   r->status = Status::Success();
 }
 
-std::string ComparisonReport::FullReport() const {
+std::string ComparisonResult::FullReport() const {
   std::ostringstream o;
   char line[256];
   if (!status.ok()) return "ringid compare: FAILED: " + status.message + "\n";

@@ -37,7 +37,7 @@ struct MethodRun {
   double seconds_per_fit = 0;
   double median_evaluations = 0;
 
-  template <class Archive>  // keyed by method in ComparisonReport
+  template <class Archive>  // keyed by method in ComparisonResult
   void Serialize(Archive* a) {
     a->Visit("final_costs", &final_costs);
     a->Derived("starts", final_costs.size());
@@ -54,7 +54,7 @@ struct MethodRun {
   }
 };
 
-struct ComparisonReport {
+struct ComparisonResult {
   Status status;
   int starts = 0;
   double best_cost = 0;
@@ -87,7 +87,7 @@ struct ComparisonReport {
 };
 
 void CompareMethods(const ModalModel& model, const Dataset& dataset,
-                    const CompareOptions& options, ComparisonReport* report);
+                    const CompareOptions& options, ComparisonResult* report);
 
 }  // namespace ringid
 

@@ -66,7 +66,7 @@ double RecalibratedCost(const RigidRingModel& baseline, const ModalModel& model,
 // RecalibratedCost of the calibrated point with `effect`'s parameter `p` at
 // `value` (its other parameters known, or at a typical value).
 double AbsorbedCost(const RigidRingModel& baseline, const Effect& effect, Param p, double value,
-                    const IdentifySummary& calibrated,
+                    const IdentifyResult& calibrated,
                     const Dataset& warm, const DiagnoseOptions& o) {
   Parameters truth = calibrated.parameters;
   for (Param q : effect.parameters()) {
@@ -84,7 +84,7 @@ double AbsorbedCost(const RigidRingModel& baseline, const Effect& effect, Param 
 // hub against softer stiffnesses): the linear size then promises too much.
 // `zero` is RecalibratedCost of the calibrated baseline itself.
 double CheckedDetectable(const RigidRingModel& baseline, const Effect& effect, Param p,
-                         double linear, const IdentifySummary& calibrated,
+                         double linear, const IdentifyResult& calibrated,
                          const Dataset& warm, const DiagnoseOptions& o, double zero, double detect) {
   if (!std::isfinite(linear) || !(linear > 0) || !std::isfinite(zero)) return linear;
   double v = linear, v_prev = 0, lr_prev = 0;
@@ -144,7 +144,7 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
 }
 
 std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
-                            const DiagnoseOptions& o, DiagnosisReport* r) {
+                            const DiagnoseOptions& o, DiagnosisResult* r) {
   const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);
   struct Size {
     const Effect* effect;

@@ -29,7 +29,7 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
 // row's minimal_detectable), checked beyond first order and updated in `r`,
 // as text ("" when there are none).
 std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
-                            const DiagnoseOptions& o, DiagnosisReport* r);
+                            const DiagnoseOptions& o, DiagnosisResult* r);
 
 }  // namespace internal
 }  // namespace ringid

@@ -76,7 +76,7 @@ std::vector<double> ModeChi2(const std::vector<ModalResiduals::Slot>& slots,
 }
 
 // `dataset` with its free parameters seeded at `fitted` (a warm start).
-Dataset WarmStart(const Dataset& dataset, const IdentifySummary& fitted) {
+Dataset WarmStart(const Dataset& dataset, const IdentifyResult& fitted) {
   Dataset d = dataset;
   for (const ParameterEstimate& e : fitted.estimates) {
     if (e.free) d.initial[e.param()] = e.value;
@@ -106,7 +106,7 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
   for (size_t j = 0; j < warm.modes.size(); ++j) {
     Dataset without = held;
     without.modes.erase(without.modes.begin() + j);
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(model, without, one, &s);
     if (!s.status.ok()) return std::nullopt;
     std::vector<ModalResiduals::Slot> slots;
@@ -136,7 +136,7 @@ double InitialCost(const ModalModel& model, const Dataset& dataset, const Residu
 // cost has failed: the next seed of the scan is tried, up to kEffectSeeds.
 constexpr int kEffectSeeds = 4;
 constexpr int kEffectStarts = 3;
-IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect, const Dataset& warm,
+IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, const Dataset& warm,
                           const Dataset& dataset, double baseline_cost,
                           const DiagnoseOptions& o) {
   IdentifyOptions one = o.fit;
@@ -159,14 +159,14 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect, con
   for (const auto& [cost, d] : seeds) {
     if (std::isfinite(cost)) starts.push_back(&d);
   }
-  IdentifySummary best;
+  IdentifyResult best;
   int tried = 0;
   for (const Dataset* start : starts) {
     // Two seeds always (0 and the scan's best); more while none reached the baseline.
     if (tried >= 2 && best.status.ok() && best.cost <= baseline_cost + kEffectFitSlack) break;
     if (tried >= kEffectSeeds) break;
     ++tried;
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(model, *start, one, &s);
     if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
     if (!best.status.ok() && best.status.message.empty()) best = s;
@@ -186,7 +186,7 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect, con
   }
   IdentifyOptions multi = o.fit;
   multi.starts = std::min(o.fit.starts, kEffectStarts);
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(model, cold, multi, &s);
   if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
   return best;
@@ -195,7 +195,7 @@ IdentifySummary FitEffect(const RigidRingModel& model, const Effect& effect, con
 }  // namespace
 
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
-                         const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0);
+                         const DiagnoseOptions& o, DiagnosisResult* r, std::chrono::steady_clock::time_point t0);
 
 std::string internal::HeldOutChange(double before, double after) {
   std::ostringstream o;
@@ -228,9 +228,9 @@ bool DiagnoseOptions::IsValid(std::string* why) const {
 }
 
 void Diagnose(const RigidRingModel& baseline, const Dataset& dataset, const DiagnoseOptions& o,
-              DiagnosisReport* r) {
+              DiagnosisResult* r) {
   const auto t0 = std::chrono::steady_clock::now();
-  *r = DiagnosisReport{};
+  *r = DiagnosisResult{};
   std::string why;
   if (!o.IsValid(&why)) {
     r->status = Status::InvalidInput("invalid options: " + why);
@@ -250,7 +250,7 @@ namespace {
 // Baseline parameters that had absorbed part of the gap: those the verdict's
 // fit `with` moves beyond o.absorbed_factor from the baseline's optimum, or
 // without a verdict those beyond kPriorConflictZ of a declared prior.
-std::vector<std::string> Absorbed(const IdentifySummary& calibrated, const IdentifySummary* with,
+std::vector<std::string> Absorbed(const IdentifyResult& calibrated, const IdentifyResult* with,
                                   const DiagnoseOptions& o) {
   std::vector<std::string> absorbed;
   char line[200];
@@ -279,12 +279,12 @@ std::vector<std::string> Absorbed(const IdentifySummary& calibrated, const Ident
 // evidence for it against the baseline.
 // `fitted` receives the effect's fit.
 EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, const Dataset& warm,
-                       const Dataset& dataset, const DiagnosisReport& r, const DiagnoseOptions& o,
-                       IdentifySummary* fitted) {
+                       const Dataset& dataset, const DiagnosisResult& r, const DiagnoseOptions& o,
+                       IdentifyResult* fitted) {
   EffectFit f;
   f.effect = &effect;
   const RigidRingModel model = baseline.With(&effect);
-  const IdentifySummary s = FitEffect(model, effect, warm, dataset, r.baseline.cost, o);
+  const IdentifyResult s = FitEffect(model, effect, warm, dataset, r.baseline.cost, o);
   *fitted = s;
   if (!s.status.ok()) {
     f.note = s.status.message;
@@ -338,7 +338,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
 // max(|difference in parameters|, 1) degrees of freedom (a likelihood-ratio
 // threshold; exact for nested effects), each with its difference and
 // threshold recorded. Returns the others in words ("" when none).
-std::string Group(const EffectFit& best, const DiagnoseOptions& o, DiagnosisReport* r) {
+std::string Group(const EffectFit& best, const DiagnoseOptions& o, DiagnosisResult* r) {
   std::ostringstream others;
   char b[160];
   for (EffectFit& f : r->ranking) {
@@ -361,7 +361,7 @@ std::string Group(const EffectFit& best, const DiagnoseOptions& o, DiagnosisRepo
 // The verdict from the ranking: the supported effect of least AIC, its group
 // (Group), and in words why.
 void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vector<double>& before,
-             const DiagnoseOptions& o, DiagnosisReport* r, std::ostringstream* why) {
+             const DiagnoseOptions& o, DiagnosisResult* r, std::ostringstream* why) {
   r->level = o.effect_significance;
   const EffectFit* best = nullptr;
   for (const EffectFit& f : r->ranking) {
@@ -405,7 +405,7 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
 
 // Whether `s`, a fit with `effect`, holds the effect at 0 (it is then the
 // baseline's model).
-bool EffectOff(const Effect& effect, const IdentifySummary& s) {
+bool EffectOff(const Effect& effect, const IdentifyResult& s) {
   for (Param p : effect.parameters()) {
     if (Info(p).domain != Domain::kPositive &&
         !(std::abs(s.parameters[p]) <= 1e-6 * TypicalScale(p))) {
@@ -416,10 +416,10 @@ bool EffectOff(const Effect& effect, const IdentifySummary& s) {
 }
 
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
-                         const DiagnoseOptions& o, DiagnosisReport* r, std::chrono::steady_clock::time_point t0) {
+                         const DiagnoseOptions& o, DiagnosisResult* r, std::chrono::steady_clock::time_point t0) {
   // The gap: calibrate the baseline by the multistart of Identify.
   Identify(baseline, dataset, o.fit, &r->baseline);
-  std::vector<IdentifySummary> fits;
+  std::vector<IdentifyResult> fits;
   // A candidate that holds its effect at 0 and still fits better than the
   // baseline shows that the baseline missed its optimum: re-calibrate from
   // that point and start again (at most twice).
@@ -441,7 +441,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     }
     const int n = static_cast<int>(candidates.size());
     r->ranking.assign(n, EffectFit{});
-    fits.assign(n, IdentifySummary{});
+    fits.assign(n, IdentifyResult{});
     // Candidates on o.fit.threads, each fit within one.
     DiagnoseOptions one_thread = o;
     one_thread.fit.threads = 1;
@@ -451,7 +451,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     });
     int better = -1;
     for (int k = 0; k < n; ++k) {
-      const IdentifySummary& s = fits[k];
+      const IdentifyResult& s = fits[k];
       if (s.status.ok() && s.cost < r->baseline.cost - 0.5 * kSameOptimumChiSquare &&
           EffectOff(*candidates[k], s) && (better < 0 || s.cost < fits[better].cost)) {
         better = k;
@@ -460,7 +460,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     if (better < 0 || attempt == 2) break;
     IdentifyOptions one = o.fit;
     one.starts = 1;
-    IdentifySummary recalibrated;
+    IdentifyResult recalibrated;
     Dataset from = WarmStart(dataset, fits[better]);
     for (Param q : r->ranking[better].effect->parameters()) from.initial.erase(q);
     Identify(baseline, from, one, &recalibrated);
@@ -499,7 +499,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     return x.aic < y.aic;
   });
   std::vector<EffectFit> ranking;
-  std::vector<IdentifySummary> ranked_fits;
+  std::vector<IdentifyResult> ranked_fits;
   for (int k : order) {
     ranking.push_back(std::move(r->ranking[k]));
     ranked_fits.push_back(std::move(fits[k]));
@@ -507,7 +507,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   r->ranking = std::move(ranking);
   std::ostringstream why;
   Verdict(baseline, warm, before, o, r, &why);
-  const IdentifySummary* verdict_fit = nullptr;
+  const IdentifyResult* verdict_fit = nullptr;
   for (size_t k = 0; k < r->ranking.size(); ++k) {
     if (r->verdict && r->ranking[k].effect == r->verdict) verdict_fit = &ranked_fits[k];
   }
@@ -522,7 +522,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string DiagnosisReport::FullReport() const {
+std::string DiagnosisResult::FullReport() const {
   std::ostringstream o;
   char line[256];
   if (!status.ok()) return "ringid diagnose: FAILED: " + status.message + "\n";

@@ -128,10 +128,10 @@ struct EffectFit {
   }
 };
 
-struct DiagnosisReport {
+struct DiagnosisResult {
   Status status;
   // The gap: the calibrated baseline.
-  IdentifySummary baseline;
+  IdentifyResult baseline;
   double chi2_before = 0;
   int dof = 0;
   std::optional<double> p_value;  // none when no degree of freedom is left
@@ -189,7 +189,7 @@ struct DiagnosisReport {
 // of sizes. Nothing depends on the dataset's initial values beyond the
 // baseline's starts.
 void Diagnose(const RigidRingModel& baseline, const Dataset& dataset,
-              const DiagnoseOptions& options, DiagnosisReport* report);
+              const DiagnoseOptions& options, DiagnosisResult* report);
 
 }  // namespace ringid
 

@@ -198,7 +198,7 @@ void StructuralDirections(const Uncertainty& u, const ParameterSetup& setup, Com
 // whose combination is structural is listed as that already, not again.
 void CollinearPairs(const Eigen::MatrixXd& J, const ParameterSetup& setup,
                     const IdentifiabilityOptions& o, CombinationList* list,
-                    IdentifiabilityReport* r) {
+                    IdentifiabilityResult* r) {
   const int n = setup.size();
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
@@ -496,9 +496,9 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
 
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                             const IdentifiabilityOptions& o,
-                            IdentifiabilityReport* r) {
+                            IdentifiabilityResult* r) {
   const auto t0 = std::chrono::steady_clock::now();
-  *r = IdentifiabilityReport{};
+  *r = IdentifiabilityResult{};
   std::string why;
   if (!o.IsValid(&why)) {
     r->status = r->fit.status = Status::InvalidInput("invalid options: " + why);
@@ -537,7 +537,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string IdentifiabilityReport::FullReport() const {
+std::string IdentifiabilityResult::FullReport() const {
   std::ostringstream o;
   char line[512];
   o << "ringid identifiability: " << (status.ok() ? "" : "FAILED: " + status.message) << "\n";

@@ -97,7 +97,7 @@ struct ParameterIdentifiability {
 
   Param param() const { return key.param; }
 
-  template <class Archive>  // keyed by key in IdentifiabilityReport
+  template <class Archive>  // keyed by key in IdentifiabilityResult
   void Serialize(Archive* a) {
     a->Visit("value", &value);
     a->Visit("identifiable", &identifiable);
@@ -152,9 +152,9 @@ struct Advice {
   }
 };
 
-struct IdentifiabilityReport {
+struct IdentifiabilityResult {
   Status status;
-  IdentifySummary fit;
+  IdentifyResult fit;
   int rank = 0;
   int num_residuals = 0;
   double condition_number = 0;
@@ -192,7 +192,7 @@ struct IdentifiabilityReport {
 
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                             const IdentifiabilityOptions& options,
-                            IdentifiabilityReport* report);
+                            IdentifiabilityResult* report);
 
 }  // namespace ringid
 

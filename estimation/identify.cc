@@ -294,7 +294,7 @@ bool ParameterEstimate::PriorConflict() const {
   return prior_z && std::abs(*prior_z) > kPriorConflictZ;
 }
 
-std::string IdentifySummary::PriorConflicts() const {
+std::string IdentifyResult::PriorConflicts() const {
   std::string list;
   char item[160];
   for (const ParameterEstimate& e : estimates) {
@@ -311,7 +311,7 @@ std::string IdentifySummary::PriorConflicts() const {
          ". Either the prior is wrong or the model misses what the data show (ringid diagnose).";
 }
 
-std::string IdentifySummary::OnBounds() const {
+std::string IdentifyResult::OnBounds() const {
   std::string list;
   for (const ParameterEstimate& e : estimates) {
     if (!e.on_bound) continue;
@@ -359,7 +359,7 @@ std::string FewObservables(const ModalResiduals& residuals) {
 // `s`; returns the best fit, the first of equal costs.
 LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const IdentifyOptions& o,
                        const Problem& problem, const Eigen::VectorXd& x0, const Box& box,
-                       IdentifySummary* s, std::vector<Eigen::VectorXd>* ends) {
+                       IdentifyResult* s, std::vector<Eigen::VectorXd>* ends) {
   const ModalResiduals& residuals = problem.residuals();
   const int starts = problem.setup().size() == 0 ? 1 : o.starts;
   auto usable = [&](const Eigen::VectorXd& x) {
@@ -418,7 +418,7 @@ FitQuality JudgeFit(const ModalResiduals& residuals, double cost, const Uncertai
 // s->modes, and the sums of squared relative frequency errors in and out of
 // plane (NaN where a plane has no mode).
 void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const IdentifyOptions& o,
-              const Eigen::VectorXd& x, IdentifySummary* s) {
+              const Eigen::VectorXd& x, IdentifyResult* s) {
   std::string why;
   std::vector<ModalSolution> solutions;
   std::vector<int> pairs;
@@ -507,9 +507,9 @@ bool IdentifyOptions::IsValid(std::string* why) const {
 }
 
 void Identify(const ModalModel& model, const Dataset& dataset,
-              const IdentifyOptions& o, IdentifySummary* s) {
+              const IdentifyOptions& o, IdentifyResult* s) {
   const auto t0 = std::chrono::steady_clock::now();
-  *s = IdentifySummary{};
+  *s = IdentifyResult{};
   s->method = o.method;
   s->frequency_weighting = o.residuals.frequency_weighting;
   std::string why;
@@ -565,7 +565,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   s->seconds = Seconds(t0);
 }
 
-std::string IdentifySummary::BriefReport() const {
+std::string IdentifyResult::BriefReport() const {
   std::ostringstream o;
   o << "ringid identify (" << ToString(method) << "): "
     << (status.ok() ? (converged ? "converged" : "not converged") : "FAILED")
@@ -575,7 +575,7 @@ std::string IdentifySummary::BriefReport() const {
   return o.str();
 }
 
-std::string IdentifySummary::FullReport() const {
+std::string IdentifyResult::FullReport() const {
   std::ostringstream o;
   char line[256];
   o << BriefReport() << "\n";

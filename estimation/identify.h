@@ -115,7 +115,7 @@ struct ParameterEstimate {
   // (|prior_z| > kPriorConflictZ): one of the two is wrong.
   bool PriorConflict() const;
 
-  template <class Archive>  // keyed by key in IdentifySummary
+  template <class Archive>  // keyed by key in IdentifyResult
   void Serialize(Archive* a) {
     a->Visit("value", &value);
     a->Derived("unit", std::string(Info(key.param).unit));
@@ -232,7 +232,7 @@ struct StartAgreement {
   }
 };
 
-struct IdentifySummary {
+struct IdentifyResult {
   // Success: a fit was obtained, and message says how the winning start
   // stopped; invalid input: nothing was fitted.
   Status status;
@@ -310,7 +310,7 @@ struct IdentifySummary {
 // Never aborts: invalid setups and numerical failures come back in
 // summary->success / message.
 void Identify(const ModalModel& model, const Dataset& dataset,
-              const IdentifyOptions& options, IdentifySummary* summary);
+              const IdentifyOptions& options, IdentifyResult* summary);
 
 }  // namespace ringid
 

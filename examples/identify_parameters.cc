@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
                                      : "usage: identify_parameters DATASET.json [REPORT.json]");
     return 2;
   }
-  ringid::IdentifySummary summary;
+  ringid::IdentifyResult summary;
   ringid::Identify(ringid::RigidRingModel(), dataset, ringid::IdentifyOptions(), &summary);
   std::printf("%s\n", summary.BriefReport().c_str());
   for (const ringid::ParameterEstimate& e : summary.estimates) {

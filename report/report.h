@@ -192,11 +192,14 @@ struct Report {
   }
 };
 
-using IdentifyReport = Report<ReportKind::kIdentify, DatasetBody<IdentifySummary>>;
+// Names: a *Result is what the library returns (IdentifyResult, ...); a
+// *Report is the file written, that result in the envelope above.
+using IdentifyReport = Report<ReportKind::kIdentify, DatasetBody<IdentifyResult>>;
 using PredictReport = Report<ReportKind::kPredict, PredictBody>;
-using IdentifiabilityFile = Report<ReportKind::kIdentifiability, DatasetBody<IdentifiabilityReport>>;
-using CompareReport = Report<ReportKind::kCompare, DatasetBody<ComparisonReport>>;
-using DiagnoseReport = Report<ReportKind::kDiagnose, DatasetBody<DiagnosisReport>>;
+using IdentifiabilityReport =
+    Report<ReportKind::kIdentifiability, DatasetBody<IdentifiabilityResult>>;
+using CompareReport = Report<ReportKind::kCompare, DatasetBody<ComparisonResult>>;
+using DiagnoseReport = Report<ReportKind::kDiagnose, DatasetBody<DiagnosisResult>>;
 using CampaignReport = Report<ReportKind::kCampaign, CampaignBody>;
 
 // The report as JSON text (two-space indent, a final newline). Strings that

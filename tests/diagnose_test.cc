@@ -38,12 +38,12 @@ Dataset Withheld(const char* effect, Param p, double value, unsigned seed) {
 }
 
 // `baseline`: the model the diagnosis calibrates first.
-DiagnosisReport DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
+DiagnosisResult DiagnoseWithheld(const char* effect, Param p, double value, unsigned seed,
                                  bool held_out = false,
                                  const RigidRingModel& baseline = RigidRingModel()) {
   DiagnoseOptions o;
   o.held_out = held_out;
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(baseline, Withheld(effect, p, value, seed), o, &r);
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
@@ -63,7 +63,7 @@ TEST(DiagnoseTest, PerConditionParametersAreRefusedAsInput) {
   d.per_condition = {Param::F_cz0};
   d.conditions[0].known[Param::F_cz0] = d.known.at(Param::F_cz0);
   d.known.erase(Param::F_cz0);
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(RigidRingModel(), d, DiagnoseOptions(), &r);
   EXPECT_TRUE(r.status.invalid_input());
   EXPECT_NE(r.status.message.find("per_condition"), std::string::npos) << r.status.message;
@@ -77,7 +77,7 @@ TEST(DiagnoseTest, TheReportIsTheSameOnOneThreadAndOnSeveral) {
   for (int threads : {1, 3}) {
     DiagnoseOptions o;
     o.fit.threads = threads;
-    DiagnosisReport r;
+    DiagnosisResult r;
     Diagnose(RigidRingModel(), d, o, &r);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     Json j = Json::parse(ReportText(DiagnoseReport{{}, {d.name, r}}));
@@ -96,14 +96,14 @@ TEST(DiagnoseTest, TheReportIsTheSameOnOneThreadAndOnSeveral) {
 
 TEST(DiagnoseTest, NoEffectNoAlarm) {
   for (unsigned seed : {1u, 2u}) {
-    const DiagnosisReport r = DiagnoseWithheld(nullptr, Param::m_b, 0, seed);
+    const DiagnosisResult r = DiagnoseWithheld(nullptr, Param::m_b, 0, seed);
     EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
     for (const EffectFit& f : r.ranking) EXPECT_FALSE(f.supported) << EffectName(f.effect);
   }
 }
 
 TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
-  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3);
+  const DiagnosisResult r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3);
   EXPECT_STREQ(EffectName(r.verdict), "lug_coupling") << r.explanation;
   EXPECT_GT(r.ranking.front().shrink, 0.8);
   EXPECT_TRUE(r.significant);
@@ -112,7 +112,7 @@ TEST(DiagnoseTest, NamesLugCouplingAndShrinksTheGap) {
 // With the withheld effect in the baseline there is no gap left to explain,
 // and that effect is not tried again.
 TEST(DiagnoseTest, ABaselineWithTheWithheldEffectLeavesNoGap) {
-  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, false,
+  const DiagnosisResult r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, false,
                                              RigidRingModel({FindEffect("lug_coupling")}));
   EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
   EXPECT_FALSE(r.significant) << r.chi2_before << " on " << r.dof;
@@ -123,7 +123,7 @@ TEST(DiagnoseTest, ABaselineWithTheWithheldEffectLeavesNoGap) {
 // Held-out modes, each predicted from a fit without it: the withheld effect
 // predicts them far better than the re-calibrated baseline.
 TEST(DiagnoseTest, TheEffectPredictsHeldOutModes) {
-  const DiagnosisReport r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, true);
+  const DiagnosisResult r = DiagnoseWithheld("lug_coupling", Param::k_xy, 1.5e5, 3, true);
   ASSERT_STREQ(EffectName(r.verdict), "lug_coupling") << r.explanation;
   ASSERT_TRUE(r.held_out_before.has_value());
   const EffectFit& lug = r.ranking.front();
@@ -133,7 +133,7 @@ TEST(DiagnoseTest, TheEffectPredictsHeldOutModes) {
 }
 
 TEST(DiagnoseTest, NamesASoftHub) {
-  const DiagnosisReport r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-7, 3);
+  const DiagnosisResult r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-7, 3);
   EXPECT_STREQ(EffectName(r.verdict), "hub_compliance") << r.explanation;
   // Where: the hub components of the measured shapes carry the gap.
   bool hub = false;
@@ -145,7 +145,7 @@ TEST(DiagnoseTest, NamesASoftHub) {
 
 TEST(DiagnoseTest, AnAbsorbableEffectIsNoneWithItsDetectableSize) {
   const double k_cpsi = 100;
-  const DiagnosisReport r = DiagnoseWithheld("contact_yaw_stiffness", Param::k_cpsi, k_cpsi, 3);
+  const DiagnosisResult r = DiagnoseWithheld("contact_yaw_stiffness", Param::k_cpsi, k_cpsi, 3);
   EXPECT_STREQ(EffectName(r.verdict), "none");
   bool stated = false;
   for (const EffectFit& f : r.ranking) {
@@ -163,7 +163,7 @@ TEST(DiagnoseTest, AnAbsorbableEffectIsNoneWithItsDetectableSize) {
 // absorbed, at twice that size it is named. (The first-order size from the
 // Jacobian alone promised 6e-8 here; the hub is absorbed at second order.)
 TEST(DiagnoseTest, TheStatedDetectableSizeOfTheHubHolds) {
-  const DiagnosisReport r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-8, 5);
+  const DiagnosisResult r = DiagnoseWithheld("hub_compliance", Param::s_h, 2e-8, 5);
   ASSERT_STREQ(EffectName(r.verdict), "none") << r.explanation;
   double detectable = 0;
   for (const EffectFit& f : r.ranking) {
@@ -171,7 +171,7 @@ TEST(DiagnoseTest, TheStatedDetectableSizeOfTheHubHolds) {
   }
   ASSERT_GT(detectable, 2e-8);
   EXPECT_EQ(DiagnoseWithheld("hub_compliance", Param::s_h, 0.5 * detectable, 5).verdict, nullptr);
-  const DiagnosisReport seen = DiagnoseWithheld("hub_compliance", Param::s_h, 2 * detectable, 5);
+  const DiagnosisResult seen = DiagnoseWithheld("hub_compliance", Param::s_h, 2 * detectable, 5);
   EXPECT_STREQ(EffectName(seen.verdict), "hub_compliance") << seen.explanation;
 }
 
@@ -180,7 +180,7 @@ TEST(DiagnoseTest, ThePapersData) {
   Dataset d;
   LoadError e;
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(RigidRingModel(), d, DiagnoseOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_STREQ(EffectName(r.verdict), "none") << r.explanation;
@@ -213,7 +213,7 @@ TEST(DiagnoseTest, ThePapersData) {
 
 // The paper's tire with an anisotropic sidewall (dk_bz, and dk_bpsi = 2000
 // N m/rad), seed 2, diagnosed against the standing baseline.
-DiagnosisReport DiagnoseSidewall(double dk_bz) {
+DiagnosisResult DiagnoseSidewall(double dk_bz) {
   Parameters truth = PaperIdentified();
   truth[Param::m_a] = 15;
   truth[Param::dk_bz] = dk_bz;
@@ -232,13 +232,13 @@ DiagnosisReport DiagnoseSidewall(double dk_bz) {
   d.priors[Param::k_cz] = {PriorDistribution::kLognormal, truth[Param::k_cz], 1.1};
   DiagnoseOptions o;
   o.held_out = false;
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(RigidRingModel(), d, o, &r);
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
 
-const EffectFit* FitOf(const DiagnosisReport& r, const char* effect) {
+const EffectFit* FitOf(const DiagnosisResult& r, const char* effect) {
   for (const EffectFit& f : r.ranking) {
     if (f.effect == FindEffect(effect)) return &f;
   }
@@ -256,7 +256,7 @@ const EffectFit* FitOf(const DiagnosisReport& r, const char* effect) {
 TEST(DiagnoseTest, AnEffectTheDataCannotRejectAgainstTheVerdictAtTheReportsLevelIsInItsGroup) {
   const double level = DiagnoseOptions().effect_significance;
   for (double dk_bz : {2e5, 6e5}) {
-    const DiagnosisReport r = DiagnoseSidewall(dk_bz);
+    const DiagnosisResult r = DiagnoseSidewall(dk_bz);
     const EffectFit* side = FitOf(r, "anisotropic_sidewall");
     const EffectFit* yaw = FitOf(r, "contact_yaw_stiffness");
     ASSERT_TRUE(side && yaw && side->ok && yaw->ok);

@@ -25,7 +25,7 @@ Dataset Table1() {
   return d;
 }
 
-const ParameterEstimate& Find(const IdentifySummary& s, Param p) {
+const ParameterEstimate& Find(const IdentifyResult& s, Param p) {
   for (const ParameterEstimate& e : s.estimates) {
     if (e.param() == p) return e;
   }
@@ -35,7 +35,7 @@ const ParameterEstimate& Find(const IdentifySummary& s, Param p) {
 
 TEST(IdentifyTest, LeastSquaresFitsTable1ExactlyAndSaysWhatItDetermines) {
   const Dataset d = Table1();
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, IdentifyOptions{}, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_LT(s.relative_error_in_plane, 1e-8);
@@ -55,7 +55,7 @@ TEST(IdentifyTest, SimplexBeatsThePapersStoppingPointOnTable1) {
   IdentifyOptions o;
   o.method = Method::kSimplex;
   o.starts = 1;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), Table1(), o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   // The paper's simplex stopped at 1.41e-3 (eq. 19) and 6.1e-3 (eq. 20): those
@@ -96,7 +96,7 @@ TEST(IdentifyTest, RecoversASyntheticTruthWithinItsReportedUncertainty) {
   const Dataset d = WellPosed(truth, &rng);
   IdentifyOptions o;
   o.starts = 2;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_EQ(s.uncertainty.rank, 10);
@@ -114,7 +114,7 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   IdentifyOptions o;
   o.starts = 1;
   // Reported standard deviations (log space) at one noisy replicate.
-  IdentifySummary first;
+  IdentifyResult first;
   Identify(RigidRingModel(), WellPosed(truth, &rng), o, &first);
   ASSERT_TRUE(first.status.ok());
   const int n = static_cast<int>(std::size(kFree));
@@ -122,7 +122,7 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   std::vector<double> sum(n, 0), sum2(n, 0);
   int inside = 0, total = 0;
   for (int r = 0; r < replicates; ++r) {
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(RigidRingModel(), WellPosed(truth, &rng), o, &s);
     ASSERT_TRUE(s.status.ok());
     for (int i = 0; i < n; ++i) {
@@ -163,7 +163,7 @@ TEST(IdentifyTest, FitQualityIsTheChiSquareOfItsDegreesOfFreedom) {
   double sum = 0, sum2 = 0;
   int dof = 0, poor = 0;
   for (int r = 0; r < replicates; ++r) {
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(RigidRingModel(), WellPosed(truth, &rng), o, &s);
     ASSERT_TRUE(s.status.ok());
     dof = s.fit.degrees_of_freedom;
@@ -188,7 +188,7 @@ TEST(IdentifyTest, FitQualityIsTheChiSquareOfItsDegreesOfFreedom) {
   std::string why;
   ASSERT_TRUE(Simulate(RigidRingModel({FindEffect("hub_compliance")}), with_hub,
                        SimulateOptions{}, &rng, &d, &why)) << why;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok());
   EXPECT_TRUE(s.fit.poor) << s.fit.verdict;
@@ -203,7 +203,7 @@ TEST(IdentifyTest, FitQualityIsTheChiSquareOfItsDegreesOfFreedom) {
 TEST(IdentifyTest, AnExactlyDeterminedFitSaysItCannotJudgeTheModel) {
   IdentifyOptions o;
   o.starts = 1;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), Table1(), o, &s);
   ASSERT_TRUE(s.status.ok());
   EXPECT_LE(s.fit.degrees_of_freedom, 0);
@@ -216,7 +216,7 @@ TEST(IdentifyTest, AnExactlyDeterminedFitSaysItCannotJudgeTheModel) {
 // exactly at that bound, flagged, and the report says so.
 TEST(IdentifyTest, AParameterLeftOnABoundIsFlagged) {
   IdentifyOptions o;
-  IdentifySummary s;
+  IdentifyResult s;
   const Parameters truth = PaperIdentified();
   std::mt19937_64 rng(3);
   const double k_bx = truth[Param::k_bx];
@@ -263,7 +263,7 @@ TEST(IdentifyTest, StructuralFreedomIsDecidedExactlyAndNamed) {
       d.known.erase(p);
       d.initial[p] = truth[p] * 1.2;
     }
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(RigidRingModel(), d, o, &s);
     ASSERT_TRUE(s.status.ok()) << s.status.message;
     for (Param p : {Param::K_cx, Param::sigma_cx}) {
@@ -298,7 +298,7 @@ TEST(ConditionalClassTest, TheTemplatesKcxIsYesOnlyGivenSigmaCxAndSaysWhatTheDat
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   const ParameterEstimate& k = Find(s, Param::K_cx);
@@ -317,7 +317,7 @@ TEST(ConditionalClassTest, TheTemplatesKcxIsYesOnlyGivenSigmaCxAndSaysWhatTheDat
 
   Dataset wrong = d;
   wrong.known[Param::sigma_cx] *= 1.3;
-  IdentifySummary w;
+  IdentifyResult w;
   Identify(RigidRingModel(), wrong, o, &w);
   ASSERT_TRUE(w.status.ok()) << w.status.message;
   EXPECT_NEAR(Find(w, Param::K_cx).value / k.value, 1.3, 1e-3);
@@ -331,7 +331,7 @@ TEST(ConditionalClassTest, AParameterWithNoKnownPartnerCarriesNone) {
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   for (Param p : {Param::k_bx, Param::k_btheta, Param::k_by, Param::c_bx}) {
@@ -357,7 +357,7 @@ TEST(ConditionalClassTest, WithoutShapesKbxIsYesOnlyGivenTheBeltMass) {
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   const ParameterEstimate& k = Find(s, Param::k_bx);
@@ -372,7 +372,7 @@ TEST(ConditionalClassTest, WithoutShapesKbxIsYesOnlyGivenTheBeltMass) {
 
   Dataset heavier = d;
   heavier.known[Param::m_b] *= 1.2;
-  IdentifySummary w;
+  IdentifyResult w;
   Identify(RigidRingModel(), heavier, o, &w);
   ASSERT_TRUE(w.status.ok()) << w.status.message;
   EXPECT_NEAR(Find(w, Param::k_bx).value / k.value, 1.2, 0.05);
@@ -385,7 +385,7 @@ TEST(ConditionalClassTest, OnTheDrumKcxWithSigmaCxFreeCarriesNone) {
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   for (Param p : {Param::K_cx, Param::sigma_cx}) {
@@ -402,7 +402,7 @@ TEST(IdentifyTest, DegenerateSetupsFailCleanly) {
   Dataset fixed = d;
   for (auto& [k, v] : fixed.initial) fixed.known[k] = v;
   fixed.initial.clear();
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), fixed, IdentifyOptions{}, &s);
   EXPECT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_EQ(s.uncertainty.rank, 0);
@@ -434,7 +434,7 @@ TEST(CompareTest, BothMethodsFromTheSameStartsAndThePapersOwnErrorsAtTable2) {
   CompareOptions o;
   o.fit.starts = 5;
   o.fit.simplex.max_evaluations = 5000;
-  ComparisonReport r;
+  ComparisonResult r;
   CompareMethods(RigidRingModel(), Table1(), o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_EQ(r.methods.size(), 2u);
@@ -482,7 +482,7 @@ TEST(PriorTest, APriorOnOneOfAStructuralPairDecidesItAndOnlyIt) {
   d.priors[Param::K_cx] = {PriorDistribution::kLognormal, median, factor};
   IdentifyOptions o;
   o.starts = 1;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   const ParameterEstimate& K = Find(s, Param::K_cx);
@@ -513,7 +513,7 @@ TEST(PriorTest, DataThatContradictAPriorAreNamedAsAConflict) {
   for (const double median : {0.5 * k_bx, k_bx}) {
     Dataset d = StandingCarTire({Param::k_bx, Param::k_btheta});
     d.priors[Param::k_bx] = {PriorDistribution::kLognormal, median, factor};
-    IdentifySummary s;
+    IdentifyResult s;
     Identify(RigidRingModel(), d, o, &s);
     ASSERT_TRUE(s.status.ok()) << s.status.message;
     const ParameterEstimate& e = Find(s, Param::k_bx);
@@ -629,7 +629,7 @@ TEST(PairingTest, StaysOneToOneWhenAShapeTakesTheModeOfAnotherLabel) {
 // camber and model camber near measured lateral; the shapes pair them across
 // the labels at the start, and the fit ends with every label matched.
 TEST(PairingTest, TheTemplateSaysItsSwappedStartAndNothingAtItsFit) {
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), Template(), IdentifyOptions{}, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   ASSERT_EQ(s.warnings.size(), 2u) << ::testing::PrintToString(s.warnings);
@@ -661,7 +661,7 @@ TEST(PairingTest, AStartWhoseModesAreSwappedAgainstTheDataIsSaid) {
 
 // Issue 21: Table 1 has 7 frequencies for 16 free parameters; it still runs.
 TEST(ObservablesTest, Table1SaysItHasFewerObservablesThanFreeParameters) {
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), Table1(), IdentifyOptions{}, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_TRUE(AnyContains(s.warnings, "7 measured mode(s) give 7 observable(s) (7 frequencies, 0 "
@@ -682,7 +682,7 @@ TEST(ObservablesTest, TwoModesSayTheyCannotSetFourteenParameters) {
     m.damping_ratio.reset();
     m.damping_sigma.reset();
   }
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, IdentifyOptions{}, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   ASSERT_EQ(s.coordinate_names.size(), 14u);

@@ -20,7 +20,7 @@ namespace {
 
 using testing::PaperIdentified;
 
-const ParameterIdentifiability& Find(const IdentifiabilityReport& r, Param p) {
+const ParameterIdentifiability& Find(const IdentifiabilityResult& r, Param p) {
   for (const auto& q : r.parameters) {
     if (q.param() == p) return q;
   }
@@ -28,7 +28,7 @@ const ParameterIdentifiability& Find(const IdentifiabilityReport& r, Param p) {
   return r.parameters.front();
 }
 
-bool HasMeaning(const IdentifiabilityReport& r, const std::string& text) {
+bool HasMeaning(const IdentifiabilityResult& r, const std::string& text) {
   for (const Combination& c : r.combinations) {
     if (c.meaning.find(text) != std::string::npos) return true;
   }
@@ -41,7 +41,7 @@ TEST(IdentifiabilityTest, Table1DeterminesOnlyRatiosOfContactStiffnessAndRelaxat
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
   IdentifiabilityOptions o;
   o.profile_steps = 0;  // the structure, not the intervals, is tested here
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 7);
@@ -87,7 +87,7 @@ TEST(IdentifiabilityTest, ProfileAndWaldIntervalsAgreeOnAWellPosedProblem) {
                               {Param::k_bx, Param::k_btheta, Param::K_cx, Param::k_by,
                                Param::k_bgamma, Param::c_by},
                               true);
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, IdentifiabilityOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 6);
@@ -106,7 +106,7 @@ TEST(IdentifiabilityTest, ProfileAndWaldIntervalsAgreeOnAWellPosedProblem) {
 // others refitted from the optimum: a refit of its own, independent of the
 // path the profile took to get there.
 double DeltaChi2At(const Dataset& d, const IdentifiabilityOptions& o,
-                   const IdentifiabilityReport& r, int i, double value) {
+                   const IdentifiabilityResult& r, int i, double value) {
   Status status;
   const auto problem = Problem::Create(RigidRingModel(), d, o.fit.residuals, &status);
   EXPECT_TRUE(problem) << status.message;
@@ -123,7 +123,7 @@ double DeltaChi2At(const Dataset& d, const IdentifiabilityOptions& o,
 }
 
 // The closed profile bounds as (coordinate, value).
-std::vector<std::pair<int, double>> ClosedBounds(const IdentifiabilityReport& r) {
+std::vector<std::pair<int, double>> ClosedBounds(const IdentifiabilityResult& r) {
   std::vector<std::pair<int, double>> bounds;
   for (int i = 0; i < static_cast<int>(r.parameters.size()); ++i) {
     const ProfileInterval& p = r.parameters[i].profile_95;
@@ -169,7 +169,7 @@ TEST(IdentifiabilityTest, FitsAndProfilesCrossWhereTwoComponentsOfAModelShapeTie
   o.residuals.derivatives = Derivatives::kAnalytic;
   Dataset from_truth = d;
   for (auto& [p, v] : from_truth.initial) v = truth[p];
-  IdentifySummary rough, near;
+  IdentifyResult rough, near;
   Identify(RigidRingModel(), d, o, &rough);
   Identify(RigidRingModel(), from_truth, o, &near);
   ASSERT_TRUE(rough.status.ok() && near.status.ok());
@@ -177,10 +177,10 @@ TEST(IdentifiabilityTest, FitsAndProfilesCrossWhereTwoComponentsOfAModelShapeTie
   // One standard deviation of c_bx from the better of the two, a refit of
   // the others gives about 1 in chi-square (near-linear: the in-plane block
   // does not involve the lateral shape).
-  const IdentifySummary& best = rough.cost < near.cost ? rough : near;
+  const IdentifyResult& best = rough.cost < near.cost ? rough : near;
   IdentifiabilityOptions io;
   io.fit = o;
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   r.fit = best;
   const auto e = std::find_if(best.estimates.begin(), best.estimates.end(),
                               [](const ParameterEstimate& p) { return p.param() == Param::c_bx; });
@@ -207,7 +207,7 @@ TEST(IdentifiabilityTest, EveryProfileBoundIsWhereAnIndependentRefitCrossesTheTh
     if (Info(p).group == Group::kOutOfPlane && d.initial.erase(p)) d.known[p] = truth[p];
   }
   const IdentifiabilityOptions o;
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_EQ(r.parameters.size(), 7u);
@@ -240,7 +240,7 @@ TEST(IdentifiabilityTest, ProfileBoundsAreRefittedCrossingsAndJumpsAreSaidApart)
   const Dataset d = SimulatedPaperTire(RigidRingModel({FindEffect("hub_compliance")}),
                                        {{Param::s_h, 2e-7}, {Param::m_a, 15}}, &truth);
   const IdentifiabilityOptions o;
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   for (int i = 0; i < static_cast<int>(r.parameters.size()); ++i) {
@@ -289,7 +289,7 @@ TEST(IdentifiabilityTest, AFailedRefitIsRetriedAndOnlyARealJumpIsSaid) {
       << e.OneLine();
   IdentifiabilityOptions o;
   o.fit.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary fit;
+  IdentifyResult fit;
   Identify(RigidRingModel(), d, o.fit, &fit);
   ASSERT_TRUE(fit.status.ok()) << fit.status.message;
   Status status;
@@ -346,7 +346,7 @@ TEST(IdentifiabilityTest, AFailedRefitIsRetriedAndOnlyARealJumpIsSaid) {
   EXPECT_GT(refit(lower, &x), kChiSquare1Dof95);
 
   // The report says it beside the bound, not as the bound.
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   r.status = Status::Success();
   ParameterIdentifiability q;
   q.key = setup.key(i);
@@ -376,7 +376,7 @@ TEST(IdentifiabilityTest, ASideWhereRefitsFailSaysWhereNotOpen) {
     if (m.label == ModeLabel::kCamber || m.label == ModeLabel::kVertical) d.modes.push_back(m);
   }
   ASSERT_EQ(d.modes.size(), 2u);
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, IdentifiabilityOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   const ParameterIdentifiability& c = Find(r, Param::c_bgamma);
@@ -415,7 +415,7 @@ TEST(IdentifiabilityTest, VerticalStiffnessesFromOneFrequencyAreOneCombination) 
                               {Param::k_bz, Param::k_cz, Param::k_btheta}, false);
   IdentifiabilityOptions o;
   o.profile_steps = 0;
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.rank, 2);
@@ -463,7 +463,7 @@ Dataset CarTireTest(const std::vector<double>& speeds, unsigned seed) {
 
 // The unit direction of a listed combination, from its terms, in the
 // report's coordinates.
-Eigen::VectorXd Direction(const IdentifiabilityReport& r, const Combination& c) {
+Eigen::VectorXd Direction(const IdentifiabilityResult& r, const Combination& c) {
   Eigen::VectorXd d = Eigen::VectorXd::Zero(r.coordinate_names.size());
   for (const auto& [name, coefficient] : c.terms) {
     const auto at = std::find(r.coordinate_names.begin(), r.coordinate_names.end(), name);
@@ -474,7 +474,7 @@ Eigen::VectorXd Direction(const IdentifiabilityReport& r, const Combination& c) 
 }
 
 // The unit direction moving `a` and `b` together in log coordinates.
-Eigen::VectorXd Together(const IdentifiabilityReport& r, const std::string& a, const std::string& b) {
+Eigen::VectorXd Together(const IdentifiabilityResult& r, const std::string& a, const std::string& b) {
   Eigen::VectorXd d = Eigen::VectorXd::Zero(r.coordinate_names.size());
   for (const std::string& name : {a, b}) {
     const auto at = std::find(r.coordinate_names.begin(), r.coordinate_names.end(), name);
@@ -486,7 +486,7 @@ Eigen::VectorXd Together(const IdentifiabilityReport& r, const std::string& a, c
 
 // No two listed combinations are one (to 1 %) up to a direction in the span
 // of `structural` (orthonormal columns), which no data can see.
-void ExpectEachCombinationOnce(const IdentifiabilityReport& r, const Eigen::MatrixXd& structural) {
+void ExpectEachCombinationOnce(const IdentifiabilityResult& r, const Eigen::MatrixXd& structural) {
   std::vector<Eigen::VectorXd> seen;
   for (const Combination& c : r.combinations) {
     const Eigen::VectorXd d = Direction(r, c);
@@ -509,7 +509,7 @@ void ExpectEachCombinationOnce(const IdentifiabilityReport& r, const Eigen::Matr
 
 // The unit direction along which the value k_bz + k_cz stays, in log
 // coordinates.
-Eigen::VectorXd SumStays(const IdentifiabilityReport& r) {
+Eigen::VectorXd SumStays(const IdentifiabilityResult& r) {
   Eigen::VectorXd d = Eigen::VectorXd::Zero(r.coordinate_names.size());
   for (size_t i = 0; i < r.parameters.size(); ++i) {
     if (r.parameters[i].param() == Param::k_bz) d[i] = 1 / r.parameters[i].value;
@@ -528,7 +528,7 @@ TEST(IdentifiabilityTest, EachCombinationIsListedOnceAndAStructuralPairOnlyAsStr
   IdentifiabilityOptions o;
   o.profile_steps = 0;
   o.fit.starts = 1;
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), CarTireTest({0}, 5), o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   const Eigen::VectorXd x = Together(r, "K_cx", "sigma_cx"), y = Together(r, "K_cy", "sigma_cy");
@@ -576,11 +576,11 @@ TEST(IdentifiabilityTest, TheIdentifiableSubsetHoldsNoParameterWithAComponentInA
   IdentifiabilityOptions o;
   o.profile_steps = 0;
   o.fit.starts = 1;
-  auto in = [](const IdentifiabilityReport& r, const std::string& name) {
+  auto in = [](const IdentifiabilityResult& r, const std::string& name) {
     return std::find(r.identifiable_subset.begin(), r.identifiable_subset.end(), name) !=
            r.identifiable_subset.end();
   };
-  IdentifiabilityReport r;
+  IdentifiabilityResult r;
   AnalyzeIdentifiability(RigidRingModel(), CarTireTest({0}, 5), o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   for (const char* name : {"K_cx", "sigma_cx", "K_cy", "sigma_cy"}) EXPECT_FALSE(in(r, name)) << name;
@@ -619,7 +619,7 @@ TEST(IdentifiabilityTest, AdvisedDrumTestMakesTheRelaxationLengthIdentifiable) {
   IdentifiabilityOptions o;
   o.profile_steps = 0;
   o.fit.starts = 1;
-  IdentifiabilityReport standing;
+  IdentifiabilityResult standing;
   AnalyzeIdentifiability(RigidRingModel(), CarTireTest({0}, 5), o, &standing);
   ASSERT_TRUE(standing.status.ok()) << standing.status.message;
   // Standing, only K_cx / sigma_cx enters.
@@ -634,7 +634,7 @@ TEST(IdentifiabilityTest, AdvisedDrumTestMakesTheRelaxationLengthIdentifiable) {
     }
   }
   ASSERT_GT(advised, 0) << "no drum test advised for sigma_cx";
-  IdentifiabilityReport rolling;
+  IdentifiabilityResult rolling;
   AnalyzeIdentifiability(RigidRingModel(), CarTireTest({0, advised}, 5), o, &rolling);
   ASSERT_TRUE(rolling.status.ok()) << rolling.status.message;
   EXPECT_EQ(Find(rolling, Param::sigma_cx).identifiable, Identifiability::kYes) << advised;

@@ -74,7 +74,7 @@ TEST(ReportTest, PredictRoundTripsByteForByte) {
 }
 
 TEST(ReportTest, IdentifiabilityRoundTripsByteForByte) {
-  ExpectRoundTrip<ringid::IdentifiabilityFile>(Made(
+  ExpectRoundTrip<ringid::IdentifiabilityReport>(Made(
       "identifiability --starts=1 --derivatives=analytic --dataset=" + Source("datasets/paper/table1.json"),
       "identifiability.json"));
 }

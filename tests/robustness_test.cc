@@ -36,7 +36,7 @@ Dataset Load(const std::string& relative) {
   return d;
 }
 
-const ParameterEstimate& Find(const IdentifySummary& s, Param p) {
+const ParameterEstimate& Find(const IdentifyResult& s, Param p) {
   for (const ParameterEstimate& e : s.estimates) {
     if (e.param() == p) return e;
   }
@@ -52,7 +52,7 @@ TEST(StartsTest, SwappedModesAtTheInitialPointStillFitFromTheDefaultStarts) {
   const Dataset d = Case("newcomer_standing_noshape.json");
   IdentifyOptions one;
   one.starts = 1;
-  IdentifySummary alone, s;
+  IdentifyResult alone, s;
   Identify(RigidRingModel(), d, one, &alone);
   Identify(RigidRingModel(), d, IdentifyOptions(), &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
@@ -73,7 +73,7 @@ TEST(StartsTest, RollingDataWithPriorsFitFromTheDefaultStarts) {
   const Dataset d = Case("newcomer_rolling_priors.json");
   IdentifyOptions o;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_FALSE(s.fit.poor) << s.fit.verdict;
@@ -153,7 +153,7 @@ TEST(StoppingTest, TableOneWithPriorsConvergesWithinTheDefaultIterations) {
   const Dataset d = Load("datasets/paper/table1_priors.json");
   IdentifyOptions o;
   o.starts = 1;
-  IdentifySummary s, crawled;
+  IdentifyResult s, crawled;
   Identify(RigidRingModel(), d, o, &s);
   o.stop_chi_square = 0;
   o.max_iterations = 5000;
@@ -179,7 +179,7 @@ TEST(StoppingTest, ACrawlToAKinkStopsWhenWhatItsGainsPromiseIsBelowTheResolution
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = Derivatives::kAnalytic;
-  IdentifySummary s, crawled;
+  IdentifyResult s, crawled;
   Identify(RigidRingModel(), d, o, &s);
   o.stop_chi_square = 0;
   Identify(RigidRingModel(), d, o, &crawled);
@@ -200,7 +200,7 @@ TEST(StoppingTest, ACrawlToAKinkStopsWhenWhatItsGainsPromiseIsBelowTheResolution
 TEST(StoppingTest, ProfileBoundsDoNotMoveWithTheStoppingRule) {
   const Dataset d = Load("datasets/template.json");
   IdentifiabilityOptions o;
-  IdentifiabilityReport loose, tight;
+  IdentifiabilityResult loose, tight;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &loose);
   o.fit.stop_chi_square = 0;
   AnalyzeIdentifiability(RigidRingModel(), d, o, &tight);
@@ -224,7 +224,7 @@ TEST(DiagnoseStartTest, EffectFreeRollingDataRaiseNoAlarm) {
   DiagnoseOptions o;
   o.held_out = false;
   o.fit.residuals.derivatives = Derivatives::kAnalytic;
-  DiagnosisReport r;
+  DiagnosisResult r;
   Diagnose(RigidRingModel(), Case("newcomer_rolling.json"), o, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.verdict, nullptr) << r.explanation;
@@ -251,7 +251,7 @@ TEST(DiagnoseStartTest, GuessAFactorThreeOffGetsTheVerdictOfTheTruth) {
   DiagnoseOptions o;
   o.held_out = false;
   o.fit.residuals.derivatives = Derivatives::kAnalytic;
-  DiagnosisReport a, b;
+  DiagnosisResult a, b;
   Diagnose(RigidRingModel(), rough, o, &a);
   Diagnose(RigidRingModel(), exact, o, &b);
   ASSERT_TRUE(a.status.ok() && b.status.ok());

@@ -14,7 +14,7 @@ namespace {
 
 // Whether a "none" verdict on a case with `effect` at `value` is explained by
 // the report's own minimal detectable size of that effect.
-bool AbsorbedAsStated(const DiagnosisReport& r, const Effect& effect, double value) {
+bool AbsorbedAsStated(const DiagnosisResult& r, const Effect& effect, double value) {
   for (const EffectFit& f : r.ranking) {
     if (f.effect != &effect) continue;
     const auto mde = f.minimal_detectable.find(ParamName(effect.size()));
@@ -95,7 +95,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite) {
       DiagnoseOptions dopt;
       dopt.held_out = false;  // reported by diagnose, not voted on; skipped for speed
       dopt.fit.residuals.derivatives = o.derivatives;
-      DiagnosisReport dr, from_truth;
+      DiagnosisResult dr, from_truth;
       Diagnose(RigidRingModel(), d, dopt, &dr);
       if (!dr.status.ok()) return Status::Failed(d.name + ": " + dr.status.message);
       Diagnose(RigidRingModel(), exact, dopt, &from_truth);

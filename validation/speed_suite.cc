@@ -109,7 +109,7 @@ Batch Fits(const Dataset& d, Derivatives derivatives) {
   return [d, io](long n) {
     for (long k = 0; k < n; ++k) {
       const RigidRingModel model;
-      IdentifySummary s;
+      IdentifyResult s;
       Identify(model, d, io, &s);
       if (!s.status.ok()) return false;
       g_sink = s.seconds;

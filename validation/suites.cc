@@ -91,7 +91,7 @@ Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite) {
     io.method = method;
     io.starts = 1;
     io.residuals.derivatives = o.derivatives;
-    IdentifySummary f;
+    IdentifyResult f;
     Identify(RigidRingModel(), table1, io, &f);
     suite->identify.push_back({method, f.relative_error_in_plane, f.relative_error_out_of_plane,
                                f.evaluations, f.seconds, f.uncertainty.rank});
@@ -126,7 +126,7 @@ Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
       IdentifyOptions io;
       io.starts = 1;
       io.residuals.derivatives = o.derivatives;
-      IdentifySummary f;
+      IdentifyResult f;
       Identify(RigidRingModel(), d, io, &f);
       if (!f.status.ok()) {
         ++failed;
@@ -179,7 +179,7 @@ Status RunConditioningSuite(const SuiteOptions& o, ConditioningSuite* suite) {
     IdentifiabilityOptions io;
     io.profile_steps = 0;
     io.fit.residuals.derivatives = o.derivatives;
-    IdentifiabilityReport a;
+    IdentifiabilityResult a;
     AnalyzeIdentifiability(RigidRingModel(), d, io, &a);
     if (!a.status.ok()) return Status::Failed(std::string(v.name) + ": " + a.status.message);
     ConditioningVariant row{v.name, a.num_residuals, a.rank, a.condition_number, {},
@@ -270,7 +270,7 @@ Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
     IdentifyOptions io;
     io.starts = 1;
     io.residuals.derivatives = o.derivatives;
-    IdentifySummary f;
+    IdentifyResult f;
     Identify(RigidRingModel(), d, io, &f);
     if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);
     if (!f.status.ok()) {

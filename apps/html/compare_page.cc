@@ -20,8 +20,8 @@ const char* MethodShortName(Method method) {
   return method == Method::kLevenbergMarquardt ? "LM" : "simplex";
 }
 
-void SummarySection(const DatasetBody<ComparisonReport>& body, Page* page) {
-  const ComparisonReport& r = body.result;
+void SummarySection(const DatasetBody<ComparisonResult>& body, Page* page) {
+  const ComparisonResult& r = body.result;
   FactRows facts = {
       {"dataset", TextCell(body.dataset)},
       {"status", NameCell(r.status.outcome)},
@@ -72,7 +72,7 @@ Cell BestStartCell(const std::vector<double>& values, std::optional<size_t> best
 }
 
 // The methods table; the most starts of a method.
-size_t MethodsSection(const ComparisonReport& r, Page* page) {
+size_t MethodsSection(const ComparisonResult& r, Page* page) {
   std::vector<Row> rows;
   size_t starts = 0;
   for (const MethodRun& m : r.methods) {
@@ -97,7 +97,7 @@ size_t MethodsSection(const ComparisonReport& r, Page* page) {
   return starts;
 }
 
-void PerStartSection(const ComparisonReport& r, size_t starts, Page* page) {
+void PerStartSection(const ComparisonResult& r, size_t starts, Page* page) {
   std::vector<std::string> head = {"start"};
   for (const MethodRun& m : r.methods) {
     head.push_back(std::string(MethodShortName(m.method)) + " final cost");
@@ -132,7 +132,7 @@ std::string InitialCostLine(double cost, double* high) {
 }
 
 // Final costs of every start, sorted, per method.
-void FinalCostFigure(const ComparisonReport& r, size_t starts, Page* page) {
+void FinalCostFigure(const ComparisonResult& r, size_t starts, Page* page) {
   Figure f("compare-final-costs", 800, 400);
   std::vector<std::string> parts;
   int dropped = 0;
@@ -191,7 +191,7 @@ Series ConvergenceSeries(const MethodRun& m, bool traces, bool* log_x) {
 }
 
 // Cost against evaluations: the traces when present, else the end points.
-void ConvergenceFigure(const ComparisonReport& r, Page* page) {
+void ConvergenceFigure(const ComparisonResult& r, Page* page) {
   Figure f("compare-convergence", 800, 420);
   std::vector<std::string> parts;
   bool traces = false, log_x = true;
@@ -229,7 +229,7 @@ void ConvergenceFigure(const ComparisonReport& r, Page* page) {
 }  // namespace
 
 void ComparePage(const CompareReport& report, Page* page) {
-  const ComparisonReport& r = report.body.result;
+  const ComparisonResult& r = report.body.result;
   SummarySection(report.body, page);
   const size_t starts = MethodsSection(r, page);
   PerStartSection(r, starts, page);

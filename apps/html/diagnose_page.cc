@@ -17,7 +17,7 @@ std::optional<double> Finite(double value) {
 }
 
 // The ranking entry of the verdict's effect, if any.
-const EffectFit* VerdictFit(const DiagnosisReport& report) {
+const EffectFit* VerdictFit(const DiagnosisResult& report) {
   for (const EffectFit& fit : report.ranking) {
     if (fit.effect == report.verdict) return &fit;
   }
@@ -25,7 +25,7 @@ const EffectFit* VerdictFit(const DiagnosisReport& report) {
 }
 
 FactRows SummaryFacts(const DiagnoseReport& report) {
-  const DiagnosisReport& r = report.body.result;
+  const DiagnosisResult& r = report.body.result;
   return {{"dataset", TextCell(report.body.dataset)},
           {"status", NameCell(r.status.outcome)},
           {"message", TextCell(r.status.message)},
@@ -87,7 +87,7 @@ std::map<std::string, Misfit> ReadMisfits(const std::vector<ModeMisfit>& where,
   return out;
 }
 
-Misfits ReadMisfits(const DiagnosisReport& report) {
+Misfits ReadMisfits(const DiagnosisResult& report) {
   Misfits misfits;
   const EffectFit* verdict = VerdictFit(report);
   misfits.has_after = verdict && !verdict->where.empty();
@@ -122,7 +122,7 @@ Row EffectRow(const EffectFit& fit) {
           ValuesCell(fit)};
 }
 
-void EffectsSection(const DiagnosisReport& report, Page* page) {
+void EffectsSection(const DiagnosisResult& report, Page* page) {
   std::vector<Row> rows;
   for (const EffectFit& fit : report.ranking) rows.push_back(EffectRow(fit));
   page->Heading("Effects, best first");
@@ -221,10 +221,10 @@ struct Ranking {
   std::vector<bool> supported;
   Series thresholds;  // the LR significant at the report's level, per effect
   double lr_min = 1, shrink_low = 0, shrink_high = 100;
-  double level = 0;  // of the tests (DiagnosisReport::level)
+  double level = 0;  // of the tests (DiagnosisResult::level)
 };
 
-Ranking ReadRanking(const DiagnosisReport& report) {
+Ranking ReadRanking(const DiagnosisResult& report) {
   Ranking out;
   out.level = report.level;
   for (const EffectFit& fit : report.ranking) {
@@ -276,7 +276,7 @@ std::string LikelihoodRatioPanel(Figure* figure, const Ranking& ranking) {
   return panel;
 }
 
-void RankingFigure(const DiagnosisReport& report, Page* page) {
+void RankingFigure(const DiagnosisResult& report, Page* page) {
   Ranking ranking = ReadRanking(report);
   if (ranking.effects.empty()) {
     page->Note("No ranking figure: no effect was fitted.");
@@ -339,7 +339,7 @@ void ShrinkFigure(const Misfits& misfits, const std::string& effect, Page* page)
 }  // namespace
 
 void DiagnosePage(const DiagnoseReport& report, Page* page) {
-  const DiagnosisReport& result = report.body.result;
+  const DiagnosisResult& result = report.body.result;
   page->Summary(SummaryFacts(report));
   EffectsSection(result, page);
   const Misfits misfits = ReadMisfits(result);

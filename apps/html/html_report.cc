@@ -37,7 +37,7 @@ struct PageKind {
 const PageKind kPageKinds[] = {
     {ReportKind::kIdentify, Typed<IdentifyReport, html::IdentifyPage>},
     {ReportKind::kPredict, Typed<PredictReport, html::PredictPage>},
-    {ReportKind::kIdentifiability, Typed<IdentifiabilityFile, html::IdentifiabilityPage>},
+    {ReportKind::kIdentifiability, Typed<IdentifiabilityReport, html::IdentifiabilityPage>},
     {ReportKind::kCompare, Typed<CompareReport, html::ComparePage>},
     {ReportKind::kDiagnose, Typed<DiagnoseReport, html::DiagnosePage>},
     {ReportKind::kCampaign, Typed<CampaignReport, html::CampaignPage>},

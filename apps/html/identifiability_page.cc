@@ -15,8 +15,8 @@ namespace {
 // What the profile curves plot, and the unit of the figure's y axis.
 constexpr char kProfileUnit[] = "Δχ² = 2 Δcost";
 
-void SummarySection(const DatasetBody<IdentifiabilityReport>& body, Page* page) {
-  const IdentifiabilityReport& r = body.result;
+void SummarySection(const DatasetBody<IdentifiabilityResult>& body, Page* page) {
+  const IdentifiabilityResult& r = body.result;
   page->Summary({{"dataset", TextCell(body.dataset)},
                  {"status", NameCell(r.status.outcome)},
                  {"message", TextCell(r.status.message)},
@@ -52,7 +52,7 @@ Cell CollinearityCell(double index) {
   return NumberCell(index);
 }
 
-void ParametersSection(const IdentifiabilityReport& r, Page* page) {
+void ParametersSection(const IdentifiabilityResult& r, Page* page) {
   std::vector<Row> rows;
   for (const ParameterIdentifiability& q : r.parameters) {
     rows.push_back({TextCell(q.key.Text()), NumberCell(q.value), TextCell(Info(q.param()).unit),
@@ -65,7 +65,7 @@ void ParametersSection(const IdentifiabilityReport& r, Page* page) {
               rows);
 }
 
-void TableSections(const IdentifiabilityReport& r, Page* page) {
+void TableSections(const IdentifiabilityResult& r, Page* page) {
   ParametersSection(r, page);
   std::vector<Row> combinations;
   for (const Combination& c : r.combinations) {
@@ -89,7 +89,7 @@ void TableSections(const IdentifiabilityReport& r, Page* page) {
       advice);
 }
 
-void SingularValueFigure(const IdentifiabilityReport& r, Page* page) {
+void SingularValueFigure(const IdentifiabilityResult& r, Page* page) {
   Series above, below;
   const long count = r.singular_values.size();
   int shown = 0;
@@ -129,7 +129,7 @@ void SingularValueFigure(const IdentifiabilityReport& r, Page* page) {
   page->AddFigure(std::move(f));
 }
 
-void CorrelationFigure(const IdentifiabilityReport& r, Page* page) {
+void CorrelationFigure(const IdentifiabilityResult& r, Page* page) {
   HeatMapOptions map;
   map.name = "identifiability-correlation";
   map.rows = r.coordinate_names;
@@ -230,8 +230,8 @@ void ProfileFigure(const std::vector<ParameterIdentifiability>& parameters, Page
 
 }  // namespace
 
-void IdentifiabilityPage(const IdentifiabilityFile& report, Page* page) {
-  const IdentifiabilityReport& r = report.body.result;
+void IdentifiabilityPage(const IdentifiabilityReport& report, Page* page) {
+  const IdentifiabilityResult& r = report.body.result;
   SummarySection(report.body, page);
   TableSections(r, page);
   page->Heading("Figures");

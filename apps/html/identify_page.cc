@@ -28,7 +28,7 @@ struct Intervals {
 };
 
 // The costs of the starts, each as "%.4g (origin)".
-Cell StartCostsCell(const IdentifySummary& s) {
+Cell StartCostsCell(const IdentifyResult& s) {
   std::vector<std::string> items;
   for (size_t k = 0; k < s.start_costs.size(); ++k) {
     items.push_back(Format(s.start_costs[k]) +
@@ -38,7 +38,7 @@ Cell StartCostsCell(const IdentifySummary& s) {
   return ListCell(items);
 }
 
-FactRows SummaryFacts(const std::string& dataset, const IdentifySummary& s) {
+FactRows SummaryFacts(const std::string& dataset, const IdentifyResult& s) {
   const Uncertainty& u = s.uncertainty;
   return {{"dataset", TextCell(dataset)},
           {"method", TextCell(MethodTitle(s.method))},
@@ -154,7 +154,7 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
 }
 
 // In words, which parameters with a prior the prior decides and which the
-// data do (as IdentifySummary::FullReport says it).
+// data do (as IdentifyResult::FullReport says it).
 std::string PriorSentence(const std::vector<ParameterEstimate>& estimates) {
   std::vector<std::string> by_prior, by_both, by_data;
   for (const ParameterEstimate& q : estimates) {
@@ -184,7 +184,7 @@ std::string PriorSentence(const std::vector<ParameterEstimate>& estimates) {
          "alone.";
 }
 
-Intervals ParametersSection(const IdentifySummary& summary, Page* page) {
+Intervals ParametersSection(const IdentifyResult& summary, Page* page) {
   const std::vector<ParameterEstimate>& estimates = summary.estimates;
   const std::string conflicts = summary.PriorConflicts();
   Intervals intervals;
@@ -387,7 +387,7 @@ std::vector<std::pair<std::string, double>> MeasuredConditions(const std::vector
   return out;
 }
 
-std::string CampbellScript(Figure* f, const IdentifySummary& s, bool* drawn) {
+std::string CampbellScript(Figure* f, const IdentifyResult& s, bool* drawn) {
   CampbellPanel frequency, damping;
   double top = 0;
   for (const SpeedCurve& c : s.speed_curves) {
@@ -449,7 +449,7 @@ std::string CampbellScript(Figure* f, const IdentifySummary& s, bool* drawn) {
 
 // Frequency and damping ratio of every mode of the fitted model against
 // forward speed, and the measured modes at their conditions' speeds.
-void CampbellFigure(const IdentifySummary& s, Page* page) {
+void CampbellFigure(const IdentifyResult& s, Page* page) {
   if (s.speed_curves.empty()) return;
   Figure f("identify-campbell", 900, 760);
   bool drawn = false;
@@ -475,7 +475,7 @@ void CampbellFigure(const IdentifySummary& s, Page* page) {
 }  // namespace
 
 void IdentifyPage(const IdentifyReport& report, Page* page) {
-  const IdentifySummary& summary = report.body.result;
+  const IdentifyResult& summary = report.body.result;
   if (!summary.warnings.empty()) {  // the headline, before everything else
     page->Heading("Warnings");
     for (const std::string& w : summary.warnings) page->Note(w);

@@ -10,7 +10,7 @@
 namespace ringid::html {
 
 void IdentifyPage(const IdentifyReport& report, Page* page);
-void IdentifiabilityPage(const IdentifiabilityFile& report, Page* page);
+void IdentifiabilityPage(const IdentifiabilityReport& report, Page* page);
 void ComparePage(const CompareReport& report, Page* page);
 void DiagnosePage(const DiagnoseReport& report, Page* page);
 void PredictPage(const PredictReport& report, Page* page);

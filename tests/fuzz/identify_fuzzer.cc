@@ -88,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   o.max_iterations = 2;
   o.simplex.max_evaluations = 30;
   o.method = (in.Byte() & 1) ? Method::kSimplex : Method::kLevenbergMarquardt;
-  IdentifySummary s;
+  IdentifyResult s;
   Identify(RigidRingModel(), d, o, &s);
   if (!s.status.ok() && s.status.message.empty()) std::abort();
   if (s.status.ok() && !std::isfinite(s.cost)) std::abort();
