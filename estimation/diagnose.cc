@@ -417,8 +417,10 @@ bool EffectOff(const Effect& effect, const IdentifyResult& s) {
 
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisResult* r, std::chrono::steady_clock::time_point t0) {
-  // The gap: calibrate the baseline by the multistart of Identify.
-  Identify(baseline, dataset, o.fit, &r->baseline);
+  // The gap: calibrate the baseline by the multistart of Identify, on the one
+  // problem of the baseline and the data.
+  const auto problem = Problem::Create(baseline, dataset, o.fit.residuals, &r->baseline.status);
+  if (problem) Identify(*problem, o.fit, &r->baseline);
   std::vector<IdentifyResult> fits;
   // A candidate that holds its effect at 0 and still fits better than the
   // baseline shows that the baseline missed its optimum: re-calibrate from
@@ -480,9 +482,11 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   const Dataset warm = WarmStart(dataset, r->baseline);
 
   // Where it lies: per mode and observable, and in the parameters.
-  std::vector<ModalResiduals::Slot> slots;
-  std::vector<double> res;
-  if (!ResidualsAt(baseline, dataset, r->baseline.x, &slots, &res, o.fit.residuals)) {
+  const ModalResiduals& residuals = problem->residuals();
+  const std::vector<ModalResiduals::Slot>& slots = residuals.slots();
+  std::vector<double> res(residuals.num_residuals());
+  if (r->baseline.x.size() != residuals.num_parameters() ||
+      !residuals.Evaluate(r->baseline.x.data(), res.data())) {
     r->status = Status::Failed("the calibrated baseline cannot be evaluated");
     return;
   }

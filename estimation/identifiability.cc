@@ -495,8 +495,7 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
 }  // namespace
 
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
-                            const IdentifiabilityOptions& o,
-                            IdentifiabilityResult* r) {
+                            const IdentifiabilityOptions& o, IdentifiabilityResult* r) {
   const auto t0 = std::chrono::steady_clock::now();
   *r = IdentifiabilityResult{};
   std::string why;
@@ -504,9 +503,35 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     r->status = r->fit.status = Status::InvalidInput("invalid options: " + why);
     return;
   }
-  Identify(model, dataset, o.fit, &r->fit);
+  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &r->status);
+  if (!problem) {
+    r->fit.status = r->status;
+    return;
+  }
+  IdentifyResult fit;
+  Identify(*problem, o.fit, &fit);
+  AnalyzeIdentifiability(*problem, fit, o, r);
+  r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void AnalyzeIdentifiability(const Problem& problem, const IdentifyResult& fit,
+                            const IdentifiabilityOptions& options, IdentifiabilityResult* r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  IdentifiabilityOptions o = options;
+  o.fit.residuals = problem.residuals().options();  // the problem's, wherever it is rebuilt
+  *r = IdentifiabilityResult{};
+  r->fit = fit;
+  std::string why;
+  if (!o.IsValid(&why)) {
+    r->status = Status::InvalidInput("invalid options: " + why);
+    return;
+  }
   if (!r->fit.status.ok()) {
     r->status = {r->fit.status.outcome, "identification failed: " + r->fit.status.message};
+    return;
+  }
+  if (r->fit.x.size() != problem.setup().size()) {
+    r->status = Status::InvalidInput("the fit is not one of this problem (its coordinates differ)");
     return;
   }
   const Uncertainty& u = r->fit.uncertainty;
@@ -514,9 +539,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     r->status = Status::Failed("no Jacobian at the fitted point: " + u.error);
     return;
   }
-  const auto problem = Problem::Create(model, dataset, o.fit.residuals, &r->status);
-  if (!problem) return;  // Identify built the same problem a moment ago
-  const ParameterSetup& setup = problem->setup();
+  const ParameterSetup& setup = problem.setup();
   const Eigen::VectorXd& xhat = r->fit.x;
   const Eigen::MatrixXd& J = u.jacobian;
   r->rank = u.rank;
@@ -525,7 +548,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   r->singular_values = u.singular_values;
   r->coordinate_names = r->fit.coordinate_names;
   r->rank_explanation = RankExplanation(u, setup.size());
-  r->parameters = Classify(*problem, xhat, r->fit.cost, u, o);
+  r->parameters = Classify(problem, xhat, r->fit.cost, u, o);
   CombinationList combinations(u.structural_directions, o.same_direction);
   StructuralDirections(u, setup, &combinations);
   CollinearPairs(J, setup, o, &combinations, r);
@@ -533,7 +556,8 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
   r->combinations = combinations.Release();
   r->correlation = Correlation(u);
   r->identifiable_subset = IdentifiableSubset(u, setup, o.fit.uncertainty.rank_tolerance);
-  r->advice = ExperimentAdvice(*problem, xhat, u, o);
+  r->advice = ExperimentAdvice(problem, xhat, u, o);
+  r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -190,9 +190,15 @@ struct IdentifiabilityResult {
   }
 };
 
+// What the data determine at `fit`, an identification of `problem`
+// (Identify(problem, options.fit, &fit)); options.fit.residuals is not read.
+void AnalyzeIdentifiability(const Problem& problem, const IdentifyResult& fit,
+                            const IdentifiabilityOptions& options, IdentifiabilityResult* result);
+// The same after identifying the problem Problem::Create makes of model,
+// dataset and options.fit.residuals.
 void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
                             const IdentifiabilityOptions& options,
-                            IdentifiabilityResult* report);
+                            IdentifiabilityResult* result);
 
 }  // namespace ringid
 

@@ -508,7 +508,17 @@ bool IdentifyOptions::IsValid(std::string* why) const {
 
 void Identify(const ModalModel& model, const Dataset& dataset,
               const IdentifyOptions& o, IdentifyResult* s) {
+  *s = IdentifyResult{};
+  const auto problem = Problem::Create(model, dataset, o.residuals, &s->status);
+  if (problem) Identify(*problem, o, s);
+}
+
+void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyResult* s) {
   const auto t0 = std::chrono::steady_clock::now();
+  IdentifyOptions o = options;
+  o.residuals = problem.residuals().options();  // the problem's, wherever it is rebuilt
+  const ModalModel& model = problem.model();
+  const Dataset& dataset = problem.dataset();
   *s = IdentifyResult{};
   s->method = o.method;
   s->frequency_weighting = o.residuals.frequency_weighting;
@@ -517,10 +527,8 @@ void Identify(const ModalModel& model, const Dataset& dataset,
     s->status = Status::InvalidInput("invalid options: " + why);
     return;
   }
-  const auto problem = Problem::Create(model, dataset, o.residuals, &s->status);
-  if (!problem) return;
-  const ParameterSetup& setup = problem->setup();
-  const ModalResiduals& residuals = problem->residuals();
+  const ParameterSetup& setup = problem.setup();
+  const ModalResiduals& residuals = problem.residuals();
   const Eigen::VectorXd x0 = setup.StartCoordinates();
   if (!CheckBounds(setup, x0, o.bounds, &why)) {
     s->status = Status::InvalidInput(why);
@@ -530,7 +538,7 @@ void Identify(const ModalModel& model, const Dataset& dataset,
   if (const std::string few = FewObservables(residuals); !few.empty()) s->warnings.push_back(few);
   const Box box = BoundsAround(setup, x0, o.bound_factor, o.bounds);
   std::vector<Eigen::VectorXd> ends;
-  const LocalFit best = FitFromStarts(model, dataset, o, *problem, x0, box, s, &ends);
+  const LocalFit best = FitFromStarts(model, dataset, o, problem, x0, box, s, &ends);
   if (!std::isfinite(best.cost)) {
     s->status = Status::Failed("no start produced a usable fit: " + best.message);
     s->seconds = Seconds(t0);

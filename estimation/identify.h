@@ -18,6 +18,8 @@
 
 namespace ringid {
 
+class Problem;  // estimation/problem.h
+
 struct IdentifyOptions {
   Method method = Method::kLevenbergMarquardt;
   // Fits from the dataset's initial point, from the point that matches the
@@ -307,10 +309,14 @@ struct IdentifyResult {
   }
 };
 
-// Never aborts: invalid setups and numerical failures come back in
-// summary->success / message.
+// The identification of `problem`: its model, dataset and residual options
+// (options.residuals is not read; the problem was made with its own). Never
+// aborts: invalid setups and numerical failures come back in result->status.
+void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyResult* result);
+// The same on the problem Problem::Create makes of model, dataset and
+// options.residuals.
 void Identify(const ModalModel& model, const Dataset& dataset,
-              const IdentifyOptions& options, IdentifyResult* summary);
+              const IdentifyOptions& options, IdentifyResult* result);
 
 }  // namespace ringid
 

@@ -58,6 +58,45 @@ TEST(IdentifiabilityTest, Table1DeterminesOnlyRatiosOfContactStiffnessAndRelaxat
   EXPECT_TRUE(r.identifiable_subset.empty());
 }
 
+// One problem, built once and passed: Identify on it gives the fit of the
+// one-call form, AnalyzeIdentifiability of that fit the one-call analysis,
+// and a fit of another problem is refused as input, not analysed.
+TEST(IdentifiabilityTest, AProblemBuiltOnceAndPassedGivesTheOneCallResults) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
+  IdentifiabilityOptions o;
+  o.profile_steps = 0;
+  Status status;
+  const auto problem = Problem::Create(RigidRingModel(), d, o.fit.residuals, &status);
+  ASSERT_TRUE(problem) << status.message;
+  IdentifyResult fit, once;
+  Identify(*problem, o.fit, &fit);
+  Identify(RigidRingModel(), d, o.fit, &once);
+  ASSERT_TRUE(fit.status.ok()) << fit.status.message;
+  EXPECT_EQ(fit.cost, once.cost);
+  EXPECT_EQ(fit.x, once.x);
+  EXPECT_EQ(fit.evaluations, once.evaluations);
+  IdentifiabilityResult passed, whole;
+  AnalyzeIdentifiability(*problem, fit, o, &passed);
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &whole);
+  ASSERT_TRUE(passed.status.ok()) << passed.status.message;
+  EXPECT_EQ(passed.rank, whole.rank);
+  EXPECT_EQ(passed.singular_values, whole.singular_values);
+  ASSERT_EQ(passed.parameters.size(), whole.parameters.size());
+  for (size_t i = 0; i < passed.parameters.size(); ++i) {
+    EXPECT_EQ(passed.parameters[i].identifiable, whole.parameters[i].identifiable) << i;
+  }
+  Dataset fewer = d;
+  fewer.known[Param::t_0] = fewer.initial.at(Param::t_0);
+  fewer.initial.erase(Param::t_0);
+  const auto other = Problem::Create(RigidRingModel(), fewer, o.fit.residuals, &status);
+  ASSERT_TRUE(other) << status.message;
+  IdentifiabilityResult refused;
+  AnalyzeIdentifiability(*other, fit, o, &refused);
+  EXPECT_TRUE(refused.status.invalid_input()) << refused.status.message;
+}
+
 // Full modal data, ten free parameters (as estimation_test's well-posed case).
 Dataset WellPosed(const Parameters& truth, std::mt19937_64* rng,
                   std::vector<Param> free, bool full_data) {
