@@ -258,8 +258,14 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
     return false;
   }
   o->starts = FLAGS_starts;
-  o->threads = FLAGS_threads ? FLAGS_threads
-                             : std::max(1, internal::ThreadsFor(0) / std::max(1, FLAGS_jobs));
+  if (FLAGS_threads < 0 || FLAGS_threads > IdentifyOptions::kMaxThreads) {
+    *error = "--threads: must lie in [0, " + std::to_string(IdentifyOptions::kMaxThreads) +
+             "] (0: the cores)";
+    return false;
+  }
+  // The cores are shared among a campaign's jobs.
+  const int jobs = FLAGS_output_dir.empty() ? 1 : std::max(1, FLAGS_jobs);
+  o->threads = FLAGS_threads ? FLAGS_threads : std::max(1, internal::ThreadsFor(0) / jobs);
   o->seed = static_cast<unsigned>(FLAGS_seed);
   o->residuals.relative_sigma = FLAGS_relative_sigma;
   o->residuals.use_shapes = FLAGS_shapes;

@@ -18,7 +18,7 @@ using nlohmann::json;
 json ParameterSetJson(const IdentifyResult& s, const std::string& name,
                       const std::string& description) {
   json r;
-  r["format"] = "ringid-parameters/1";
+  r["format"] = kParameterSetFormat;
   r["name"] = name;
   r["description"] = description;
   json params = json::object();

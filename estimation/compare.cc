@@ -26,28 +26,17 @@ double Median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// Eqs. (19), (20): sum ((f_exp - f_cal) / f_exp)^2 per plane at x; NaN where
-// the plane has no measured mode or the model cannot be solved.
+// Eqs. (19), (20) at x (internal::RelativeErrors); NaN where the model
+// cannot be solved.
 void RelativeErrors(const ModalResiduals& residuals, const Dataset& dataset,
-                    const Eigen::VectorXd& x, double* in_plane,
-                    double* out_of_plane) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  *in_plane = *out_of_plane = nan;
+                    const Eigen::VectorXd& x, double* in_plane, double* out_of_plane) {
+  *in_plane = *out_of_plane = std::numeric_limits<double>::quiet_NaN();
   std::vector<ModalSolution> s;
   std::vector<int> pairs;
   std::string why;
-  if (!residuals.Pair(x.data(), &s, &pairs, &why)) return;
-  double e[2] = {0, 0};
-  int n[2] = {0, 0};
-  for (size_t i = 0; i < dataset.modes.size(); ++i) {
-    const MeasuredMode& m = dataset.modes[i];
-    const double rel = (m.frequency_hz - s[m.condition].modes[pairs[i]].frequency_hz) / m.frequency_hz;
-    const int k = LabelPlane(m.label) == Plane::kInPlane ? 0 : 1;
-    e[k] += rel * rel;
-    ++n[k];
+  if (residuals.Pair(x.data(), &s, &pairs, &why)) {
+    internal::RelativeErrors(dataset, s, pairs, in_plane, out_of_plane);
   }
-  if (n[0]) *in_plane = e[0];
-  if (n[1]) *out_of_plane = e[1];
 }
 
 }  // namespace

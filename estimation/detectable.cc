@@ -155,11 +155,9 @@ std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
   for (EffectFit& f : r->ranking) {
     for (auto& [name, v] : f.minimal_detectable) sizes.push_back({f.effect, *ParseParam(name), &v});
   }
-  DiagnoseOptions one_thread = o;
-  one_thread.fit.threads = 1;
   internal::ParallelFor(static_cast<int>(sizes.size()), o.fit.threads, [&](int k) {
     const Size& s = sizes[k];
-    *s.v = CheckedDetectable(baseline, *s.effect, s.p, *s.v, r->baseline, warm, one_thread, zero,
+    *s.v = CheckedDetectable(baseline, *s.effect, s.p, *s.v, r->baseline, warm, o, zero,
                              o.detectable_likelihood_ratio);
   });
   std::ostringstream small;

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -367,14 +368,27 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   };
   const std::vector<internal::Start> plan =
       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
-  std::vector<LocalFit> fits(plan.size());
-  internal::ParallelFor(static_cast<int>(plan.size()), o.threads, [&](int k) {
-    Status created;
-    const auto own = Problem::Create(model, dataset, o.residuals, &created);
-    fits[k] = FitLocally(own->residuals(), o.method, plan[k].x, box, o.max_iterations,
-                         o.simplex, -1, o.stop_chi_square);
-  });
+  const int n = static_cast<int>(plan.size());
+  // On several threads each start has its own copy of the problem, made here
+  // one after another; on one, the problem itself, whose kept solutions the
+  // starts reuse. Either way each fit counts its own evaluations.
+  std::vector<std::unique_ptr<Problem>> copies;
+  if (std::min(internal::ThreadsFor(o.threads), n) > 1) {
+    for (int k = 0; k < n; ++k) {
+      Status created;
+      copies.push_back(Problem::Create(model, dataset, o.residuals, &created));
+      if (!copies.back()) {  // as the problem itself was made: not expected
+        copies.clear();
+        break;
+      }
+    }
+  }
   s->evaluations = residuals.evaluations();
+  std::vector<LocalFit> fits(n);
+  internal::ParallelFor(n, copies.empty() ? 1 : o.threads, [&](int k) {
+    fits[k] = FitLocally(copies.empty() ? residuals : copies[k]->residuals(), o.method,
+                         plan[k].x, box, o.max_iterations, o.simplex, -1, o.stop_chi_square);
+  });
   LocalFit best;
   for (size_t k = 0; k < plan.size(); ++k) {
     s->start_costs.push_back(fits[k].cost);
@@ -422,8 +436,6 @@ void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const Ide
   std::string why;
   std::vector<ModalSolution> solutions;
   std::vector<int> pairs;
-  double e_in = 0, e_out = 0;
-  int n_in = 0, n_out = 0;
   if (residuals.Pair(x.data(), &solutions, &pairs, &why)) {
     for (size_t i = 0; i < dataset.modes.size(); ++i) {
       const MeasuredMode& m = dataset.modes[i];
@@ -448,20 +460,14 @@ void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const Ide
               Mac(ComparableShape(other, o.residuals.shape_convention, m.shape), m.shape);
         }
       }
-      const double rel = (m.frequency_hz - mode.frequency_hz) / m.frequency_hz;
-      if (LabelPlane(m.label) == Plane::kInPlane) {
-        e_in += rel * rel;
-        ++n_in;
-      } else {
-        e_out += rel * rel;
-        ++n_out;
-      }
       s->modes.push_back(f);
     }
+    internal::RelativeErrors(dataset, solutions, pairs, &s->relative_error_in_plane,
+                             &s->relative_error_out_of_plane);
+  } else {
+    s->relative_error_in_plane = s->relative_error_out_of_plane =
+        std::numeric_limits<double>::quiet_NaN();
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  s->relative_error_in_plane = n_in ? e_in : nan;
-  s->relative_error_out_of_plane = n_out ? e_out : nan;
 }
 
 }  // namespace
@@ -498,8 +504,8 @@ bool IdentifyOptions::IsValid(std::string* why) const {
     *why = "max_iterations must be at least 1";
     return false;
   }
-  if (threads < 0) {
-    *why = "threads must not be negative";
+  if (threads < 0 || threads > kMaxThreads) {
+    *why = "threads must lie in [0, " + std::to_string(kMaxThreads) + "] (0: one per core)";
     return false;
   }
   return simplex.IsValid(why) && residuals.IsValid(why) &&
@@ -509,6 +515,13 @@ bool IdentifyOptions::IsValid(std::string* why) const {
 void Identify(const ModalModel& model, const Dataset& dataset,
               const IdentifyOptions& o, IdentifyResult* s) {
   *s = IdentifyResult{};
+  s->method = o.method;
+  s->frequency_weighting = o.residuals.frequency_weighting;
+  std::string why;
+  if (!o.IsValid(&why)) {
+    s->status = Status::InvalidInput("invalid options: " + why);
+    return;
+  }
   const auto problem = Problem::Create(model, dataset, o.residuals, &s->status);
   if (problem) Identify(*problem, o, s);
 }

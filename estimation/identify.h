@@ -39,9 +39,10 @@ struct IdentifyOptions {
   SimplexOptions simplex;
   ResidualOptions residuals;
   UncertaintyOptions uncertainty;
-  // Starts (and diagnose's candidate effects) fitted at once; 0: one thread
-  // per core. Results are the same on any number.
+  // Starts (and diagnose's candidate effects) fitted at once, at most
+  // kMaxThreads; 0: one thread per core. Results are the same on any number.
   int threads = 0;
+  static constexpr int kMaxThreads = 256;
 
   bool IsValid(std::string* why) const;
 };

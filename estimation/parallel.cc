@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -15,13 +18,30 @@ int ThreadsFor(int threads) {
 
 void ParallelFor(int n, int threads, const std::function<void(int)>& work) {
   std::atomic<int> next{0};
+  std::exception_ptr failure;  // the first thrown, rethrown after the join
+  std::mutex mutex;
   auto worker = [&] {
-    for (int i; (i = next++) < n;) work(i);
+    for (int i; (i = next++) < n;) {
+      try {
+        work(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        next = n;  // the others stop at their next item
+      }
+    }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(ThreadsFor(threads), n); ++t) pool.emplace_back(worker);
+  for (int t = 1; t < std::min(ThreadsFor(threads), n); ++t) {
+    try {
+      pool.emplace_back(worker);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: those started share the work
+    }
+  }
   worker();
   for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace internal

@@ -11,7 +11,9 @@ namespace internal {
 int ThreadsFor(int threads);
 
 // Runs work(i) for every i in [0, n) on up to ThreadsFor(threads) threads,
-// the calling one among them. work must only write what item i owns.
+// the calling one among them (fewer when the system has no more to give).
+// work must only write what item i owns. The first exception work throws
+// stops the items not yet begun and is rethrown once every thread is joined.
 void ParallelFor(int n, int threads, const std::function<void(int)>& work);
 
 }  // namespace internal

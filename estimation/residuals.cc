@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
 #include "estimation/statistics.h"
@@ -514,6 +515,23 @@ double ModalResiduals::FrequencySigma(const MeasuredMode& m) const {
     return *m.frequency_sigma_hz;
   }
   return options_.relative_sigma * m.frequency_hz;
+}
+
+void RelativeErrors(const Dataset& dataset, const std::vector<ModalSolution>& solutions,
+                    const std::vector<int>& pairs, double* in_plane, double* out_of_plane) {
+  double e[2] = {0, 0};
+  int n[2] = {0, 0};
+  for (size_t i = 0; i < dataset.modes.size(); ++i) {
+    const MeasuredMode& m = dataset.modes[i];
+    const double model_hz = solutions[m.condition].modes[pairs[i]].frequency_hz;
+    const double rel = (m.frequency_hz - model_hz) / m.frequency_hz;
+    const int k = LabelPlane(m.label) == Plane::kInPlane ? 0 : 1;
+    e[k] += rel * rel;
+    ++n[k];
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  *in_plane = n[0] ? e[0] : nan;
+  *out_of_plane = n[1] ? e[1] : nan;
 }
 
 }  // namespace internal

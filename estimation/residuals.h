@@ -173,6 +173,12 @@ class ModalResiduals {
 // the truncation error were both near 1e-7. The functor is not owned.
 ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals);
 
+// Eqs. (19), (20): sum ((f_exp - f_cal) / f_exp)^2 over the measured in-plane
+// and out-of-plane modes, each paired with solutions[its condition].modes
+// [pairs[i]] (ModalResiduals::Pair); NaN for a plane without a measured mode.
+void RelativeErrors(const Dataset& dataset, const std::vector<ModalSolution>& solutions,
+                    const std::vector<int>& pairs, double* in_plane, double* out_of_plane);
+
 // The same residuals in `problem` as one Ceres problem over x: per condition
 // a cost function of the shared coordinates' block and its own block (both
 // pieces of x), and the priors as one more residual block with exact

@@ -16,6 +16,8 @@
 namespace ringid {
 
 // The one interface estimation sees: parameters in, labelled modes out.
+// Clone and the Solve functions may be called from several threads at once
+// (a campaign's jobs share one model); RigidRingModel's kept solutions lock.
 class ModalModel {
  public:
   virtual ~ModalModel() = default;

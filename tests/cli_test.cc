@@ -89,6 +89,8 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
       "identify --dataset=" + Source("datasets/paper/table1.json") + " --bogus=1 --output=" + out,
       "identify --dataset=" + Source("datasets/paper/table1.json") + " --starts=abc --output=" + out,
       "identify --dataset=" + Source("datasets/paper/table1.json") + " --method=newton --output=" + out,
+      "identify --dataset=" + Source("datasets/paper/table1.json") + " --threads=-1 --output=" + out,
+      "diagnose --dataset=" + Source("datasets/paper/table1.json") + " --threads=100000 --output=" + out,
       "predict --parameters=" + bad + " --output=" + out,
       "predict --dataset=" + bad + " --output=" + out,
       "predict --parameters=" + partial + " --output=" + out,

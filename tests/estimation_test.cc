@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -9,6 +11,7 @@
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
 #include "estimation/identify.h"
+#include "estimation/parallel.h"
 #include "estimation/statistics.h"
 #include "tests/test_support.h"
 
@@ -691,6 +694,21 @@ TEST(ObservablesTest, TwoModesSayTheyCannotSetFourteenParameters) {
   EXPECT_TRUE(AnyContains(s.warnings, "for 14 free parameters: they cannot set them all"));
   const std::string text = s.FullReport();
   EXPECT_LT(text.find("warning: 2 measured mode(s)"), text.find(s.fit.verdict));
+}
+
+// ParallelFor runs every item once on any number of threads, and a failure
+// in one item comes back to the caller after every thread has joined.
+TEST(ParallelForTest, EveryItemRunsOnceAndTheFirstFailureIsRethrown) {
+  for (int threads : {1, 2, 7}) {
+    std::vector<int> runs(50, 0);
+    internal::ParallelFor(50, threads, [&](int i) { ++runs[i]; });
+    EXPECT_EQ(runs, std::vector<int>(50, 1)) << threads << " threads";
+    EXPECT_THROW(internal::ParallelFor(50, threads,
+                                       [&](int i) {
+                                         if (i == 3) throw std::runtime_error("item 3");
+                                       }),
+                 std::runtime_error);
+  }
 }
 
 }  // namespace
