@@ -512,16 +512,25 @@ bool IdentifyOptions::IsValid(std::string* why) const {
          uncertainty.IsValid(why);
 }
 
-void Identify(const ModalModel& model, const Dataset& dataset,
-              const IdentifyOptions& o, IdentifyResult* s) {
+namespace {
+
+// A fresh result that says how it fits; false, with the result saying why,
+// when the options are invalid.
+bool Begin(const IdentifyOptions& o, IdentifyResult* s) {
   *s = IdentifyResult{};
   s->method = o.method;
   s->frequency_weighting = o.residuals.frequency_weighting;
   std::string why;
-  if (!o.IsValid(&why)) {
-    s->status = Status::InvalidInput("invalid options: " + why);
-    return;
-  }
+  if (o.IsValid(&why)) return true;
+  s->status = Status::InvalidInput("invalid options: " + why);
+  return false;
+}
+
+}  // namespace
+
+void Identify(const ModalModel& model, const Dataset& dataset,
+              const IdentifyOptions& o, IdentifyResult* s) {
+  if (!Begin(o, s)) return;  // the options first, then the dataset
   const auto problem = Problem::Create(model, dataset, o.residuals, &s->status);
   if (problem) Identify(*problem, o, s);
 }
@@ -532,14 +541,8 @@ void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyRe
   o.residuals = problem.residuals().options();  // the problem's, wherever it is rebuilt
   const ModalModel& model = problem.model();
   const Dataset& dataset = problem.dataset();
-  *s = IdentifyResult{};
-  s->method = o.method;
-  s->frequency_weighting = o.residuals.frequency_weighting;
+  if (!Begin(o, s)) return;
   std::string why;
-  if (!o.IsValid(&why)) {
-    s->status = Status::InvalidInput("invalid options: " + why);
-    return;
-  }
   const ParameterSetup& setup = problem.setup();
   const ModalResiduals& residuals = problem.residuals();
   const Eigen::VectorXd x0 = setup.StartCoordinates();
