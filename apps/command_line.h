@@ -35,6 +35,13 @@ bool SetFlags(int argc, char** argv, const Command& command,
 // Whether argv[2..] asks for help: --help or -h.
 bool WantsHelp(int argc, char** argv);
 
+// Two lists of flags, one after the other.
+inline std::vector<std::string> Joined(std::vector<std::string> a,
+                                       const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 // The command called `name`, or null.
 const Command* FindCommand(const std::vector<Command>& all, const std::string& name);
 

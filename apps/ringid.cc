@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -33,13 +34,11 @@
 #include "estimation/compare.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
-#include "estimation/problem.h"
 #include "model/effects.h"
 #include "model/spelling.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
 namespace {
 
 int Predict(int argc, char** argv) {
@@ -374,11 +373,6 @@ const std::vector<std::string> kFitFlags = {
     "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix", "threads"};
 const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
-std::vector<std::string> Joined(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
 int SchemaCommand(int, char**) {
   std::fputs(ReportsMarkdown().c_str(), stdout);
   return kExitOk;
@@ -480,7 +474,12 @@ int Run(int argc, char** argv) {
   }
   std::string error;
   if (!SetFlags(argc, argv, *command, Commands(), &error)) return Usage(error);
-  return command->run(argc, argv);
+  try {
+    return command->run(argc, argv);
+  } catch (const std::exception& e) {  // out of memory, say: one line, no file half-written
+    std::fprintf(stderr, "ringid: %s\n", e.what());
+    return kExitFailure;
+  }
 }
 
 }  // namespace
