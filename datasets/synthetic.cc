@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "datasets/measurement.h"
+
 namespace ringid {
 
 bool Simulate(const ModalModel& model, const Parameters& truth,
@@ -35,22 +37,22 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
       *error = std::string("the truth's ") + LabelName(m->label) + " mode" + where + ": " + problem;
       return false;  // a dataset the loader would refuse
     }
+    // What the test measures (the quantities and components asked for), then
+    // its noise, quantity by quantity.
     MeasuredMode mm;
     mm.condition = c;
     mm.label = m->label;
-    mm.frequency_hz = m->frequency_hz * (1 + o.frequency_noise * n(*rng));
-    mm.frequency_sigma_hz = o.frequency_noise * m->frequency_hz;
-    if (o.damping) {
-      mm.damping_ratio = std::clamp(m->damping_ratio * (1 + o.damping_noise * n(*rng)), 1e-4, 0.999);
-      mm.damping_sigma = o.damping_noise * m->damping_ratio;
-    }
+    if (o.damping) mm.damping_ratio = 0;
     if (o.shapes) {
-      const RealShapeVector u = m->RealShape();
       const int dofs = o.hub_components ? kNumDofs : static_cast<int>(Dof::kXa);
-      for (int i = 0; i < dofs; ++i) {
-        mm.shape.emplace_back(static_cast<Dof>(i), u[i] + o.shape_noise * n(*rng));
-      }
-      mm.shape_sigma = o.shape_noise;
+      for (int i = 0; i < dofs; ++i) mm.shape.emplace_back(static_cast<Dof>(i), 0);
+    }
+    const std::map<Quantity, double> noise = {{Quantity::kFrequency, o.frequency_noise},
+                                              {Quantity::kDamping, o.damping_noise},
+                                              {Quantity::kShape, o.shape_noise}};
+    for (const Measurement* unit : Measurements()) {
+      unit->Measure(*m, MeasurementOptions{}, &mm);
+      unit->AddNoise(noise.at(unit->quantity()), [&] { return n(*rng); }, &mm);
     }
     d->modes.push_back(mm);
   }

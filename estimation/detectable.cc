@@ -27,7 +27,7 @@ namespace {
 // same modes, observables, degrees of freedom and sigmas). False when a
 // measured mode is lost.
 bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& dataset,
-               ShapeConvention convention, Dataset* out) {
+               const MeasurementOptions& options, Dataset* out) {
   std::vector<ModalSolution> solutions;  // per condition, at its speed
   for (const Condition& c : dataset.conditions) {
     solutions.push_back(model.Solve(truth, c.speed_m_s));
@@ -37,10 +37,7 @@ bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& 
   for (MeasuredMode& m : out->modes) {
     const Mode* mode = solutions[m.condition].Find(m.label);
     if (!mode) return false;
-    m.frequency_hz = mode->frequency_hz;
-    if (m.damping_ratio) m.damping_ratio = mode->damping_ratio;
-    const RealShapeVector u = ComparableShape(*mode, convention);
-    for (auto& [dof, v] : m.shape) v = u[static_cast<int>(dof)];
+    for (const Measurement* unit : Measurements()) unit->Measure(*mode, options, &m);
   }
   return true;
 }
@@ -52,7 +49,7 @@ double RecalibratedCost(const RigidRingModel& baseline, const ModalModel& model,
                         const Parameters& truth, const Dataset& warm,
                         const DiagnoseOptions& o) {
   Dataset data;
-  if (!Remeasure(model, truth, warm, o.fit.residuals.shape_convention, &data)) return INFINITY;
+  if (!Remeasure(model, truth, warm, o.fit.residuals, &data)) return INFINITY;
   Status status;
   const auto problem = Problem::Create(baseline, data, o.fit.residuals, &status);
   if (!problem) return NAN;

@@ -35,17 +35,16 @@ std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
     for (size_t k = 0; k < slots.size(); ++k) {
       if (slots[k].mode != static_cast<int>(i)) continue;
       w.chi2 += res[k] * res[k];
-      switch (slots[k].kind) {
-        case ModalResiduals::Slot::kFrequency: w.frequency_sigma = res[k]; break;
-        case ModalResiduals::Slot::kDamping: w.damping_sigma = res[k]; break;
-        case ModalResiduals::Slot::kShape:
+      switch (slots[k].measurement->quantity()) {
+        case Quantity::kFrequency: w.frequency_sigma = res[k]; break;
+        case Quantity::kDamping: w.damping_sigma = res[k]; break;
+        case Quantity::kShape:
           w.shape_chi2 += res[k] * res[k];
           if (std::abs(res[k]) > std::abs(w.worst_component_sigma)) {
             w.worst_component_sigma = res[k];
-            w.worst_component = DofName(slots[k].dof);
+            w.worst_component = DofName(dataset.modes[i].shape[slots[k].component].first);
           }
           break;
-        case ModalResiduals::Slot::kPrior: break;
       }
     }
     where.push_back(w);

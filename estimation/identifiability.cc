@@ -318,6 +318,11 @@ struct Candidate {
   Eigen::MatrixXd extra;
 };
 
+// The standard error advice assumes of a quantity the test could add.
+double AdviceSigma(const Measurement& unit, const IdentifiabilityOptions& o) {
+  return unit.quantity() == Quantity::kDamping ? o.advice_damping_sigma : o.advice_shape_sigma;
+}
+
 // The dataset with every damping ratio and shape the model predicts at its
 // fitted modes, where the test did not measure (or the fit did not use) them.
 Dataset WithEveryObservation(const Dataset& dataset, const std::vector<ModalSolution>& solutions,
@@ -326,17 +331,8 @@ Dataset WithEveryObservation(const Dataset& dataset, const std::vector<ModalSolu
   for (size_t m = 0; m < more.modes.size(); ++m) {
     MeasuredMode& mm = more.modes[m];
     const Mode& mode = solutions[mm.condition].modes[pairs[m]];
-    if (!mm.damping_ratio || !o.fit.residuals.use_damping) {
-      mm.damping_ratio = std::clamp(mode.damping_ratio, 1e-6, 1 - 1e-6);
-      mm.damping_sigma = o.advice_damping_sigma;
-    }
-    if (mm.shape.empty() || !o.fit.residuals.use_shapes) {
-      const RealShapeVector s = ComparableShape(mode, o.fit.residuals.shape_convention);
-      mm.shape.clear();
-      for (int d = 0; d < kNumDofs; ++d) {
-        if (DofPlane(static_cast<Dof>(d)) == mode.plane()) mm.shape.emplace_back(static_cast<Dof>(d), s[d]);
-      }
-      mm.shape_sigma = o.advice_shape_sigma;
+    for (const Measurement* unit : Measurements()) {
+      if (unit->Rows(mm, o.fit.residuals) == 0) unit->Add(mode, o.fit.residuals, AdviceSigma(*unit, o), &mm);
     }
   }
   return more;
@@ -352,17 +348,14 @@ std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augment
   for (size_t m = 0; m < dataset.modes.size(); ++m) {
     const std::string label = LabelName(dataset.modes[m].label);
     const MeasuredMode& original = dataset.modes[m];
-    Candidate damping{"damping ratio of the " + label + " mode", {}, {}};
-    Candidate shape{"mode shape of the " + label + " mode", {}, {}};
-    for (size_t k = 0; k < slots.size(); ++k) {
-      if (slots[k].mode != static_cast<int>(m)) continue;
-      if (slots[k].kind == ModalResiduals::Slot::kDamping &&
-          !(original.damping_ratio && o.fit.residuals.use_damping)) damping.rows.push_back(k);
-      if (slots[k].kind == ModalResiduals::Slot::kShape &&
-          !(!original.shape.empty() && o.fit.residuals.use_shapes)) shape.rows.push_back(k);
+    for (const Measurement* unit : Measurements()) {
+      if (unit->Rows(original, o.fit.residuals) > 0) continue;  // measured and used
+      Candidate more{std::string(unit->description()) + " of the " + label + " mode", {}, {}};
+      for (size_t k = 0; k < slots.size(); ++k) {
+        if (slots[k].mode == static_cast<int>(m) && slots[k].measurement == unit) more.rows.push_back(k);
+      }
+      if (!more.rows.empty()) candidates.push_back(more);
     }
-    if (!damping.rows.empty()) candidates.push_back(damping);
-    if (!shape.rows.empty()) candidates.push_back(shape);
   }
   const int n = setup.size();
   for (int i = 0; i < n; ++i) {
@@ -419,11 +412,9 @@ std::optional<Candidate> ConditionCandidate(const Problem& problem, const Eigen:
     if (!mode) continue;
     MeasuredMode mm = m;
     mm.condition = index;
-    mm.frequency_hz = mode->frequency_hz;
+    for (const Measurement* unit : Measurements()) unit->Measure(*mode, o.fit.residuals, &mm);
+    // A frequency's sigma keeps its share of the frequency.
     if (m.frequency_sigma_hz) mm.frequency_sigma_hz = *m.frequency_sigma_hz / m.frequency_hz * mode->frequency_hz;
-    if (m.damping_ratio) mm.damping_ratio = std::clamp(mode->damping_ratio, 1e-6, 1 - 1e-6);
-    const RealShapeVector shape = ComparableShape(*mode, o.fit.residuals.shape_convention);
-    for (auto& [dof, v] : mm.shape) v = shape[static_cast<int>(dof)];
     more.modes.push_back(mm);
   }
   Status status;

@@ -333,11 +333,14 @@ std::string FewObservables(const ModalResiduals& residuals) {
   int frequencies = 0, dampings = 0, components = 0, priors = 0;
   std::set<int> shaped;
   for (const ModalResiduals::Slot& slot : residuals.slots()) {
-    switch (slot.kind) {
-      case ModalResiduals::Slot::kFrequency: ++frequencies; break;
-      case ModalResiduals::Slot::kDamping: ++dampings; break;
-      case ModalResiduals::Slot::kShape: ++components, shaped.insert(slot.mode); break;
-      case ModalResiduals::Slot::kPrior: ++priors; break;
+    if (!slot.measurement) {
+      ++priors;
+      continue;
+    }
+    switch (slot.measurement->quantity()) {
+      case Quantity::kFrequency: ++frequencies; break;
+      case Quantity::kDamping: ++dampings; break;
+      case Quantity::kShape: ++components, shaped.insert(slot.mode); break;
     }
   }
   const int shapes = static_cast<int>(shaped.size());
@@ -409,7 +412,7 @@ FitQuality JudgeFit(const ModalResiduals& residuals, double cost, const Uncertai
                     const StartAgreement& agreement) {
   std::set<int> shapes;
   for (const ModalResiduals::Slot& slot : residuals.slots()) {
-    if (slot.kind == ModalResiduals::Slot::kShape) shapes.insert(slot.mode);
+    if (slot.Is(Quantity::kShape)) shapes.insert(slot.mode);
   }
   const int scales = static_cast<int>(shapes.size());
   FitQuality fit = u.ok ? AssessFit(cost, static_cast<int>(u.jacobian.rows()), u.rank, scales)
@@ -449,7 +452,7 @@ void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const Ide
       f.label = m.label;
       f.model_label = mode.label;
       f.measured_hz = m.frequency_hz;
-      f.measured_sigma_hz = residuals.FrequencySigma(m);
+      f.measured_sigma_hz = FrequencySigma(m, o.residuals);
       f.model_hz = mode.frequency_hz;
       f.measured_damping = m.damping_ratio;
       f.model_damping = mode.damping_ratio;

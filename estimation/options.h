@@ -9,16 +9,9 @@
 
 namespace ringid {
 
-struct ResidualOptions {
-  FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;
-  // Relative frequency standard error used where no sigma is given.
-  double relative_sigma = 0.01;
-  // Damping and shape residuals are used where the dataset gives them.
-  bool use_damping = true;
-  bool use_shapes = true;
-  double default_damping_sigma = 0.02;  // where damping_sigma is absent
-  double default_shape_sigma = 0.05;    // where shape_sigma is absent
-  ShapeConvention shape_convention = ShapeConvention::kContract;
+// The measurements' weights and conventions (datasets/measurement_options.h)
+// and how the residuals' Jacobians are made.
+struct ResidualOptions : MeasurementOptions {
   Derivatives derivatives = Derivatives::kNumeric;
   bool IsValid(std::string* why) const;
 };

@@ -23,85 +23,6 @@ bool ResidualOptions::IsValid(std::string* why) const {
   return true;
 }
 
-RealShapeVector ComparableShape(const Mode& mode, ShapeConvention c) {
-  return c == ShapeConvention::kPaper ? mode.PaperShape() : mode.RealShape();
-}
-
-int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& measured) {
-  int model_largest = 0;
-  for (int i = 1; i < kNumDofs; ++i) {
-    if (std::abs(mode.shape[i]) > std::abs(mode.shape[model_largest])) model_largest = i;
-  }
-  // Where the model's largest component is not measured, the convention
-  // took an unmeasured phase: the model's rule is the only one to follow.
-  int data_largest = -1;
-  bool largest_measured = false;
-  double v_largest = 0;
-  for (const auto& [dof, v] : measured) {
-    if (std::abs(v) > v_largest) v_largest = std::abs(v), data_largest = static_cast<int>(dof);
-    largest_measured |= static_cast<int>(dof) == model_largest;
-  }
-  if (largest_measured && data_largest >= 0 && std::abs(mode.shape[data_largest]) > 0 &&
-      std::abs(mode.shape[data_largest]) >=
-          kShapeReferenceShare * std::abs(mode.shape[model_largest])) {
-    return data_largest;
-  }
-  return model_largest;
-}
-
-RealShapeVector ComparableShape(const Mode& mode, ShapeConvention c,
-                                const std::vector<std::pair<Dof, double>>& measured) {
-  if (c == ShapeConvention::kPaper) return mode.PaperShape();
-  const std::complex<double> z = mode.shape[ShapeReference(mode, measured)];
-  return (mode.shape * (std::conj(z) / std::abs(z))).real();
-}
-
-RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention c,
-                                          const std::vector<std::pair<Dof, double>>& measured,
-                                          int p) {
-  const ModeDerivatives& d = *mode.derivatives;
-  const ShapeVector ds = d.shape.col(p);
-  if (c == ShapeConvention::kContract) {
-    // u = Re(s g), g = conj(z) / |z| with z = s_r (Mode::shape has its
-    // largest component fixed at 1, so g = 1 and dg = 0 when r is that one).
-    const int r = ShapeReference(mode, measured);
-    const std::complex<double> z = mode.shape[r], dz = ds[r];
-    const double abs_z = std::abs(z), dabs_z = (std::conj(z) * dz).real() / abs_z;
-    const std::complex<double> g = std::conj(z) / abs_z;
-    const std::complex<double> dg = std::conj(dz) / abs_z - std::conj(z) * dabs_z / (abs_z * abs_z);
-    return (ds * g + mode.shape * dg).real();
-  }
-  // Mode::PaperShape: u = Re(s g) / N, g = conj(L) / |L| with L = lambda s_big
-  // (s_big = 1, fixed), N^2 = |s|^2 (1 + |lambda|^2).
-  const std::complex<double> lambda = mode.eigenvalue, dlambda = d.eigenvalue[p];
-  const bool by_lambda = std::abs(lambda) >= 1;
-  const std::complex<double> L = by_lambda ? lambda : 1.0, dL = by_lambda ? dlambda : 0.0;
-  const double abs_L = std::abs(L), dabs_L = (std::conj(L) * dL).real() / abs_L;
-  const std::complex<double> g = std::conj(L) / abs_L;
-  const std::complex<double> dg = std::conj(dL) / abs_L - std::conj(L) * dabs_L / (abs_L * abs_L);
-  const double S = mode.shape.squaredNorm();
-  const double dS = 2 * (mode.shape.conjugate().cwiseProduct(ds)).sum().real();
-  const double l2 = std::norm(lambda), dl2 = 2 * (std::conj(lambda) * dlambda).real();
-  const double N = std::sqrt(S * (1 + l2));
-  const double dN = (dS * (1 + l2) + S * dl2) / (2 * N);
-  const RealShapeVector u = (mode.shape * g).real() / N;
-  return (ds * g + mode.shape * dg).real() / N - u * (dN / N);
-}
-
-double Mac(const RealShapeVector& model,
-           const std::vector<std::pair<Dof, double>>& measured) {
-  double mm = 0, uu = 0, mu = 0;
-  for (const auto& [dof, v] : measured) {
-    const double u = model[static_cast<int>(dof)];
-    mm += v * v;
-    uu += u * u;
-    mu += u * v;
-  }
-  if (!(mm > 0) || !(uu > 0)) return 0;
-  const double mac = mu * mu / (mm * uu);
-  return std::isfinite(mac) ? mac : 0;  // components beyond the range of their squares
-}
-
 namespace internal {
 
 ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
@@ -114,14 +35,9 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
     for (int i = 0; i < static_cast<int>(dataset.modes.size()); ++i) {
       const MeasuredMode& m = dataset.modes[i];
       if (m.condition != c) continue;
-      slots_.push_back({i, Slot::kFrequency});
-      if (options_.use_damping && m.damping_ratio) {
-        slots_.push_back({i, Slot::kDamping});
-      }
-      if (options_.use_shapes) {
-        for (const auto& [dof, v] : m.shape) {
-          slots_.push_back({i, Slot::kShape, dof});
-        }
+      for (const Measurement* unit : Measurements()) {
+        const int rows = unit->Rows(m, options_);
+        for (int k = 0; k < rows; ++k) slots_.push_back({i, unit, k});
       }
     }
   }
@@ -148,7 +64,7 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
     }
   }
   for (int k = 0; k < static_cast<int>(priors_.size()); ++k) {
-    Slot prior{-1, Slot::kPrior};
+    Slot prior;
     prior.prior = k;
     slots_.push_back(prior);
   }
@@ -376,68 +292,13 @@ bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
     const Mode& mode = solution.modes[pairs[slot.mode]];
     const int row = k - row_begin_[c];
     if (derive && !mode.derivatives) return false;
-    switch (slot.kind) {
-      case Slot::kFrequency: {
-        const double sigma = FrequencySigma(m);
-        r[row] = (mode.frequency_hz - m.frequency_hz) / sigma;
-        for (int p : derive ? derived_ : std::vector<int>{}) {
-          dr(row, p) = mode.derivatives->Frequency(p) / sigma;
-        }
-        ++k;
-        break;
-      }
-      case Slot::kDamping: {
-        const double sigma = m.damping_sigma.value_or(options_.default_damping_sigma);
-        r[row] = (mode.damping_ratio - *m.damping_ratio) / sigma;
-        for (int p : derive ? derived_ : std::vector<int>{}) {
-          dr(row, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
-        }
-        ++k;
-        break;
-      }
-      case Slot::kPrior:
-        ++k;
-        break;
-      case Slot::kShape: {
-        // Component-wise after alignment: the measured shape scaled to a
-        // largest component of 1, the model shape by least squares onto it.
-        const RealShapeVector u = ComparableShape(mode, options_.shape_convention, m.shape);
-        double largest = 0, uu = 0, um = 0;
-        for (const auto& [dof, v] : m.shape) {
-          largest = std::max(largest, std::abs(v));
-        }
-        for (const auto& [dof, v] : m.shape) {
-          const double ui = u[static_cast<int>(dof)];
-          uu += ui * ui;
-          um += ui * v / largest;
-        }
-        // The paper's vectors have a fixed norm (unit state vector), which
-        // carries zeta / |lambda|: only their sign is free.
-        const bool paper = options_.shape_convention == ShapeConvention::kPaper;
-        const double alpha = paper ? (um >= 0 ? 1.0 : -1.0) / largest : (uu > 0 ? um / uu : 0);
-        const double sigma = m.shape_sigma.value_or(options_.default_shape_sigma);
-        for (int p : derive ? derived_ : std::vector<int>{}) {
-          const RealShapeVector du =
-              ComparableShapeDerivative(mode, options_.shape_convention, m.shape, p);
-          double duu = 0, dum = 0;
-          for (const auto& [dof, v] : m.shape) {
-            const int i = static_cast<int>(dof);
-            duu += 2 * u[i] * du[i];
-            dum += du[i] * v / largest;
-          }
-          const double dalpha = paper || !(uu > 0) ? 0.0 : dum / uu - um * duu / (uu * uu);
-          int j = row;
-          for (const auto& [dof, v] : m.shape) {
-            const int i = static_cast<int>(dof);
-            dr(j++, p) = (dalpha * u[i] + alpha * du[i]) / sigma;
-          }
-        }
-        for (const auto& [dof, v] : m.shape) {
-          r[k++ - row_begin_[c]] = (alpha * u[static_cast<int>(dof)] - v / largest) / sigma;
-        }
-        break;
-      }
+    const int n = slot.measurement->Rows(m, options_);
+    if (derive) {
+      slot.measurement->Evaluate(m, mode, options_, r + row, &derived_, dr.middleRows(row, n));
+    } else {
+      slot.measurement->Evaluate(m, mode, options_, r + row, nullptr, dr);
     }
+    k += n;
   }
   for (int k = row_begin_[c]; k < end; ++k) {
     if (!std::isfinite(r[k - row_begin_[c]])) return false;
@@ -508,13 +369,6 @@ bool ModalResiduals::Evaluate(const double* x, double* r,
     r[first + k] = priors_[k].Residual(setup_, x[priors_[k].coordinate]);
   }
   return true;
-}
-
-double ModalResiduals::FrequencySigma(const MeasuredMode& m) const {
-  if (options_.frequency_weighting == FrequencyWeighting::kSigma && m.frequency_sigma_hz) {
-    return *m.frequency_sigma_hz;
-  }
-  return options_.relative_sigma * m.frequency_hz;
 }
 
 void RelativeErrors(const Dataset& dataset, const std::vector<ModalSolution>& solutions,

@@ -13,35 +13,13 @@
 #include <ceres/problem.h>
 
 #include "datasets/dataset.h"
+#include "datasets/measurement.h"
 #include "estimation/options.h"
 #include "estimation/setup.h"
 #include "model/modal.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
-// The model's real shape under a convention, as measured shapes are made
-// (docs/conventions.md §2: the largest component's phase removed).
-RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);
-// The same for comparison with `measured`, and its derivative with respect to
-// catalogue parameter p (the mode must carry derivatives). Under the
-// contract's convention the phase removed is that of the measured shape's
-// largest component, the one the convention made real when it was measured,
-// unless the model's magnitude there is below kShapeReferenceShare of its
-// largest or the model's largest component is not measured (then the
-// measured shape's reference was not measured either: ShapeReference). The
-// model's own largest component would flip the real part wherever two of
-// its components tie: a step in the residuals at which every fit stalls.
-RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention,
-                                const std::vector<std::pair<Dof, double>>& measured);
-RealShapeVector ComparableShapeDerivative(const Mode& mode, ShapeConvention convention,
-                                          const std::vector<std::pair<Dof, double>>& measured,
-                                          int p);
-inline constexpr double kShapeReferenceShare = 0.5;
-int ShapeReference(const Mode& mode, const std::vector<std::pair<Dof, double>>& measured);
-// MAC of a real model shape against a measured shape on its components.
-double Mac(const RealShapeVector& model,
-           const std::vector<std::pair<Dof, double>>& measured);
 
 // Frequency ratios the pairing is judged by (ModalResiduals::PairingWarnings).
 // At the start: a guess whose stiffnesses lie within a factor 4 of the truth
@@ -123,15 +101,13 @@ class ModalResiduals {
   // nearest model modes.
   std::vector<std::string> PairingWarnings(const double* x, bool start) const;
 
-  // The standard deviation a measured frequency is weighted by (Hz).
-  double FrequencySigma(const MeasuredMode& m) const;
-
-  // Which residuals belong to which measured mode and observable.
+  // Which residuals belong to which measured mode and quantity.
   struct Slot {
-    int mode;                  // index into dataset.modes; -1 for kPrior
-    enum Kind { kFrequency, kDamping, kShape, kPrior } kind;
-    Dof dof = Dof::kXb;        // for kShape
-    int prior = -1;            // for kPrior: index into priors()
+    int mode = -1;                            // index into dataset.modes; -1 for a prior
+    const Measurement* measurement = nullptr;  // null for a prior
+    int component = 0;                        // the row within the measurement's
+    int prior = -1;                           // for a prior: index into priors()
+    bool Is(Quantity q) const { return measurement && measurement->quantity() == q; }
   };
   const std::vector<Slot>& slots() const { return slots_; }
 
@@ -143,7 +119,6 @@ class ModalResiduals {
   const Dataset& dataset_;
   const ParameterSetup& setup_;
   ResidualOptions options_;
-  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   // Condition c's rows from its model solution and, where dr is not empty,
   // their derivatives with respect to each catalogue parameter.
   bool Rows(int c, const ModalSolution& solution, double* r, Eigen::Ref<RowMatrix> dr) const;

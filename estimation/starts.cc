@@ -36,15 +36,14 @@ std::vector<LogRow> LogRows(const ModalResiduals& residuals, const Eigen::Vector
   const auto& slots = residuals.slots();
   for (size_t k = 0; k < slots.size(); ++k) {
     const ModalResiduals::Slot& slot = slots[k];
-    if (slot.kind != ModalResiduals::Slot::kFrequency &&
-        slot.kind != ModalResiduals::Slot::kDamping) {
+    double measured = 0, sigma = 0;
+    if (!slot.measurement ||
+        !slot.measurement->Scalar(residuals.dataset().modes[slot.mode], residuals.options(),
+                                  &measured, &sigma)) {
       continue;
     }
     const MeasuredMode& m = residuals.dataset().modes[slot.mode];
-    const bool damping = slot.kind == ModalResiduals::Slot::kDamping;
-    const double sigma = damping ? m.damping_sigma.value_or(residuals.options().default_damping_sigma)
-                                 : residuals.FrequencySigma(m);
-    const double measured = damping ? *m.damping_ratio : m.frequency_hz;
+    const bool damping = slot.Is(Quantity::kDamping);
     const double model = measured + r[k] * sigma;  // r = (model - measured) / sigma
     if (!(model > 0 && measured > 0)) continue;
     rows.push_back({m.label, damping, std::log(measured / model), J.row(k) * (sigma / model)});

@@ -1,4 +1,5 @@
-// The option and result enums of estimation, each with its names (ToString /
+// The option and result enums of estimation (those of the measurements in
+// datasets/measurement_options.h, included here), each with its names (ToString /
 // FromString, model/enum_names.h), and the small value types options hold.
 #ifndef RINGID_ESTIMATION_TYPES_H_
 #define RINGID_ESTIMATION_TYPES_H_
@@ -7,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "datasets/measurement_options.h"  // FrequencyWeighting, ShapeConvention
 #include "model/enum_names.h"
 #include "model/parameters.h"
 
@@ -33,18 +35,6 @@ struct EnumNames<BoundSide> {
   static constexpr std::array<const char*, 2> kNames = {"lower", "upper"};
 };
 
-// How a measured frequency's residual is weighted.
-enum class FrequencyWeighting {
-  kSigma,     // 1 / frequency_sigma_hz (relative_sigma * f where absent)
-  kRelative,  // 1 / (relative_sigma * f): eqs. (19)-(20) up to a constant
-};
-
-// How a measured real shape was made from a complex eigenvector.
-enum class ShapeConvention {
-  kContract,  // docs/conventions.md §2: largest displacement real, real part
-  kPaper,     // the paper's Tables 4-5 (Mode::PaperShape)
-};
-
 // How the Jacobians of the residuals are made.
 enum class Derivatives {
   kNumeric,   // central differences through the eigen-solution
@@ -55,14 +45,6 @@ enum class Derivatives {
 template <>
 struct EnumNames<Derivatives> {
   static constexpr std::array<const char*, 2> kNames = {"numeric", "analytic"};
-};
-template <>
-struct EnumNames<FrequencyWeighting> {
-  static constexpr std::array<const char*, 2> kNames = {"sigma", "relative"};
-};
-template <>
-struct EnumNames<ShapeConvention> {
-  static constexpr std::array<const char*, 2> kNames = {"contract", "paper"};
 };
 
 // Where a start of an identification came from.

@@ -1,0 +1,59 @@
+// A measured modal damping ratio (docs/conventions.md §2).
+#include "datasets/measurement.h"
+
+#include <algorithm>
+
+namespace ringid {
+namespace {
+
+class Damping : public Measurement {
+ public:
+  Quantity quantity() const override { return Quantity::kDamping; }
+  const char* description() const override { return "damping ratio"; }
+  bool In(const MeasuredMode& m) const override { return m.damping_ratio.has_value(); }
+  int Rows(const MeasuredMode& m, const MeasurementOptions& o) const override {
+    return o.use_damping && In(m) ? 1 : 0;
+  }
+  void Evaluate(const MeasuredMode& m, const Mode& mode, const MeasurementOptions& o, double* r,
+                const std::vector<int>* params, Eigen::Ref<RowMatrix> dr) const override {
+    const double sigma = Sigma(m, o);
+    r[0] = (mode.damping_ratio - *m.damping_ratio) / sigma;
+    if (!params) return;
+    for (int p : *params) dr(0, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
+  }
+  bool Scalar(const MeasuredMode& m, const MeasurementOptions& o, double* value,
+              double* sigma) const override {
+    *value = *m.damping_ratio;
+    *sigma = Sigma(m, o);
+    return true;
+  }
+  void Measure(const Mode& mode, const MeasurementOptions&, MeasuredMode* m) const override {
+    if (In(*m)) m->damping_ratio = Clamped(mode.damping_ratio);
+  }
+  void Add(const Mode& mode, const MeasurementOptions&, double sigma,
+           MeasuredMode* m) const override {
+    m->damping_ratio = Clamped(mode.damping_ratio);
+    m->damping_sigma = sigma;
+  }
+  void AddNoise(double noise, const std::function<double()>& draw,
+                MeasuredMode* m) const override {
+    if (!In(*m)) return;
+    m->damping_sigma = noise * *m->damping_ratio;
+    m->damping_ratio = Clamped(*m->damping_ratio * (1 + noise * draw()));
+  }
+
+ private:
+  static double Sigma(const MeasuredMode& m, const MeasurementOptions& o) {
+    return m.damping_sigma.value_or(o.default_damping_sigma);
+  }
+  static double Clamped(double z) { return std::clamp(z, kMinDampingRatio, kMaxDampingRatio); }
+};
+
+}  // namespace
+
+const Measurement& DampingMeasurement() {
+  static const Damping unit;
+  return unit;
+}
+
+}  // namespace ringid

@@ -1,0 +1,55 @@
+// A measured natural frequency (the damped one, docs/conventions.md §2).
+#include "datasets/measurement.h"
+
+namespace ringid {
+namespace {
+
+class Frequency : public Measurement {
+ public:
+  Quantity quantity() const override { return Quantity::kFrequency; }
+  const char* description() const override { return "natural frequency"; }
+  bool In(const MeasuredMode&) const override { return true; }
+  int Rows(const MeasuredMode&, const MeasurementOptions&) const override { return 1; }
+  void Evaluate(const MeasuredMode& m, const Mode& mode, const MeasurementOptions& o, double* r,
+                const std::vector<int>* params, Eigen::Ref<RowMatrix> dr) const override {
+    const double sigma = FrequencySigma(m, o);
+    r[0] = (mode.frequency_hz - m.frequency_hz) / sigma;
+    if (!params) return;
+    for (int p : *params) dr(0, p) = mode.derivatives->Frequency(p) / sigma;
+  }
+  bool Scalar(const MeasuredMode& m, const MeasurementOptions& o, double* value,
+              double* sigma) const override {
+    *value = m.frequency_hz;
+    *sigma = FrequencySigma(m, o);
+    return true;
+  }
+  void Measure(const Mode& mode, const MeasurementOptions&, MeasuredMode* m) const override {
+    m->frequency_hz = mode.frequency_hz;
+  }
+  void Add(const Mode& mode, const MeasurementOptions& o, double sigma,
+           MeasuredMode* m) const override {
+    m->frequency_hz = mode.frequency_hz;
+    m->frequency_sigma_hz = sigma;
+  }
+  void AddNoise(double noise, const std::function<double()>& draw,
+                MeasuredMode* m) const override {
+    m->frequency_sigma_hz = noise * m->frequency_hz;
+    m->frequency_hz *= 1 + noise * draw();
+  }
+};
+
+}  // namespace
+
+double FrequencySigma(const MeasuredMode& m, const MeasurementOptions& o) {
+  if (o.frequency_weighting == FrequencyWeighting::kSigma && m.frequency_sigma_hz) {
+    return *m.frequency_sigma_hz;
+  }
+  return o.relative_sigma * m.frequency_hz;
+}
+
+const Measurement& FrequencyMeasurement() {
+  static const Frequency unit;
+  return unit;
+}
+
+}  // namespace ringid
