@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "report/archive.h"
+#include "model/archive.h"
 
 namespace ringid {
 

@@ -15,23 +15,19 @@ namespace ringid {
 
 using nlohmann::json;
 
-json ParameterSetJson(const IdentifyResult& s, const std::string& name,
-                      const std::string& description) {
-  json r;
-  r["format"] = kParameterSetFormat;
-  r["name"] = name;
-  r["description"] = description;
-  json params = json::object();
+ParameterSet IdentifiedParameterSet(const IdentifyResult& s, const std::string& name,
+                                    const std::string& description) {
+  ParameterSet set{name, description, {}};
   for (const ParameterEstimate& e : s.estimates) {
     if (!e.key.condition.empty()) continue;  // a set holds one tire's shared values
-    json& q = params[ParamName(e.param())];
-    q = {{"value", e.value}, {"std", e.std ? json(*e.std) : json(nullptr)}};
+    ParameterValue& q = set.parameters[e.param()];
+    q.value = e.value;
+    q.std = e.std;
     // What the data determined, which export marks in a .tir (LoadParameterSet).
-    if (e.free || e.tied_to) q["identifiable"] = ToString(e.identifiable);
-    if (const std::optional<std::string> given = e.Condition()) q["condition"] = *given;
+    if (e.free || e.tied_to) q.identifiable = ToString(e.identifiable);
+    q.condition = e.Condition();
   }
-  r["parameters"] = params;
-  return r;
+  return set;
 }
 
 bool CanWrite(const std::string& path, std::string* error) {

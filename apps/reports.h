@@ -9,13 +9,15 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "datasets/parameter_files.h"
 #include "estimation/identify.h"
 
 namespace ringid {
 
-// A parameter set (see LoadParameterSet in datasets/dataset.h).
-nlohmann::json ParameterSetJson(const IdentifyResult& s, const std::string& name,
-                                const std::string& description);
+// The shared values of a fit as a parameter set (--save_parameters), with
+// their standard deviations and what the data determined of them.
+ParameterSet IdentifiedParameterSet(const IdentifyResult& s, const std::string& name,
+                                    const std::string& description);
 
 // A report as text. Paths and names from the command line need not be UTF-8:
 // invalid bytes become U+FFFD instead of an exception.

@@ -29,6 +29,7 @@
 #include "report/report.h"
 #include "validation/suites.h"
 #include "datasets/dataset.h"
+#include "datasets/parameter_files.h"
 #include "datasets/synthetic.h"
 #include "datasets/tir_parameters.h"
 #include "estimation/compare.h"
@@ -114,7 +115,7 @@ int IdentifyCommand(int argc, char** argv) {
   }
   if (!FLAGS_save_parameters.empty() && s.status.ok()) {
     files.emplace_back(FLAGS_save_parameters,
-                       JsonText(ParameterSetJson(s, d.name, "identified by ringid from " + FLAGS_dataset)));
+                       ParameterSetText(IdentifiedParameterSet(s, d.name, "identified by ringid from " + FLAGS_dataset)));
   }
   if (!WriteFilesAtomically(files, &error)) return Usage(error);
   return s.status.ok() ? kExitOk : kExitFailure;
@@ -201,7 +202,7 @@ int SimulateCommand(int argc, char** argv) {
     return kExitFailure;
   }
   if (!WriteFilesAtomically({{FLAGS_output, DatasetToJson(d)},
-                             {FLAGS_truth, TruthText(model, truth, d, FLAGS_output)}},
+                             {FLAGS_truth, TruthText(MakeTruth(model, truth, d, FLAGS_output))}},
                             &error)) {
     return Usage(error);
   }

@@ -602,6 +602,10 @@ void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined)
 
 }  // namespace
 
+bool ParseJsonInput(const std::string& text, json* out, LoadError* error) {
+  return ParseChecked(text, error, [&](const json& j) { *out = j; });
+}
+
 bool ParseDataset(const std::string& text, const std::string& path,
                   Dataset* dataset, LoadError* error) {
   *dataset = Dataset{};

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "model/names.h"
 #include "model/parameters.h"
 
@@ -102,6 +104,9 @@ struct LoadError {
 
 // Reads a whole input file (at most kMaxFileBytes). False with `error` set.
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
+// Parses an input file's text as JSON, refusing duplicate keys and nesting
+// deeper than kMaxJsonDepth; a syntax error names where it is.
+bool ParseJsonInput(const std::string& text, nlohmann::json* out, LoadError* error);
 
 // The dataset's starting point in `condition`: shared known and initial
 // values, that condition's own, ties applied.

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "datasets/parameter_files.h"
 
 namespace ringid {
 
@@ -53,17 +54,13 @@ bool NeedsFormat2(const Dataset& d) {
 
 std::string ParameterSetToJson(const Parameters& p, const std::string& name,
                                const std::string& description) {
-  json j;
-  j["format"] = kParameterSetFormat;
-  j["name"] = name;
-  j["description"] = description;
-  j["parameters"] = json::object();
+  ParameterSet set{name, description, {}};
   for (int i = 0; i < kNumParams; ++i) {
     const Param q = ParamAt(i);
     const bool baseline = Info(q).group == Group::kEffect && p[q] == 0;  // the default
-    if (p.IsSet(q) && !baseline) j["parameters"][ParamName(q)] = {{"value", p[q]}};
+    if (p.IsSet(q) && !baseline) set.parameters[q].value = p[q];
   }
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return ParameterSetText(set);
 }
 
 std::string DatasetToJson(const Dataset& d) {

@@ -198,21 +198,5 @@ std::string EffectList(const std::vector<const Effect*>& effects) {
   return names.empty() ? "none" : names;
 }
 
-std::string TruthText(const RigidRingModel& model, const Parameters& truth, const Dataset& d,
-                      const std::string& dataset_file) {
-  nlohmann::json t;
-  t["format"] = "ringid-truth/1";
-  t["dataset"] = dataset_file;
-  t["effect"] = EffectList(model.effects());
-  for (Param q : model.parameters()) {
-    if (!d.IsPerCondition(q)) t["parameters"][ParamName(q)] = {{"value", truth[q]}};
-  }
-  for (const Condition& c : d.conditions) {
-    for (const auto& [q, v] : c.known) {
-      t["parameters"][std::string(ParamName(q)) + "@" + c.name] = {{"value", v}};
-    }
-  }
-  return t.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-}
 
 }  // namespace ringid

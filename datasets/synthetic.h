@@ -69,12 +69,6 @@ Dataset PlanSimulation(const Parameters& truth, double prior_spread,
 // The effects' names joined by commas, "none" without any.
 std::string EffectList(const std::vector<const Effect*>& effects);
 
-// The truth file of a simulation (ringid-truth/1): `dataset_file`, the
-// model's effects (EffectList) and every value of `model` the simulation of
-// `d` used, a per-condition one as NAME@CONDITION.
-std::string TruthText(const RigidRingModel& model, const Parameters& truth, const Dataset& d,
-                      const std::string& dataset_file);
-
 }  // namespace ringid
 
 #endif  // RINGID_DATASETS_SYNTHETIC_H_

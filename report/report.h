@@ -1,6 +1,6 @@
 // The typed reports ringid writes: one envelope (kind, schema version,
 // provenance) around one body per kind. Each body lists its fields once in
-// Serialize; the JSON writer and reader (report/archive.h) follow that list,
+// Serialize; the JSON writer and reader (model/archive.h) follow that list,
 // so a report written, read and written again is byte-identical.
 #ifndef RINGID_REPORT_REPORT_H_
 #define RINGID_REPORT_REPORT_H_
@@ -18,7 +18,7 @@
 #include "estimation/identify.h"
 #include "estimation/status.h"
 #include "model/modal.h"
-#include "report/archive.h"
+#include "model/archive.h"
 
 namespace ringid {
 

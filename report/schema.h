@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "report/archive.h"
+#include "model/archive.h"
 
 namespace ringid {
 

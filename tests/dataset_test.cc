@@ -12,6 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "datasets/parameter_files.h"
+#include "datasets/synthetic.h"
+#include "model/effects.h"
 #include "tests/test_support.h"
 
 namespace ringid {
@@ -485,6 +488,77 @@ TEST(ParameterSetTest, ReadsTheShippedSetAndRefusesBadOnes) {
   for (const auto& [text, field] : bad) {
     EXPECT_FALSE(LoadText(text, &p, &e)) << text;
     EXPECT_NE(e.OneLine().find(field), std::string::npos) << e.OneLine();
+  }
+}
+
+// A value written to 17 significant digits reads back as the same double, so
+// write, read and write again give the same bytes.
+TEST(ParameterSetTest, WriteReadWriteGivesTheSameBytes) {
+  const Parameters truth = ExampleCarTire();
+  const std::string first = ParameterSetToJson(truth, "car", "the example car tire");
+  const std::string path = testing::Scratch("set.json");
+  std::ofstream(path) << first;
+  Parameters p;
+  LoadError e;
+  ASSERT_TRUE(LoadParameterSet(path, &p, &e)) << e.OneLine();
+  for (Param q : RigidRingModel().parameters()) EXPECT_EQ(p[q], truth[q]) << ParamName(q);
+  EXPECT_EQ(ParameterSetToJson(p, "car", "the example car tire"), first);
+}
+
+// The truth of a simulation at two loads and a speed: every value simulated,
+// a per-condition one under NAME@CONDITION, reads back.
+TEST(TruthFileTest, ReadsBackEveryValueSimulatedAndWritesTheSameBytes) {
+  const RigidRingModel model({FindEffect("sensor_mass")});
+  Parameters truth = ExampleCarTire();
+  truth[Param::dm] = 0.3;
+  std::mt19937_64 rng(3);
+  const Dataset d = PlanSimulation(truth, 1.5, {0, 10}, {3000, 4500}, &rng);
+  ASSERT_EQ(d.conditions.size(), 4u);
+  const std::string text = TruthText(MakeTruth(model, truth, d, "data.json"));
+  const std::string path = testing::Scratch("truth.json");
+  std::ofstream(path) << text;
+  Truth t;
+  LoadError e;
+  ASSERT_TRUE(LoadTruth(path, &t, &e)) << e.OneLine();
+  EXPECT_EQ(t.dataset, "data.json");
+  EXPECT_EQ(t.effect, "sensor_mass");
+  for (Param q : model.parameters()) {
+    if (q == Param::F_cz0) continue;  // per condition
+    ASSERT_TRUE(t.parameters.count(ParamName(q))) << ParamName(q);
+    EXPECT_EQ(t.parameters.at(ParamName(q)).value, truth[q]) << ParamName(q);
+  }
+  EXPECT_FALSE(t.parameters.count("F_cz0"));
+  for (const Condition& c : d.conditions) {
+    EXPECT_EQ(t.parameters.at("F_cz0@" + c.name).value, c.known.at(Param::F_cz0)) << c.name;
+  }
+  EXPECT_EQ(TruthText(t), text);
+}
+
+TEST(TruthFileTest, RefusesEachKindOfBadFileNamingTheField) {
+  const std::string good =
+      R"({"format": "ringid-truth/1", "dataset": "d.json", "effect": "none", )"
+      R"("parameters": {"m_b": {"value": 7.7}, "F_cz0@standing": {"value": 4000}}})";
+  const std::string path = testing::Scratch("bad_truth.json");
+  Truth t;
+  LoadError e;
+  std::ofstream(path) << good;
+  ASSERT_TRUE(LoadTruth(path, &t, &e)) << e.OneLine();
+  const std::pair<std::string, std::string> bad[] = {
+      {R"({"format": "ringid-truth/2", "dataset": "d", "effect": "none", "parameters": {}})", "format"},
+      {R"({"format": "ringid-truth/1", "effect": "none", "parameters": {}})", "dataset"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "wobble", "parameters": {}})", "effect"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "none", "parameters": {}, "x": 1})", "x"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "none", "parameters": {"k_qq": {"value": 1}}})", "parameters.k_qq"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "none", "parameters": {"m_b": {"value": -1}}})", "parameters.m_b.value"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "none", "parameters": {"m_b": {"value": "1"}}})", "parameters.m_b.value"},
+      {R"({"format": "ringid-truth/1", "dataset": "d", "effect": "none", "parameters": {"m_b": 1, "m_b": 2}})", "parameters.m_b"},
+  };
+  for (const auto& [text, field] : bad) {
+    std::ofstream(path) << text;
+    EXPECT_FALSE(LoadTruth(path, &t, &e)) << text;
+    EXPECT_EQ(e.file, path);
+    EXPECT_EQ(e.field, field) << text << " -> " << e.OneLine();
+    EXPECT_FALSE(e.message.empty());
   }
 }
 

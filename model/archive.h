@@ -17,8 +17,8 @@
 // std::vector (array), std::pair (two-element array), std::map keyed by a
 // string or an enum (object), Eigen vectors (array) and matrices (rows), and
 // structs with Serialize (object).
-#ifndef RINGID_REPORT_ARCHIVE_H_
-#define RINGID_REPORT_ARCHIVE_H_
+#ifndef RINGID_MODEL_ARCHIVE_H_
+#define RINGID_MODEL_ARCHIVE_H_
 
 #include <cmath>
 #include <complex>
@@ -373,4 +373,4 @@ class JsonReader {
 
 }  // namespace ringid
 
-#endif  // RINGID_REPORT_ARCHIVE_H_
+#endif  // RINGID_MODEL_ARCHIVE_H_
