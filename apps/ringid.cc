@@ -379,6 +379,11 @@ int SchemaCommand(int, char**) {
   return kExitOk;
 }
 
+int InputsCommand(int, char**) {
+  std::fputs(InputsMarkdown().c_str(), stdout);
+  return kExitOk;
+}
+
 int ReferenceCommand(int, char**) {
   std::fputs(ReferenceMarkdown().c_str(), stdout);
   return kExitOk;
@@ -436,6 +441,8 @@ const std::vector<Command>& Commands() {
        {"parameters", "set", "format", "output"}, ExportCommand},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
+      {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},
+       InputsCommand},
       {"reference", "",
        "parameters, degrees of freedom, labels and effects with their units, as\n"
        "Markdown (docs/reference.md)",

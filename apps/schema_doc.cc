@@ -1,5 +1,7 @@
 #include "apps/schema_doc.h"
 
+#include "datasets/dataset_file.h"
+#include "datasets/parameter_files.h"
 #include "report/report.h"
 #include "report/schema.h"
 #include "validation/suites.h"
@@ -35,6 +37,27 @@ std::string ReportsMarkdown() {
          Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE") +
          Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE") +
          Section<BenchSpeedReport>("ringid bench --suite=speed --output=FILE");
+}
+
+std::string InputsMarkdown() {
+  DatasetFields format1, format2;
+  format2.format = kDatasetFormat2;
+  return std::string("# The input files of ringid\n\n") +
+         "Made by `ringid inputs` from the files' own field lists; a test keeps this file\n"
+         "equal to its output. The rules these types cannot say (ranges, names, what one\n"
+         "field asks of another) are in [conventions.md](conventions.md) §3, §5 and §7. A\n"
+         "reader refuses a missing, mistyped or unknown field, naming its path; an object keyed\n"
+         "by name lists parameters (`known`, `initial`, `ties`, `priors`) or degrees of freedom\n"
+         "(`shape`) by their names in [reference.md](reference.md).\n\n" +
+         "## Modal dataset, format 1 (`" + kDatasetFormat1 + "`)\n\nRead by `--dataset`, written by "
+         "`simulate --output`.\n\n" + InputSchema(format1) + "\n" +
+         "## Modal dataset, format 2 (`" + kDatasetFormat2 + "`)\n\nSeveral conditions, rolling, "
+         "priors (conventions.md §7).\n\n" + InputSchema(format2) + "\n" +
+         "## Parameter set (`" + kParameterSetFormat + "`)\n\nRead by `--parameters`, written by "
+         "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
+         "value, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +
+         "## Truth file (`" + kTruthFormat + "`)\n\nWritten by `simulate --truth`, read by "
+         "`LoadTruth` (datasets/parameter_files.h).\n\n" + InputSchema(Truth{});
 }
 
 }  // namespace ringid

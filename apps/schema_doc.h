@@ -8,6 +8,8 @@
 namespace ringid {
 
 std::string ReportsMarkdown();
+// docs/inputs.md: the input files' fields (`ringid inputs`).
+std::string InputsMarkdown();
 
 }  // namespace ringid
 

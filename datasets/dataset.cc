@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "datasets/dataset_file.h"
 #include "model/spelling.h"
 
 namespace ringid {
@@ -33,26 +34,21 @@ std::string Magnitude() {
   throw Failure{field, message};
 }
 
-void OnlyKeys(const json& j, const std::string& where,
-              const std::set<std::string>& allowed) {
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (!allowed.count(it.key())) {
-      Fail(where.empty() ? it.key() : where + "." + it.key(), "unknown key");
-    }
-  }
+// The archive reads null as a number that is not finite.
+double Finite(double v, const std::string& field) {
+  if (!std::isfinite(v)) Fail(field, "must be a number");
+  return v;
 }
 
+double Positive(double v, const std::string& field) {
+  if (!(Finite(v, field) > 0)) Fail(field, "must be positive");
+  return v;
+}
+
+// For the parameter-set reader, which reads JSON as it comes.
 double Number(const json& j, const std::string& field) {
   if (!j.is_number()) Fail(field, "must be a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) Fail(field, "must be finite");
-  return v;
-}
-
-double Positive(const json& j, const std::string& field) {
-  const double v = Number(j, field);
-  if (!(v > 0)) Fail(field, "must be positive");
-  return v;
+  return Finite(j.get<double>(), field);
 }
 
 std::string String(const json& j, const std::string& field) {
@@ -66,14 +62,12 @@ Param ParamCalled(const std::string& name, const std::string& field) {
   return *p;
 }
 
-std::map<Param, double> Values(const json& j, const std::string& field) {
-  if (!j.is_object()) Fail(field, "must be an object of parameter values");
+std::map<Param, double> Values(const ParameterValues& values, const std::string& field) {
   std::map<Param, double> out;
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string f = field + "." + it.key();
-    const Param p = ParamCalled(it.key(), f);
-    const double v = Number(it.value(), f);
-    const std::string problem = ParameterValueProblem(p, v);
+  for (const auto& [name, v] : values) {
+    const std::string f = field + "." + name;
+    const Param p = ParamCalled(name, f);
+    const std::string problem = ParameterValueProblem(p, Finite(v, f));
     if (!problem.empty()) Fail(f, problem);
     out[p] = v;
   }
@@ -90,131 +84,93 @@ std::vector<std::string> MeasurableLabels() {
   return names;
 }
 
-MeasuredMode Mode(const json& j, const std::string& field) {
-  if (!j.is_object()) Fail(field, "must be an object");
-  OnlyKeys(j, field,
-           {"label", "plane", "frequency_hz", "frequency_sigma_hz",
-            "damping_ratio", "damping_sigma", "shape", "shape_sigma"});
+MeasuredMode Mode(const ModeFields& j, const std::string& field) {
   MeasuredMode m;
-  if (!j.contains("label")) Fail(field + ".label", "missing");
-  const std::string label = String(j["label"], field + ".label");
-  const auto parsed = ParseLabel(label);
-  if (!parsed) Fail(field + ".label", UnknownName("label", label, MeasurableLabels()));
+  const auto parsed = ParseLabel(j.label);
+  if (!parsed) Fail(field + ".label", UnknownName("label", j.label, MeasurableLabels()));
   if (LabelPlane(*parsed) == Plane::kHub) {  // not a typo: nothing to suggest
-    Fail(field + ".label", "'" + label + "' is a mode of the hub, which a dataset does not "
+    Fail(field + ".label", "'" + j.label + "' is a mode of the hub, which a dataset does not "
                           "list (expected " + OneOf(MeasurableLabels()) + ")");
   }
   m.label = *parsed;
-  if (j.contains("plane")) {
-    const std::string plane = String(j["plane"], field + ".plane");
-    if (plane != "in_plane" && plane != "out_of_plane") {
+  if (j.plane) {
+    if (*j.plane != "in_plane" && *j.plane != "out_of_plane") {
       Fail(field + ".plane", "must be in_plane or out_of_plane");
     }
-    if (plane != PlaneName(LabelPlane(m.label))) {
-      Fail(field + ".plane", "'" + plane + "' contradicts label '" + label + "'");
+    if (*j.plane != PlaneName(LabelPlane(m.label))) {
+      Fail(field + ".plane", "'" + *j.plane + "' contradicts label '" + j.label + "'");
     }
   }
-  if (!j.contains("frequency_hz")) Fail(field + ".frequency_hz", "missing");
-  m.frequency_hz = Positive(j["frequency_hz"], field + ".frequency_hz");
+  m.frequency_hz = Positive(j.frequency_hz, field + ".frequency_hz");
   const std::string problem = ModeFrequencyProblem(m.frequency_hz);
   if (!problem.empty()) Fail(field + ".frequency_hz", problem);
-  if (j.contains("frequency_sigma_hz")) {
-    m.frequency_sigma_hz =
-        Positive(j["frequency_sigma_hz"], field + ".frequency_sigma_hz");
+  if (j.frequency_sigma_hz) {
+    m.frequency_sigma_hz = Positive(*j.frequency_sigma_hz, field + ".frequency_sigma_hz");
   }
-  if (j.contains("damping_ratio")) {
-    const double z = Number(j["damping_ratio"], field + ".damping_ratio");
+  if (j.damping_ratio) {
+    const double z = Finite(*j.damping_ratio, field + ".damping_ratio");
     if (!(z > 0 && z < 1)) Fail(field + ".damping_ratio", "must lie in (0, 1)");
     m.damping_ratio = z;
   }
-  if (j.contains("damping_sigma")) {
-    if (!m.damping_ratio) {
-      Fail(field + ".damping_sigma", "given without damping_ratio");
-    }
-    m.damping_sigma = Positive(j["damping_sigma"], field + ".damping_sigma");
+  if (j.damping_sigma) {
+    if (!m.damping_ratio) Fail(field + ".damping_sigma", "given without damping_ratio");
+    m.damping_sigma = Positive(*j.damping_sigma, field + ".damping_sigma");
   }
-  if (j.contains("shape")) {
-    const json& s = j["shape"];
-    if (!s.is_object() || s.empty()) {
+  if (j.shape) {
+    if (j.shape->empty()) {
       Fail(field + ".shape", "must be a non-empty object of components");
     }
     double largest = 0;
-    for (auto it = s.begin(); it != s.end(); ++it) {
-      const std::string f = field + ".shape." + it.key();
-      const auto dof = ParseDof(it.key());
-      if (!dof) Fail(f, UnknownName("degree of freedom", it.key(), NamesOf<Dof>()));
-      const double v = Number(it.value(), f);
-      largest = std::max(largest, std::abs(v));
+    for (const auto& [name, v] : *j.shape) {
+      const std::string f = field + ".shape." + name;
+      const auto dof = ParseDof(name);
+      if (!dof) Fail(f, UnknownName("degree of freedom", name, NamesOf<Dof>()));
+      largest = std::max(largest, std::abs(Finite(v, f)));
       m.shape.emplace_back(*dof, v);
     }
     if (!(largest > 0)) Fail(field + ".shape", "all components are zero");
   }
-  if (j.contains("shape_sigma")) {
+  if (j.shape_sigma) {
     if (m.shape.empty()) Fail(field + ".shape_sigma", "given without shape");
-    m.shape_sigma = Positive(j["shape_sigma"], field + ".shape_sigma");
+    m.shape_sigma = Positive(*j.shape_sigma, field + ".shape_sigma");
   }
   return m;
 }
 
-// "name" and "description", required and optional, as in both formats.
-void NameAndDescription(const json& j, Dataset* d) {
-  if (!j.contains("name")) Fail("name", "missing");
-  d->name = String(j["name"], "name");
-  if (d->name.empty()) Fail("name", "must not be empty");
-  if (j.contains("description")) {
-    d->description = String(j["description"], "description");
-  }
-}
-
 // The shared "known", "initial" and "ties" of both formats.
-void SharedValues(const json& j, Dataset* d) {
-  if (j.contains("known")) d->known = Values(j["known"], "known");
-  if (j.contains("initial")) d->initial = Values(j["initial"], "initial");
+void SharedValues(const DatasetFields& j, Dataset* d) {
+  if (j.known) d->known = Values(*j.known, "known");
+  if (j.initial) d->initial = Values(*j.initial, "initial");
   for (const auto& [p, v] : d->initial) {
-    if (d->known.count(p)) {
-      Fail(std::string("initial.") + ParamName(p),
-           "also given in known");
-    }
+    if (d->known.count(p)) Fail(std::string("initial.") + ParamName(p), "also given in known");
   }
-  if (j.contains("ties")) {
-    const json& t = j["ties"];
-    if (!t.is_object()) Fail("ties", "must be an object");
-    for (auto it = t.begin(); it != t.end(); ++it) {
-      const std::string f = "ties." + it.key();
-      const Param from = ParamCalled(it.key(), f);
-      const Param to = ParamCalled(String(it.value(), f), f);
-      if (from == to) Fail(f, "tied to itself");
-      if (Info(from).domain != Info(to).domain) {
-        Fail(f, "ties parameters of different kinds");
-      }
-      if (d->known.count(from) || d->initial.count(from)) {
-        Fail(f, "a tied parameter takes its value from its target; remove it "
-                "from known/initial");
-      }
-      d->ties[from] = to;
+  if (!j.ties) return;
+  for (const auto& [name, target] : *j.ties) {
+    const std::string f = "ties." + name;
+    const Param from = ParamCalled(name, f);
+    const Param to = ParamCalled(target, f);
+    if (from == to) Fail(f, "tied to itself");
+    if (Info(from).domain != Info(to).domain) Fail(f, "ties parameters of different kinds");
+    if (d->known.count(from) || d->initial.count(from)) {
+      Fail(f, "a tied parameter takes its value from its target; remove it from known/initial");
     }
-    for (const auto& [from, to] : d->ties) {
-      if (d->ties.count(to)) {
-        Fail(std::string("ties.") + ParamName(from),
-             std::string("target '") + ParamName(to) +
-                 "' is itself tied");
-      }
+    d->ties[from] = to;
+  }
+  for (const auto& [from, to] : d->ties) {
+    if (d->ties.count(to)) {
+      Fail(std::string("ties.") + ParamName(from),
+           std::string("target '") + ParamName(to) + "' is itself tied");
     }
   }
 }
 
-// The "modes" array at `field` (of condition `condition`), appended to
-// d->modes; a label at most once within it.
-void Modes(const json& j, const std::string& field, int condition,
+// The modes at `field` (of condition `condition`), appended to d->modes; a
+// label at most once among them.
+void Modes(const std::vector<ModeFields>& modes, const std::string& field, int condition,
            Dataset* d) {
-  if (!j.contains("modes")) Fail(field, "missing");
-  const json& modes = j["modes"];
-  if (!modes.is_array() || modes.empty()) {
-    Fail(field, "must be a non-empty array");
-  }
+  if (modes.empty()) Fail(field, "must be a non-empty array");
   if (modes.size() > static_cast<size_t>(kMaxModes)) {
-    Fail(field, "more than " + std::to_string(kMaxModes) +
-                    " modes (one per contract label)");
+    Fail(field, "more than " + std::to_string(kMaxModes) + " modes (one per contract label)");
   }
   std::set<ModeLabel> seen;
   for (size_t i = 0; i < modes.size(); ++i) {
@@ -222,34 +178,18 @@ void Modes(const json& j, const std::string& field, int condition,
     d->modes.push_back(Mode(modes[i], f));
     d->modes.back().condition = condition;
     if (!seen.insert(d->modes.back().label).second) {
-      Fail(f + ".label", std::string("label '") +
-                             LabelName(d->modes.back().label) +
-                             "' appears twice");
+      Fail(f + ".label",
+           std::string("label '") + LabelName(d->modes.back().label) + "' appears twice");
     }
   }
 }
 
-// Format 1 (docs/conventions.md §3): one standing condition.
-void CheckFormat1(const json& j, Dataset* d) {
-  OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
-                   "modes"});
-  if (!j.contains("format")) Fail("format", "missing");
-  if (String(j["format"], "format") != kDatasetFormat1) {
-    Fail("format", std::string("must be \"") + kDatasetFormat1 + "\" or \"" +
-                       kDatasetFormat2 + "\"");
-  }
-  NameAndDescription(j, d);
-  SharedValues(j, d);
-  Modes(j, "modes", 0, d);
-}
-
 // "per_condition": parameter names, each at most once, none shared (top-level
 // known/initial) or tied; kept in catalogue order.
-void PerCondition(const json& j, Dataset* d) {
-  if (!j.is_array()) Fail("per_condition", "must be an array of parameter names");
-  for (size_t i = 0; i < j.size(); ++i) {
+void PerCondition(const std::vector<std::string>& names, Dataset* d) {
+  for (size_t i = 0; i < names.size(); ++i) {
     const std::string f = "per_condition[" + std::to_string(i) + "]";
-    const std::string name = String(j[i], f);
+    const std::string& name = names[i];
     const Param p = ParamCalled(name, f);
     if (d->IsPerCondition(p)) Fail(f, "'" + name + "' is listed twice");
     for (const char* where : {"known", "initial"}) {
@@ -273,67 +213,58 @@ void PerCondition(const json& j, Dataset* d) {
 
 // "priors": one prior per parameter, on neither a known, a tied nor a
 // per-condition parameter.
-void Priors(const json& j, Dataset* d) {
-  if (!j.is_object()) Fail("priors", "must be an object of priors");
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string f = "priors." + it.key();
-    const Param p = ParamCalled(it.key(), f);
-    const json& o = it.value();
-    if (!o.is_object()) Fail(f, "must be an object");
-    OnlyKeys(o, f, {"distribution", "mean", "sigma", "median", "factor_95"});
-    if (!o.contains("distribution")) Fail(f + ".distribution", "missing");
-    const std::string name = String(o["distribution"], f + ".distribution");
-    const auto distribution = FromString<PriorDistribution>(name);
+void Priors(const std::map<std::string, PriorFields>& priors, Dataset* d) {
+  for (const auto& [name, o] : priors) {
+    const std::string f = "priors." + name;
+    const Param p = ParamCalled(name, f);
+    const auto distribution = FromString<PriorDistribution>(o.distribution);
     if (!distribution) {
       Fail(f + ".distribution", "must be " + EnumChoices<PriorDistribution>());
     }
     const bool normal = *distribution == PriorDistribution::kNormal;
     const char* center = normal ? "mean" : "median";
     const char* spread = normal ? "sigma" : "factor_95";
-    for (const char* other : {"mean", "sigma", "median", "factor_95"}) {
-      const std::string key = other;
-      if (o.contains(key) && key != center && key != spread) {
-        Fail(f + "." + other, std::string("not a key of a ") + name +
-                                  " prior (it takes " + center + " and " +
-                                  spread + ")");
+    const std::pair<const char*, const std::optional<double>*> given[] = {
+        {"mean", &o.mean}, {"sigma", &o.sigma}, {"median", &o.median}, {"factor_95", &o.factor_95}};
+    for (const auto& [key, value] : given) {
+      if (value->has_value() && key != std::string(center) && key != std::string(spread)) {
+        Fail(f + "." + key, std::string("not a key of a ") + o.distribution +
+                                " prior (it takes " + center + " and " + spread + ")");
       }
     }
-    for (const char* key : {center, spread}) {
-      if (!o.contains(key)) Fail(f + "." + key, "missing");
+    for (const auto& [key, value] : given) {
+      if ((key == std::string(center) || key == std::string(spread)) && !value->has_value()) {
+        Fail(f + "." + key, "missing");
+      }
     }
     Prior prior;
     prior.distribution = *distribution;
     if (normal) {
-      prior.center = Number(o["mean"], f + ".mean");
+      prior.center = Finite(*o.mean, f + ".mean");
       const std::string problem = ParameterValueProblem(p, prior.center);
       if (!problem.empty()) Fail(f + ".mean", problem);
-      prior.spread = Positive(o["sigma"], f + ".sigma");
+      prior.spread = Positive(*o.sigma, f + ".sigma");
       if (prior.spread > kMaxParameterMagnitude) Fail(f + ".sigma", ParameterValueProblem(p, prior.spread));
     } else {
       if (Info(p).domain != Domain::kPositive) {
-        Fail(f + ".distribution",
-             "a lognormal prior needs a positive parameter; '" + it.key() +
-                 "' may be zero or negative");
+        Fail(f + ".distribution", "a lognormal prior needs a positive parameter; '" + name +
+                                      "' may be zero or negative");
       }
-      prior.center = Positive(o["median"], f + ".median");
+      prior.center = Positive(*o.median, f + ".median");
       const std::string problem = ParameterValueProblem(p, prior.center);
       if (!problem.empty()) Fail(f + ".median", problem);
-      prior.spread = Number(o["factor_95"], f + ".factor_95");
+      prior.spread = Finite(*o.factor_95, f + ".factor_95");
       if (!(prior.spread > 1)) Fail(f + ".factor_95", "must be greater than 1");
       if (prior.spread > kMaxParameterMagnitude) {
         Fail(f + ".factor_95", "is absurd: beyond " + Magnitude());
       }
     }
-    if (d->known.count(p)) {
-      Fail(f, "'" + it.key() + "' is known: a known value needs no prior");
-    }
+    if (d->known.count(p)) Fail(f, "'" + name + "' is known: a known value needs no prior");
     if (d->ties.count(p)) {
-      Fail(f, "'" + it.key() + "' is tied: it takes its value from '" +
-                  ParamName(d->ties.at(p)) + "'; put the prior there");
+      Fail(f, "'" + name + "' is tied: it takes its value from '" + ParamName(d->ties.at(p)) +
+                  "'; put the prior there");
     }
-    if (d->IsPerCondition(p)) {
-      Fail(f, "priors on per-condition parameters are not supported");
-    }
+    if (d->IsPerCondition(p)) Fail(f, "priors on per-condition parameters are not supported");
     d->priors[p] = prior;
   }
 }
@@ -351,77 +282,66 @@ bool ValidConditionName(const std::string& name) {
 
 // One element of "conditions", appended to d->conditions and its modes to
 // d->modes.
-void ReadCondition(const json& j, const std::string& field, Dataset* d) {
-  if (!j.is_object()) Fail(field, "must be an object");
-  OnlyKeys(j, field, {"name", "speed_m_s", "known", "initial", "modes"});
+void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* d) {
   Condition c;
-  if (!j.contains("name")) Fail(field + ".name", "missing");
-  c.name = String(j["name"], field + ".name");
+  c.name = j.name;
   if (c.name.empty()) Fail(field + ".name", "must not be empty");
   if (!ValidConditionName(c.name)) {
-    Fail(field + ".name", "'" + c.name +
-                              "' may hold only letters, digits, '_', '-' "
-                              "and '.'");
+    Fail(field + ".name", "'" + c.name + "' may hold only letters, digits, '_', '-' and '.'");
   }
   for (const Condition& before : d->conditions) {
-    if (before.name == c.name) {
-      Fail(field + ".name", "condition '" + c.name + "' appears twice");
-    }
+    if (before.name == c.name) Fail(field + ".name", "condition '" + c.name + "' appears twice");
   }
-  if (j.contains("speed_m_s")) {
-    c.speed_m_s = Number(j["speed_m_s"], field + ".speed_m_s");
+  if (j.speed_m_s) {
+    c.speed_m_s = Finite(*j.speed_m_s, field + ".speed_m_s");
     if (c.speed_m_s < 0) Fail(field + ".speed_m_s", "must not be negative");
   }
-  for (const char* where : {"known", "initial"}) {
-    if (!j.contains(where)) continue;
-    const std::string f = field + "." + where;
-    auto& values = std::string(where) == "known" ? c.known : c.initial;
-    values = Values(j[where], f);
+  for (const bool known : {true, false}) {
+    const auto& given = known ? j.known : j.initial;
+    if (!given) continue;
+    const std::string f = field + (known ? ".known" : ".initial");
+    auto& values = known ? c.known : c.initial;
+    values = Values(*given, f);
     for (const auto& [p, v] : values) {
       const std::string name = ParamName(p);
       if (!d->IsPerCondition(p)) {
-        Fail(f + "." + name, "'" + name +
-                                 "' is shared: give it at top level, or list "
-                                 "it in per_condition");
+        Fail(f + "." + name, "'" + name + "' is shared: give it at top level, or list it in "
+                                          "per_condition");
       }
-      if (&values == &c.initial && c.known.count(p)) {
-        Fail(f + "." + name, "also given in known");
-      }
+      if (!known && c.known.count(p)) Fail(f + "." + name, "also given in known");
     }
   }
   const int index = static_cast<int>(d->conditions.size());
   d->conditions.push_back(c);
-  Modes(j, field + ".modes", index, d);
+  Modes(j.modes, field + ".modes", index, d);
 }
 
-// Format 2 (docs/conventions.md §7): several conditions, priors.
-void CheckFormat2(const json& j, Dataset* d) {
-  d->format = 2;
-  if (j.contains("modes")) {
-    Fail("modes", "not used in format 2: each condition gives its own modes "
-                  "(conditions[i].modes)");
-  }
-  OnlyKeys(j, "", {"format", "name", "description", "known", "initial", "ties",
-                   "priors", "per_condition", "conditions"});
-  NameAndDescription(j, d);
+// What the field list cannot say of a file the archive has read.
+void Check(const DatasetFields& j, Dataset* d) {
+  d->name = j.name;
+  if (d->name.empty()) Fail("name", "must not be empty");
+  d->description = j.description.value_or("");
   SharedValues(j, d);
-  if (j.contains("per_condition")) PerCondition(j["per_condition"], d);
-  if (j.contains("priors")) Priors(j["priors"], d);
-  if (!j.contains("conditions")) Fail("conditions", "missing");
-  const json& conditions = j["conditions"];
-  if (!conditions.is_array() || conditions.empty()) {
-    Fail("conditions", "must be a non-empty array");
+  if (j.format == kDatasetFormat1) {
+    Modes(j.modes, "modes", 0, d);
+    return;
   }
+  d->format = 2;
+  if (j.per_condition) PerCondition(*j.per_condition, d);
+  if (j.priors) Priors(*j.priors, d);
+  if (j.conditions.empty()) Fail("conditions", "must be a non-empty array");
   d->conditions.clear();
-  for (size_t i = 0; i < conditions.size(); ++i) {
-    ReadCondition(conditions[i], "conditions[" + std::to_string(i) + "]", d);
+  for (size_t i = 0; i < j.conditions.size(); ++i) {
+    ReadCondition(j.conditions[i], "conditions[" + std::to_string(i) + "]", d);
   }
 }
 
-// A file of the other kind, named as what it is rather than by the first key
-// a dataset does not have ("parameters: unknown key"). A parameter set may
-// leave out its format (LoadParameterSet).
-void NotADataset(const json& j) {
+// Before the field list: a file of another kind, named as what it is rather
+// than by the first key a dataset does not have ("parameters: unknown key"),
+// and the format that decides which fields follow. A parameter set may leave
+// out its format (LoadParameterSet).
+void CheckKind(const json& j) {
+  if (!j.is_object()) Fail("", "top level must be a JSON object");
   const bool unmarked_set = !j.contains("format") && j.contains("parameters") &&
                             !j.contains("modes") && !j.contains("conditions") &&
                             !j.contains("report");
@@ -434,16 +354,30 @@ void NotADataset(const json& j) {
     Fail("report", "this is a ringid " + j["report"].get<std::string>() +
                        " report, not a dataset");
   }
+  if (!j.contains("format")) Fail("format", "missing");
+  const std::string format = String(j["format"], "format");
+  if (format != kDatasetFormat1 && format != kDatasetFormat2) {
+    Fail("format", std::string("must be \"") + kDatasetFormat1 + "\" or \"" + kDatasetFormat2 + "\"");
+  }
+  if (format == kDatasetFormat2 && j.contains("modes")) {
+    Fail("modes", "not used in format 2: each condition gives its own modes "
+                  "(conditions[i].modes)");
+  }
 }
 
-void Check(const json& j, Dataset* d) {
-  if (!j.is_object()) Fail("", "top level must be a JSON object");
-  NotADataset(j);
-  if (j.contains("format") && j["format"] == kDatasetFormat2) {
-    CheckFormat2(j, d);
-  } else {
-    CheckFormat1(j, d);
-  }
+// The archive's "FIELD: MESSAGE" as a Failure.
+[[noreturn]] void FailWith(const std::string& archive_error) {
+  const size_t colon = archive_error.find(": ");
+  if (colon == std::string::npos) Fail("", archive_error);
+  Fail(archive_error.substr(0, colon), archive_error.substr(colon + 2));
+}
+
+void Read(const json& j, Dataset* d) {
+  CheckKind(j);
+  DatasetFields fields;
+  std::string error;
+  if (!JsonReader::FromJson(Json(j), "", &fields, &error)) FailWith(error);
+  Check(fields, d);
 }
 
 }  // namespace
@@ -611,7 +545,7 @@ bool ParseDataset(const std::string& text, const std::string& path,
   *dataset = Dataset{};
   dataset->path = path;
   error->file = path;
-  return ParseChecked(text, error, [&](const json& j) { Check(j, dataset); });
+  return ParseChecked(text, error, [&](const json& j) { Read(j, dataset); });
 }
 
 bool LoadParameterSet(const std::string& path, Parameters* p,

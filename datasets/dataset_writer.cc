@@ -3,37 +3,39 @@
 #include <map>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "datasets/dataset.h"
+#include "datasets/dataset_file.h"
 #include "datasets/parameter_files.h"
 
 namespace ringid {
 
-using nlohmann::json;
-
 namespace {
 
-json ValuesJson(const std::map<Param, double>& m) {
-  json o = json::object();
+ParameterValues ValuesOf(const std::map<Param, double>& m) {
+  ParameterValues o;
   for (const auto& [p, v] : m) o[ParamName(p)] = v;
   return o;
 }
 
-json ModeJson(const MeasuredMode& m) {
-  json o;
-  o["label"] = LabelName(m.label);
-  o["plane"] = PlaneName(LabelPlane(m.label));
-  o["frequency_hz"] = m.frequency_hz;
-  if (m.frequency_sigma_hz) o["frequency_sigma_hz"] = *m.frequency_sigma_hz;
-  if (m.damping_ratio) o["damping_ratio"] = *m.damping_ratio;
-  if (m.damping_sigma) o["damping_sigma"] = *m.damping_sigma;
+// Absent where empty, as a reader would leave it out.
+std::optional<ParameterValues> GivenValues(const std::map<Param, double>& m) {
+  if (m.empty()) return std::nullopt;
+  return ValuesOf(m);
+}
+
+ModeFields FieldsOf(const MeasuredMode& m) {
+  ModeFields o;
+  o.label = LabelName(m.label);
+  o.plane = PlaneName(LabelPlane(m.label));
+  o.frequency_hz = m.frequency_hz;
+  o.frequency_sigma_hz = m.frequency_sigma_hz;
+  o.damping_ratio = m.damping_ratio;
+  o.damping_sigma = m.damping_sigma;
   if (!m.shape.empty()) {
-    json s = json::object();
-    for (const auto& [dof, v] : m.shape) s[DofName(dof)] = v;
-    o["shape"] = s;
+    o.shape.emplace();
+    for (const auto& [dof, v] : m.shape) (*o.shape)[DofName(dof)] = v;
   }
-  if (m.shape_sigma) o["shape_sigma"] = *m.shape_sigma;
+  o.shape_sigma = m.shape_sigma;
   return o;
 }
 
@@ -63,58 +65,54 @@ std::string ParameterSetToJson(const Parameters& p, const std::string& name,
   return ParameterSetText(set);
 }
 
-std::string DatasetToJson(const Dataset& d) {
-  const bool format2 = NeedsFormat2(d);
-  json j;
-  j["format"] = format2 ? kDatasetFormat2 : kDatasetFormat1;
-  j["name"] = d.name;
-  if (!d.description.empty()) j["description"] = d.description;
-  if (!d.known.empty()) j["known"] = ValuesJson(d.known);
-  if (!d.initial.empty()) j["initial"] = ValuesJson(d.initial);
+DatasetFields FieldsOf(const Dataset& d) {
+  DatasetFields j;
+  j.format = NeedsFormat2(d) ? kDatasetFormat2 : kDatasetFormat1;
+  j.name = d.name;
+  if (!d.description.empty()) j.description = d.description;
+  j.known = GivenValues(d.known);
+  j.initial = GivenValues(d.initial);
   if (!d.ties.empty()) {
-    json t = json::object();
-    for (const auto& [a, b] : d.ties) t[ParamName(a)] = ParamName(b);
-    j["ties"] = t;
+    j.ties.emplace();
+    for (const auto& [a, b] : d.ties) (*j.ties)[ParamName(a)] = ParamName(b);
   }
-  if (!format2) {
-    j["modes"] = json::array();
-    for (const MeasuredMode& m : d.modes) j["modes"].push_back(ModeJson(m));
-  } else {
-    if (!d.priors.empty()) {
-      json priors = json::object();
-      for (const auto& [p, prior] : d.priors) {
-        const bool normal = prior.distribution == PriorDistribution::kNormal;
-        json o;
-        o["distribution"] = ToString(prior.distribution);
-        o[normal ? "mean" : "median"] = prior.center;
-        o[normal ? "sigma" : "factor_95"] = prior.spread;
-        priors[ParamName(p)] = o;
-      }
-      j["priors"] = priors;
-    }
-    if (!d.per_condition.empty()) {
-      j["per_condition"] = json::array();
-      for (const Param p : d.per_condition) {
-        j["per_condition"].push_back(ParamName(p));
-      }
-    }
-    j["conditions"] = json::array();
-    for (size_t i = 0; i < d.conditions.size(); ++i) {
-      const Condition& c = d.conditions[i];
-      json o;
-      o["name"] = c.name;
-      o["speed_m_s"] = c.speed_m_s;
-      if (!c.known.empty()) o["known"] = ValuesJson(c.known);
-      if (!c.initial.empty()) o["initial"] = ValuesJson(c.initial);
-      o["modes"] = json::array();
-      for (const MeasuredMode& m : d.modes) {
-        if (m.condition == static_cast<int>(i)) o["modes"].push_back(ModeJson(m));
-      }
-      j["conditions"].push_back(o);
+  if (j.format == kDatasetFormat1) {
+    for (const MeasuredMode& m : d.modes) j.modes.push_back(FieldsOf(m));
+    return j;
+  }
+  if (!d.priors.empty()) {
+    j.priors.emplace();
+    for (const auto& [p, prior] : d.priors) {
+      PriorFields& o = (*j.priors)[ParamName(p)];
+      o.distribution = ToString(prior.distribution);
+      const bool normal = prior.distribution == PriorDistribution::kNormal;
+      (normal ? o.mean : o.median) = prior.center;
+      (normal ? o.sigma : o.factor_95) = prior.spread;
     }
   }
+  if (!d.per_condition.empty()) {
+    j.per_condition.emplace();
+    for (const Param p : d.per_condition) j.per_condition->push_back(ParamName(p));
+  }
+  for (size_t i = 0; i < d.conditions.size(); ++i) {
+    const Condition& c = d.conditions[i];
+    ConditionFields o;
+    o.name = c.name;
+    o.speed_m_s = c.speed_m_s;
+    o.known = GivenValues(c.known);
+    o.initial = GivenValues(c.initial);
+    for (const MeasuredMode& m : d.modes) {
+      if (m.condition == static_cast<int>(i)) o.modes.push_back(FieldsOf(m));
+    }
+    j.conditions.push_back(o);
+  }
+  return j;
+}
+
+std::string DatasetToJson(const Dataset& d) {
   // Names may come from file names, which need not be UTF-8.
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return JsonWriter::ToJson(FieldsOf(d)).dump(2, ' ', false, Json::error_handler_t::replace) +
+         "\n";
 }
 
 }  // namespace ringid

@@ -43,6 +43,7 @@ using Json = nlohmann::ordered_json;
 
 namespace detail {  // of the templates below, installed with them
 
+
 template <class T> struct IsOptional : std::false_type {};
 template <class T> struct IsOptional<std::optional<T>> : std::true_type {};
 template <class T> struct IsVector : std::false_type {};
@@ -236,7 +237,7 @@ class JsonReader {
   bool Finish() {
     if (!ok()) return false;
     for (const auto& [key, value] : object_.items()) {
-      if (!seen_.count(key)) return Fail(Path(key) + ": unknown field");
+      if (!seen_.count(key)) return Fail(Path(key) + ": unknown key");
     }
     return true;
   }
@@ -271,7 +272,7 @@ class JsonReader {
       if (!Expect(j, j.is_number_integer(), path, "a whole number", error)) return false;
       *v = j.get<T>();
     } else if constexpr (std::is_floating_point_v<T>) {
-      if (!Expect(j, j.is_number() || j.is_null(), path, "a number or null", error)) return false;
+      if (!Expect(j, j.is_number() || j.is_null(), path, "a number", error)) return false;  // null: not finite
       *v = j.is_null() ? std::numeric_limits<T>::quiet_NaN() : j.get<T>();
     } else if constexpr (std::is_same_v<T, std::complex<double>>) {
       double re = 0, im = 0;
@@ -348,7 +349,7 @@ class JsonReader {
 
   static bool Expect(const Json& j, bool good, const std::string& path, const char* what,
                      std::string* error) {
-    if (!good) *error = path + ": expected " + what + ", found " + j.type_name();
+    if (!good) *error = path + ": must be " + what + " (found " + j.type_name() + ")";
     return good;
   }
   const Json* Field(const char* name) {

@@ -13,7 +13,12 @@ namespace ringid {
 
 class SchemaWriter {
  public:
-  SchemaWriter(std::string prefix, std::string* out) : prefix_(std::move(prefix)), out_(out) {}
+  // A report writes a VisitIfSet field only when set and null for a number
+  // that is not finite; an input file may leave such a field out, and its
+  // numbers are numbers.
+  enum class Of { kReport, kInput };
+  SchemaWriter(std::string prefix, std::string* out, Of of = Of::kReport)
+      : prefix_(std::move(prefix)), out_(out), of_(of) {}
 
   template <class T>
   void Visit(const char* name, T*) {
@@ -21,7 +26,7 @@ class SchemaWriter {
   }
   template <class T>
   void VisitIfSet(const char* name, std::optional<T>*) {
-    Field<T>(name, " (only when set)");
+    Field<T>(name, of_ == Of::kInput ? " (optional)" : " (only when set)");
   }
   template <class T, class K>
   void VisitKeyed(const char* name, std::vector<T>*, K T::*) {
@@ -31,7 +36,7 @@ class SchemaWriter {
   template <class F>
   void Group(const char* name, F&& fields) {
     Line(Path(name), "object");
-    SchemaWriter group(Path(name), out_);
+    SchemaWriter group(Path(name), out_, of_);
     fields(&group);
   }
   template <class T>
@@ -44,7 +49,7 @@ class SchemaWriter {
   void Describe(const std::string& path) {
     if constexpr (IsStruct<T>()) {
       T value{};
-      SchemaWriter inner(path, out_);
+      SchemaWriter inner(path, out_, of_);
       value.Serialize(&inner);
     } else {
       Line(path, TypeName<T>());
@@ -52,7 +57,7 @@ class SchemaWriter {
   }
 
   template <class T>
-  static std::string TypeName() {
+  std::string TypeName() const {
     if constexpr (std::is_same_v<T, bool>) {
       return "true or false";
     } else if constexpr (std::is_same_v<T, std::string>) {
@@ -64,7 +69,7 @@ class SchemaWriter {
     } else if constexpr (std::is_integral_v<T>) {
       return "integer";
     } else if constexpr (std::is_floating_point_v<T>) {
-      return "number (null where not available)";
+      return of_ == Of::kInput ? "number" : "number (null where not available)";
     } else if constexpr (std::is_same_v<T, std::complex<double>>) {
       return "{re, im}";
     } else if constexpr (detail::IsOptional<T>::value) {
@@ -145,6 +150,7 @@ class SchemaWriter {
 
   std::string prefix_;
   std::string* out_;
+  Of of_;
 };
 
 // The schema of report type R as Markdown lines.
@@ -154,6 +160,16 @@ std::string ReportSchema() {
   SchemaWriter writer("", &out);
   R report{};
   report.Serialize(&writer);
+  return out;
+}
+
+// The same of an input file's fields, `file` as the fields read (a dataset's
+// format decides which follow).
+template <class T>
+std::string InputSchema(T file) {
+  std::string out;
+  SchemaWriter writer("", &out, SchemaWriter::Of::kInput);
+  file.Serialize(&writer);
   return out;
 }
 

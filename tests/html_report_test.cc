@@ -745,8 +745,8 @@ TEST(HtmlReportTest, BadInputIsOneLineExitTwoAndNoOutput) {
       {"unknown_kind.json", R"({"report": "frobnicate", "schema_version": 2})", "report"},
       {"old_schema.json", R"({"report": "predict", "modes": []})", "schema_version"},
       {"array.json", "[1, 2, 3]", ""},
-      {"unknown_field.json", unknown_field_text.c_str(), "modes[0].extra: unknown field"},
-      {"mistyped.json", mistyped_text.c_str(), "modes: expected an array"},
+      {"unknown_field.json", unknown_field_text.c_str(), "modes[0].extra: unknown key"},
+      {"mistyped.json", mistyped_text.c_str(), "modes: must be an array"},
       {"deep.json", "", ""}};
   const std::string out = dir + "never.html";
   std::vector<std::pair<std::string, std::string>> cases;  // arguments, what stderr names

@@ -148,9 +148,9 @@ TEST(ReportTest, TheReaderNamesTheFieldThatIsWrong) {
     std::function<void(Json*)> change;
     const char* error;
   } cases[] = {
-      {"unknown field", [](Json* j) { (*j)["modes"][0]["extra"] = 1; }, "modes[0].extra: unknown field"},
+      {"unknown field", [](Json* j) { (*j)["modes"][0]["extra"] = 1; }, "modes[0].extra: unknown key"},
       {"missing field", [](Json* j) { (*j)["covariance"].erase("rank"); }, "covariance.rank: missing"},
-      {"wrong type", [](Json* j) { (*j)["cost"] = "low"; }, "cost: expected a number or null, found string"},
+      {"wrong type", [](Json* j) { (*j)["cost"] = "low"; }, "cost: must be a number (found string)"},
       {"unknown label", [](Json* j) { (*j)["modes"][0]["label"] = "wobble"; },
        "modes[0].label: unknown name 'wobble'"},
       {"unknown parameter", [](Json* j) { (*j)["parameters"]["k_bq"] = (*j)["parameters"]["k_bx"]; },
@@ -247,6 +247,11 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
   EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";
+}
+
+TEST(ReportTest, DocsInputsMdIsTheGeneratedFieldList) {
+  EXPECT_EQ(ReadFile(Source("docs/inputs.md")), ringid::InputsMarkdown())
+      << "run: build/ringid inputs > docs/inputs.md";
 }
 
 TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
