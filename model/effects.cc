@@ -1,5 +1,7 @@
 #include "model/effects.h"
 
+#include <tuple>
+
 namespace ringid {
 namespace {
 
@@ -17,6 +19,8 @@ class AnisotropicSidewall final : public EffectOf<AnisotropicSidewall> {
   void ApplyTo(const P& p, S* s) const {
     s->AddSpring(L::kVertical, p[Param::dk_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
     s->AddSpring(L::kYaw, p[Param::dk_bpsi], {{Dof::kPsiB, 1}});
+    s->AddToAxle(AxleChannel::kForceZ, p[Param::dk_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
+    s->AddToAxle(AxleChannel::kMomentZ, p[Param::dk_bpsi], {{Dof::kPsiB, 1}});
   }
 };
 
@@ -33,13 +37,15 @@ class HubCompliance final : public EffectOf<HubCompliance> {
   void ApplyTo(const P& p, S* s) const {
     const auto& s_h = p[Param::s_h];
     if (!(s_h > 0.0)) return;  // s_h = 0: the rigid hub of the baseline
-    const std::pair<Dof, L> hub[] = {{Dof::kXa, L::kHubLongitudinal},
-                                     {Dof::kZa, L::kHubVertical},
-                                     {Dof::kYa, L::kHubLateral}};
-    for (const auto& [dof, label] : hub) {
+    const std::tuple<Dof, L, AxleChannel> hub[] = {
+        {Dof::kXa, L::kHubLongitudinal, AxleChannel::kForceX},
+        {Dof::kZa, L::kHubVertical, AxleChannel::kForceZ},
+        {Dof::kYa, L::kHubLateral, AxleChannel::kForceY}};
+    for (const auto& [dof, label, channel] : hub) {
       s->Activate(dof);
       s->AddMass(dof, p[Param::m_a]);
       s->AddSpring(label, 1.0 / s_h, {{dof, 1}});
+      s->HoldAxleBy(channel, 1.0 / s_h, dof);  // the axle carries the hub's spring
     }
   }
 };
@@ -95,6 +101,9 @@ class LugCoupling final : public EffectOf<LugCoupling> {
   void ApplyTo(const P& p, S* s) const {
     s->AddStiffness(std::nullopt, Dof::kXb, Dof::kYb, p[Param::k_xy]);
     s->AddStiffness(std::nullopt, Dof::kYb, Dof::kXb, p[Param::k_xy]);
+    // Between belt and rim, as the sidewall: the axle carries it (contract §8).
+    s->AddToAxle(AxleChannel::kForceX, p[Param::k_xy], {{Dof::kYb, 1}});
+    s->AddToAxle(AxleChannel::kForceY, p[Param::k_xy], {{Dof::kXb, 1}});
   }
 };
 

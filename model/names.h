@@ -48,6 +48,22 @@ struct EnumNames<Plane> {
   static constexpr std::array<const char*, 3> kNames = {"in_plane", "out_of_plane", "hub"};
 };
 
+// The lug forces at the contact point and the axle outputs of a drum test
+// (contract §8; docs/forces.md).
+enum class LugForce : int { kFx = 0, kFz, kFy };
+inline constexpr int kNumLugForces = 3;
+template <>
+struct EnumNames<LugForce> {
+  static constexpr std::array<const char*, kNumLugForces> kNames = {"F_x", "F_z", "F_y"};
+};
+enum class AxleChannel : int { kForceX = 0, kForceZ, kForceY, kMomentX, kMomentZ };
+inline constexpr int kNumAxleChannels = 5;
+template <>
+struct EnumNames<AxleChannel> {
+  static constexpr std::array<const char*, kNumAxleChannels> kNames = {
+      "axle_force_x", "axle_force_z", "axle_force_y", "axle_moment_x", "axle_moment_z"};
+};
+
 inline const char* DofName(Dof dof) { return ToString(dof); }
 inline std::optional<Dof> ParseDof(const std::string& name) { return FromString<Dof>(name); }
 Plane DofPlane(Dof dof);

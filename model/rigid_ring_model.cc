@@ -27,6 +27,11 @@ void AddRolling(const T& c_bx, const T& c_bz, const T& c_bgamma, const T& c_bpsi
   circulate(Dof::kZb, Dof::kZa, Dof::kXb, Dof::kXa, -c_bx * omega);
   s->AddStiffness(std::nullopt, Dof::kGammaB, Dof::kPsiB, c_bpsi * omega);
   s->AddStiffness(std::nullopt, Dof::kPsiB, Dof::kGammaB, -c_bgamma * omega);
+  // What the axle carries of them (contract §8).
+  s->AddToAxle(AxleChannel::kForceX, c_bz * omega, {{Dof::kZb, 1}, {Dof::kZa, -1}});
+  s->AddToAxle(AxleChannel::kForceZ, -c_bx * omega, {{Dof::kXb, 1}, {Dof::kXa, -1}});
+  s->AddToAxle(AxleChannel::kMomentX, c_bpsi * omega, {{Dof::kPsiB, 1}});
+  s->AddToAxle(AxleChannel::kMomentZ, -c_bgamma * omega, {{Dof::kGammaB, 1}});
   const T spin = s->M()(static_cast<int>(Dof::kThetaB), static_cast<int>(Dof::kThetaB));
   s->AddVelocityCoupling(Dof::kGammaB, Dof::kPsiB, spin * omega);
   s->AddVelocityCoupling(Dof::kPsiB, Dof::kGammaB, -spin * omega);
@@ -68,6 +73,11 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
   s.AddSpring(L::kVertical, p[Q::k_cz], {{Dof::kZb, 1}});
   s.AddSpring(L::kRotationAntiPhase, p[Q::k_btheta],
               {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
+  // The sidewall joins belt and hub: what the held axle carries (contract §8).
+  s.AddToAxle(AxleChannel::kForceX, p[Q::k_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
+  s.AddToAxle(AxleChannel::kForceZ, p[Q::k_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
+  s.AddToAxleDamping(AxleChannel::kForceX, p[Q::c_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
+  s.AddToAxleDamping(AxleChannel::kForceZ, p[Q::c_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
   // Contact slip, eqs. (6), (8): K_cx / sigma_cx on x_b - r_e0 theta_b.
   const typename BasicSystem<T>::Combination slip_x = {{Dof::kXb, 1},
                                                        {Dof::kThetaB, -p[Q::r_e0]}};
@@ -84,6 +94,12 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
   s.AddSpring(L::kLateral, p[Q::k_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
   s.AddSpring(L::kCamber, p[Q::k_bgamma] + r_l0 * p[Q::F_cz0], {{Dof::kGammaB, 1}});
   s.AddSpring(L::kYaw, p[Q::k_bpsi], {{Dof::kPsiB, 1}});
+  s.AddToAxle(AxleChannel::kForceY, p[Q::k_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
+  s.AddToAxle(AxleChannel::kMomentX, p[Q::k_bgamma], {{Dof::kGammaB, 1}});  // not r_l0 F_cz0: the contact's
+  s.AddToAxle(AxleChannel::kMomentZ, p[Q::k_bpsi], {{Dof::kPsiB, 1}});
+  s.AddToAxleDamping(AxleChannel::kForceY, p[Q::c_by], {{Dof::kYb, 1}, {Dof::kYa, -1}});
+  s.AddToAxleDamping(AxleChannel::kMomentX, p[Q::c_bgamma], {{Dof::kGammaB, 1}});
+  s.AddToAxleDamping(AxleChannel::kMomentZ, p[Q::c_bpsi], {{Dof::kPsiB, 1}});
   // Lateral slip: F_cy acts on y_b, on camber through r_l0 and on yaw
   // through the trail t_0; the slip sees y_b - r_l0 gamma_b and, rolling,
   // the heading psi_b. At standstill this is S of docs/model.md.

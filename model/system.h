@@ -9,7 +9,7 @@
 #include <initializer_list>
 #include <optional>
 #include <type_traits>
-#include <utility>
+#include <utility>  // std::pair
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,11 +48,17 @@ class BasicSystem {
     Combination heading;   // e
   };
 
+  // What the held axle carries (contract §8): per channel, its force as a
+  // combination of displacements and of velocities, row-major over Dof.
+  using AxleRows = Eigen::Matrix<T, kNumAxleChannels, kNumDofs, Eigen::RowMajor>;
+
   // The seven belt and rim degrees of freedom active; the hub held rigid.
   BasicSystem() {
     M_.setZero();
     C_.setZero();
     K_.setZero();
+    axle_displacement_.setZero();
+    axle_velocity_.setZero();
     for (Matrix& k : K_label_) k.setZero();
     active_.fill(false);
     for (int i = 0; i <= I(Dof::kPsiB); ++i) active_[i] = true;
@@ -92,6 +98,38 @@ class BasicSystem {
     lags_.push_back(std::move(lag));
   }
 
+  // An element joining the tire to the axle: the axle carries k d (a spring
+  // on the deformation d, or a circulatory term) or c d' (a damper) in
+  // `channel`, with the sign of the force or moment the element exerts on it.
+  void AddToAxle(AxleChannel channel, const T& k, Deformation d) {
+    for (const auto& [dof, coef] : d) axle_displacement_(I(channel), I(dof)) += k * coef;
+  }
+  void AddToAxleDamping(AxleChannel channel, const T& c, Deformation d) {
+    for (const auto& [dof, coef] : d) axle_velocity_(I(channel), I(dof)) += c * coef;
+  }
+  // The axle holds the tire through a spring k on `dof` alone (a compliant
+  // hub): that spring's force is the channel, whatever else joins the tire
+  // to the hub.
+  void HoldAxleBy(AxleChannel channel, const T& k, Dof dof) {
+    held_[I(channel)] = std::make_pair(k, dof);
+  }
+  AxleRows axle_displacement() const {
+    AxleRows rows = axle_displacement_;
+    for (int c = 0; c < kNumAxleChannels; ++c) {
+      if (!held_[c]) continue;
+      rows.row(c).setZero();
+      rows(c, I(held_[c]->second)) = held_[c]->first;
+    }
+    return rows;
+  }
+  AxleRows axle_velocity() const {
+    AxleRows rows = axle_velocity_;
+    for (int c = 0; c < kNumAxleChannels; ++c) {
+      if (held_[c]) rows.row(c).setZero();
+    }
+    return rows;
+  }
+
   // The forward speed of free rolling; 0 at standstill.
   void set_speed(double speed_m_s) { speed_ = speed_m_s; }
   double speed() const { return speed_; }
@@ -104,6 +142,7 @@ class BasicSystem {
 
  private:
   static int I(Dof d) { return static_cast<int>(d); }
+  static int I(AxleChannel c) { return static_cast<int>(c); }
   // Labels are decided on values: the derivatives (jets) need no K_label.
   static constexpr bool kLabelled = std::is_same_v<T, double>;
 
@@ -112,6 +151,8 @@ class BasicSystem {
   std::array<bool, kNumDofs> active_;
   std::vector<SlipLag> lags_;
   double speed_ = 0;
+  AxleRows axle_displacement_, axle_velocity_;
+  std::array<std::optional<std::pair<T, Dof>>, kNumAxleChannels> held_;
 };
 
 using MechanicalSystem = BasicSystem<double>;
