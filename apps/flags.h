@@ -126,8 +126,8 @@ int Campaign(int argc, char** argv, ReportKind command, const ModalModel& model,
 
 // The end of an analysis of one dataset: bad input is exit 2; otherwise its
 // text, its report of type R at --output, and exit 0 or 1 by its status.
-template <class R, class Result>
-int Finish(int argc, char** argv, const Dataset& d, const Result& r) {
+template <class R, class Data, class Result>
+int Finish(int argc, char** argv, const Data& d, const Result& r) {
   if (r.status.invalid_input()) return Usage(FLAGS_dataset + ": " + r.status.message);
   std::printf("%s", r.FullReport().c_str());
   if (!FLAGS_output.empty()) {

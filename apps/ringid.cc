@@ -19,6 +19,7 @@
 #include "apps/command_line.h"
 #include "apps/data_dir.h"
 #include "apps/flags.h"
+#include "apps/forces_command.h"
 #include "apps/html_report.h"
 #include "apps/interrupt.h"
 #include "apps/progress.h"
@@ -439,6 +440,11 @@ const std::vector<Command>& Commands() {
        "the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 JSON;\n"
        "what maps to what and what a .tir cannot hold: docs/tir.md",
        {"parameters", "set", "format", "output"}, ExportCommand},
+      {"forces", "--parameters=FILE --dataset=FILE",
+       "the lug forces at the contact from the axle's response at the lug orders\n"
+       "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"
+       "report (its covariance gives std_total) or a parameter set: docs/forces.md",
+       {"parameters", "dataset", "effects", "output"}, ForcesCommand},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
       {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},

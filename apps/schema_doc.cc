@@ -2,6 +2,7 @@
 
 #include "datasets/dataset_file.h"
 #include "datasets/parameter_files.h"
+#include "datasets/response_dataset.h"
 #include "report/report.h"
 #include "report/schema.h"
 #include "validation/suites.h"
@@ -31,6 +32,7 @@ std::string ReportsMarkdown() {
          Section<CompareReport>("ringid compare --output=FILE") +
          Section<DiagnoseReport>("ringid diagnose --output=FILE") +
          Section<CampaignReport>("ringid identify|diagnose --output_dir=DIR (DIR/campaign.json)") +
+         Section<ForcesReport>("ringid forces --output=FILE") +
          Section<BenchPaperReport>("ringid bench --suite=paper --output=FILE") +
          Section<BenchSyntheticReport>("ringid bench --suite=synthetic --output=FILE") +
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +
@@ -57,7 +59,12 @@ std::string InputsMarkdown() {
          "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
          "value, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +
          "## Truth file (`" + kTruthFormat + "`)\n\nWritten by `simulate --truth`, read by "
-         "`LoadTruth` (datasets/parameter_files.h).\n\n" + InputSchema(Truth{});
+         "`LoadTruth` (datasets/parameter_files.h).\n\n" + InputSchema(Truth{}) + "\n" +
+         "## Response dataset (`" + kResponseFormat + "`)\n\nRead by `forces --dataset` "
+         "(contract §8, [forces.md](forces.md)): per drum condition, the complex amplitude of\n"
+         "each measured axle channel (`axle_force_x`, `axle_force_z`, `axle_force_y`,\n"
+         "`axle_moment_x`, `axle_moment_z`) at each lug order.\n\n" +
+         InputSchema(ResponseDatasetFields{});
 }
 
 }  // namespace ringid

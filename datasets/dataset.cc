@@ -269,17 +269,6 @@ void Priors(const std::map<std::string, PriorFields>& priors, Dataset* d) {
   }
 }
 
-// A condition name: letters, digits, '_', '-', '.'.
-bool ValidConditionName(const std::string& name) {
-  if (name.empty()) return false;
-  for (const char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                    (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
-    if (!ok) return false;
-  }
-  return true;
-}
-
 // One element of "conditions", appended to d->conditions and its modes to
 // d->modes.
 void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* d) {
@@ -367,9 +356,9 @@ void CheckKind(const json& j) {
 
 // The archive's "FIELD: MESSAGE" as a Failure.
 [[noreturn]] void FailWith(const std::string& archive_error) {
-  const size_t colon = archive_error.find(": ");
-  if (colon == std::string::npos) Fail("", archive_error);
-  Fail(archive_error.substr(0, colon), archive_error.substr(colon + 2));
+  LoadError e;
+  SetArchiveError(archive_error, &e);
+  Fail(e.field, e.message);
 }
 
 void Read(const json& j, Dataset* d) {
@@ -397,6 +386,16 @@ std::string ModeFrequencyProblem(double hz) {
   o << hz << " Hz is outside " << kMinModeFrequencyHz << "-" << kMaxModeFrequencyHz
     << " Hz, where every rigid-ring mode lies (a typo, or not a rigid-ring mode?)";
   return o.str();
+}
+
+bool ValidConditionName(const std::string& name) {
+  if (name.empty()) return false;
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                    (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return true;
 }
 
 std::string LoadError::OneLine() const {
@@ -536,8 +535,14 @@ void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined)
 
 }  // namespace
 
-bool ParseJsonInput(const std::string& text, json* out, LoadError* error) {
-  return ParseChecked(text, error, [&](const json& j) { *out = j; });
+bool ParseJsonInput(const std::string& text, Json* out, LoadError* error) {
+  return ParseChecked(text, error, [&](const json& j) { *out = Json(j); });
+}
+
+void SetArchiveError(const std::string& archive_error, LoadError* error) {
+  const size_t colon = archive_error.find(": ");
+  error->field = colon == std::string::npos ? "" : archive_error.substr(0, colon);
+  error->message = colon == std::string::npos ? archive_error : archive_error.substr(colon + 2);
 }
 
 bool ParseDataset(const std::string& text, const std::string& path,

@@ -93,6 +93,8 @@ inline constexpr double kMaxParameterMagnitude = 1e12;
 std::string ParameterValueProblem(Param p, double v);
 // Why `hz` cannot be a rigid-ring mode's frequency; empty when it can.
 std::string ModeFrequencyProblem(double hz);
+// A condition name (docs/conventions.md §7): letters, digits, '_', '-', '.'.
+bool ValidConditionName(const std::string& name);
 
 // What went wrong, as one line: "FILE: FIELD: MESSAGE".
 struct LoadError {
@@ -106,7 +108,9 @@ struct LoadError {
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
 // Parses an input file's text as JSON, refusing duplicate keys and nesting
 // deeper than kMaxJsonDepth; a syntax error names where it is.
-bool ParseJsonInput(const std::string& text, nlohmann::json* out, LoadError* error);
+bool ParseJsonInput(const std::string& text, nlohmann::ordered_json* out, LoadError* error);
+// The archive's "FIELD: MESSAGE" (model/archive.h) as error's field and message.
+void SetArchiveError(const std::string& archive_error, LoadError* error);
 
 // The dataset's starting point in `condition`: shared known and initial
 // values, that condition's own, ties applied.

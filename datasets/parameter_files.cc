@@ -12,13 +12,6 @@ std::string Text(const T& value) {
   return JsonWriter::ToJson(value).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-// "parameters.k_bx: missing" as a field and a message.
-void Split(const std::string& archive_error, LoadError* error) {
-  const size_t colon = archive_error.find(": ");
-  error->field = colon == std::string::npos ? "" : archive_error.substr(0, colon);
-  error->message = colon == std::string::npos ? archive_error : archive_error.substr(colon + 2);
-}
-
 }  // namespace
 
 std::string ParameterSetText(const ParameterSet& set) { return Text(set); }
@@ -67,12 +60,12 @@ bool Truth::Validate(LoadError* error) const {
 
 bool LoadTruth(const std::string& path, Truth* truth, LoadError* error) {
   std::string text;
-  nlohmann::json parsed;
+  Json parsed;
   if (!ReadInputFile(path, &text, error) || !ParseJsonInput(text, &parsed, error)) return false;
   std::string why;
   *truth = Truth{};
-  if (!JsonReader::FromJson(Json::parse(parsed.dump()), "", truth, &why)) {
-    Split(why, error);
+  if (!JsonReader::FromJson(parsed, "", truth, &why)) {
+    SetArchiveError(why, error);
     return false;
   }
   return truth->Validate(error);

@@ -14,6 +14,7 @@
 
 #include "estimation/compare.h"
 #include "estimation/diagnose.h"
+#include "estimation/forces.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "estimation/status.h"
@@ -26,14 +27,14 @@ namespace ringid {
 inline constexpr int kReportSchemaVersion = 5;
 
 enum class ReportKind {
-  kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign,
+  kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
   // validation/
   kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling, kBenchSpeed,
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 12> kNames = {
-      "identify", "predict", "identifiability", "compare", "diagnose", "campaign",
+  static constexpr std::array<const char*, 13> kNames = {
+      "identify", "predict", "identifiability", "compare", "diagnose", "campaign", "forces",
       "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis", "bench_rolling",
       "bench_speed"};
 };
@@ -201,6 +202,7 @@ using IdentifiabilityReport =
 using CompareReport = Report<ReportKind::kCompare, DatasetBody<ComparisonResult>>;
 using DiagnoseReport = Report<ReportKind::kDiagnose, DatasetBody<DiagnosisResult>>;
 using CampaignReport = Report<ReportKind::kCampaign, CampaignBody>;
+using ForcesReport = Report<ReportKind::kForces, DatasetBody<ForcesResult>>;
 
 // The report as JSON text (two-space indent, a final newline). Strings that
 // are not UTF-8 (paths from a command line) get U+FFFD, never an exception.

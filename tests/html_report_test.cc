@@ -20,7 +20,9 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "datasets/response_dataset.h"
 #include "datasets/synthetic.h"
+#include "model/forced_response.h"
 #include "estimation/statistics.h"
 #include "model/rigid_ring_model.h"
 #include "tests/browser_check.h"
@@ -170,6 +172,43 @@ Made Diagnose() {
 
 Made Predict() {
   return Make("predict", "predict --parameters=" + Source("datasets/paper/parameters.json"));
+}
+
+// Forces from a response at 6 and 12 m/s (orders 1-3, every channel, 10 %
+// noise) of the paper's tire, with the parameters and covariance of an
+// identification on the drum.
+Made Forces() {
+  using namespace ringid;  // NOLINT: the library's types, in this one maker
+  const std::string data = Simulate("forces_modes", "--speeds=0,6,12");
+  const Made fit = Make("forces_fit", "identify --starts=1 --derivatives=analytic --dataset=" + data);
+  const Parameters p = ringid::testing::PaperIdentified();
+  ResponseDataset d;
+  d.name = "drum";
+  d.lugs_per_revolution = 20;
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> n(0, 1);
+  for (double v : {6.0, 12.0}) {
+    ResponseCondition c;
+    c.name = "drum_" + std::to_string(static_cast<int>(v));
+    c.speed_m_s = v;
+    for (int k = 1; k <= 3; ++k) {
+      AxleResponseMatrix H;
+      std::string why;
+      EXPECT_TRUE(AxleResponse(RigidRingModel(), p, v, k * 20 * v / (2 * M_PI * p[Param::r_e0]), &H,
+                               &why)) << why;
+      OrderResponse o{k, {}};
+      for (int ch = 0; ch < kNumAxleChannels; ++ch) {
+        const Complex y = (H(ch, 0) * 300.0 + H(ch, 1) * 900.0 + H(ch, 2) * 150.0) / double(k);
+        const double sigma = 0.1 * std::abs(y);
+        o.channels[static_cast<AxleChannel>(ch)] = {y + Complex(sigma * n(rng), sigma * n(rng)), sigma};
+      }
+      c.orders.push_back(o);
+    }
+    d.conditions.push_back(c);
+  }
+  const std::string response = Scratch("forces_response.json");
+  std::ofstream(response) << ResponseDatasetToJson(d);
+  return Make("forces", "forces --parameters=" + fit.report_path + " --dataset=" + response);
 }
 
 Made Campaign() {
@@ -932,6 +971,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identifiability", Identifiability},
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
+                      Kind{"forces", Forces},
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},

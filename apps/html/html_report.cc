@@ -41,6 +41,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kCompare, Typed<CompareReport, html::ComparePage>},
     {ReportKind::kDiagnose, Typed<DiagnoseReport, html::DiagnosePage>},
     {ReportKind::kCampaign, Typed<CampaignReport, html::CampaignPage>},
+    {ReportKind::kForces, Typed<ForcesReport, html::ForcesPage>},
     {ReportKind::kBenchPaper, Typed<BenchPaperReport, html::BenchPaperPage>},
     {ReportKind::kBenchSynthetic, Typed<BenchSyntheticReport, html::BenchSyntheticPage>},
     {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},

@@ -15,6 +15,7 @@ void ComparePage(const CompareReport& report, Page* page);
 void DiagnosePage(const DiagnoseReport& report, Page* page);
 void PredictPage(const PredictReport& report, Page* page);
 void CampaignPage(const CampaignReport& report, Page* page);
+void ForcesPage(const ForcesReport& report, Page* page);
 void BenchPaperPage(const BenchPaperReport& report, Page* page);
 void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
 void BenchConditioningPage(const BenchConditioningReport& report, Page* page);

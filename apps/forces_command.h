@@ -1,0 +1,11 @@
+// `ringid forces`: the lug forces from a response dataset (contract §8).
+#ifndef RINGID_APPS_FORCES_COMMAND_H_
+#define RINGID_APPS_FORCES_COMMAND_H_
+
+namespace ringid {
+
+int ForcesCommand(int argc, char** argv);
+
+}  // namespace ringid
+
+#endif  // RINGID_APPS_FORCES_COMMAND_H_

@@ -1,0 +1,154 @@
+#include "datasets/response_dataset.h"
+
+#include <cmath>
+#include <set>
+
+#include "model/spelling.h"
+
+namespace ringid {
+namespace {
+
+// The first rule `data` breaks, as error's field and message; true for none.
+class Checker {
+ public:
+  explicit Checker(LoadError* error) : error_(error) {}
+  bool Fail(const std::string& field, const std::string& message) {
+    error_->field = field;
+    error_->message = message;
+    return false;
+  }
+  bool Positive(double v, const std::string& field) {
+    if (!std::isfinite(v)) return Fail(field, "must be a number");
+    return v > 0 || Fail(field, "must be positive");
+  }
+
+ private:
+  LoadError* error_;
+};
+
+bool Check(const ResponseDatasetFields& j, ResponseDataset* d, LoadError* error) {
+  Checker c(error);
+  d->name = j.name;
+  if (d->name.empty()) return c.Fail("name", "must not be empty");
+  d->description = j.description.value_or("");
+  d->lugs_per_revolution = j.lugs_per_revolution;
+  if (j.lugs_per_revolution <= 0) return c.Fail("lugs_per_revolution", "must be positive");
+  if (j.conditions.empty()) return c.Fail("conditions", "must be a non-empty array");
+  std::set<std::string> names;
+  for (size_t i = 0; i < j.conditions.size(); ++i) {
+    const ResponseConditionFields& jc = j.conditions[i];
+    const std::string f = "conditions[" + std::to_string(i) + "]";
+    ResponseCondition rc;
+    rc.name = jc.name;
+    if (!ValidConditionName(rc.name)) {
+      return c.Fail(f + ".name", "'" + rc.name + "' must be letters, digits, '_', '-' or '.'");
+    }
+    if (!names.insert(rc.name).second) {
+      return c.Fail(f + ".name", "condition '" + rc.name + "' appears twice");
+    }
+    // f_lug = lugs V / (2 pi r_e0): a lug order exists only rolling.
+    if (!c.Positive(jc.speed_m_s, f + ".speed_m_s")) return false;
+    rc.speed_m_s = jc.speed_m_s;
+    if (jc.f_lug_hz && !c.Positive(*jc.f_lug_hz, f + ".f_lug_hz")) return false;
+    rc.f_lug_hz = jc.f_lug_hz;
+    for (const auto& [name, v] : jc.known.value_or(std::map<std::string, double>{})) {
+      const std::string field = f + ".known." + name;
+      const auto p = ParseParam(name);
+      if (!p) return c.Fail(field, UnknownName("parameter", name, NamesOf<Param>()));
+      if (const std::string problem = ParameterValueProblem(*p, v); !problem.empty()) {
+        return c.Fail(field, problem);
+      }
+      rc.known[*p] = v;
+    }
+    if (jc.orders.empty()) return c.Fail(f + ".orders", "must be a non-empty array");
+    std::set<int> orders;
+    for (size_t k = 0; k < jc.orders.size(); ++k) {
+      const OrderFields& jo = jc.orders[k];
+      const std::string fo = f + ".orders[" + std::to_string(k) + "]";
+      if (jo.order < 1) return c.Fail(fo + ".order", "must be a positive whole number");
+      if (!orders.insert(jo.order).second) {
+        return c.Fail(fo + ".order", "order " + std::to_string(jo.order) + " appears twice");
+      }
+      if (jo.response.empty()) {
+        return c.Fail(fo + ".response", "names no channel (expected " +
+                                            OneOf(NamesOf<AxleChannel>()) + ")");
+      }
+      OrderResponse ro;
+      ro.order = jo.order;
+      for (const auto& [name, phasor] : jo.response) {
+        const std::string fc = fo + ".response." + name;
+        const auto channel = FromString<AxleChannel>(name);
+        if (!channel) return c.Fail(fc, UnknownName("channel", name, NamesOf<AxleChannel>()));
+        if (!std::isfinite(phasor.re)) return c.Fail(fc + ".re", "must be a number");
+        if (!std::isfinite(phasor.im)) return c.Fail(fc + ".im", "must be a number");
+        if (!c.Positive(phasor.sigma, fc + ".sigma")) return false;
+        ro.channels[*channel] = {{phasor.re, phasor.im}, phasor.sigma};
+      }
+      rc.orders.push_back(ro);
+    }
+    d->conditions.push_back(rc);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool ParseResponseDataset(const std::string& text, const std::string& path, ResponseDataset* data,
+                          LoadError* error) {
+  *data = ResponseDataset{};
+  data->path = path;
+  error->file = path;
+  Json j;
+  if (!ParseJsonInput(text, &j, error)) return false;
+  if (!j.is_object()) {
+    error->field = "";
+    error->message = "top level must be a JSON object";
+    return false;
+  }
+  if (j.contains("format") && j["format"] != kResponseFormat) {
+    error->field = "format";
+    error->message = std::string("must be \"") + kResponseFormat + "\"";
+    return false;
+  }
+  ResponseDatasetFields fields;
+  std::string why;
+  if (!JsonReader::FromJson(j, "", &fields, &why)) {
+    SetArchiveError(why, error);
+    return false;
+  }
+  return Check(fields, data, error);
+}
+
+bool LoadResponseDataset(const std::string& path, ResponseDataset* data, LoadError* error) {
+  std::string text;
+  return ReadInputFile(path, &text, error) && ParseResponseDataset(text, path, data, error);
+}
+
+std::string ResponseDatasetToJson(const ResponseDataset& d) {
+  ResponseDatasetFields j;
+  j.name = d.name;
+  if (!d.description.empty()) j.description = d.description;
+  j.lugs_per_revolution = d.lugs_per_revolution;
+  for (const ResponseCondition& rc : d.conditions) {
+    ResponseConditionFields jc;
+    jc.name = rc.name;
+    jc.speed_m_s = rc.speed_m_s;
+    jc.f_lug_hz = rc.f_lug_hz;
+    if (!rc.known.empty()) {
+      jc.known.emplace();
+      for (const auto& [p, v] : rc.known) (*jc.known)[ParamName(p)] = v;
+    }
+    for (const OrderResponse& ro : rc.orders) {
+      OrderFields jo;
+      jo.order = ro.order;
+      for (const auto& [channel, phasor] : ro.channels) {
+        jo.response[ToString(channel)] = {phasor.value.real(), phasor.value.imag(), phasor.sigma};
+      }
+      jc.orders.push_back(jo);
+    }
+    j.conditions.push_back(jc);
+  }
+  return JsonWriter::ToJson(j).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace ringid

@@ -1,0 +1,280 @@
+// The lug forces from the axle's response (estimation/forces.h) against a
+// synthetic truth: noise-free responses give the forces back; with noise,
+// the estimates are unbiased and spread as std_measurement says (a Monte
+// Carlo); sampling the parameters spreads them as the linearised std_total
+// says; the response dataset's reader keeps the error contract.
+#include <cmath>
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "datasets/response_dataset.h"
+#include "datasets/synthetic.h"
+#include "estimation/forces.h"
+#include "model/forced_response.h"
+#include "report/report.h"
+#include "tests/test_support.h"
+
+namespace ringid {
+namespace {
+
+using testing::Ringid;
+using testing::RunResult;
+using testing::Scratch;
+
+constexpr int kLugs = 20;
+const std::vector<double> kSpeeds = {5, 10, 20};
+
+// The lug force of order k: a spectrum falling with the order.
+Complex TrueForce(LugForce f, int order) {
+  const double size[] = {300, 900, 150};  // F_x, F_z, F_y (N)
+  return std::polar(size[static_cast<int>(f)] / order, 0.7 * order + static_cast<int>(f));
+}
+
+// The axle's response to the true forces at each speed and orders 1-5 on
+// `channels`, sigma a tenth of each channel's largest |Y| over the orders
+// (noise added with `rng`, none without).
+ResponseDataset Responses(const Parameters& p, const std::vector<AxleChannel>& channels,
+                          double relative_noise, std::mt19937_64* rng) {
+  const RigidRingModel model;
+  ResponseDataset d;
+  d.name = "synthetic";
+  d.lugs_per_revolution = kLugs;
+  std::normal_distribution<double> n(0, 1);
+  for (double v : kSpeeds) {
+    ResponseCondition c;
+    c.name = "drum_" + std::to_string(static_cast<int>(v));
+    c.speed_m_s = v;
+    const double f_lug = kLugs * v / (2 * M_PI * p[Param::r_e0]);
+    for (int k = 1; k <= 5; ++k) {
+      AxleResponseMatrix H;
+      std::string why;
+      EXPECT_TRUE(AxleResponse(model, p, v, k * f_lug, &H, &why)) << why;
+      OrderResponse o;
+      o.order = k;
+      for (AxleChannel ch : channels) {
+        Complex y = 0;
+        for (LugForce f : {LugForce::kFx, LugForce::kFz, LugForce::kFy}) {
+          y += H(static_cast<int>(ch), static_cast<int>(f)) * TrueForce(f, k);
+        }
+        const double sigma = relative_noise > 0 ? relative_noise * std::abs(y) : 1e-3 * std::abs(y);
+        if (rng) y += Complex(sigma * n(*rng), sigma * n(*rng));
+        o.channels[ch] = {y, sigma};
+      }
+      c.orders.push_back(o);
+    }
+    d.conditions.push_back(c);
+  }
+  return d;
+}
+
+const std::vector<AxleChannel> kAll = {AxleChannel::kForceX, AxleChannel::kForceZ,
+                                       AxleChannel::kForceY, AxleChannel::kMomentX,
+                                       AxleChannel::kMomentZ};
+
+ForcesResult Estimate(const ForceParameters& fp, const ResponseDataset& d) {
+  ForcesResult r;
+  EstimateForces(RigidRingModel(), fp, d, ForcesOptions{}, &r);
+  EXPECT_TRUE(r.status.ok()) << r.status.message;
+  return r;
+}
+
+TEST(ForcesTest, NoiseFreeResponsesGiveTheForcesBack) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  const ForcesResult r = Estimate(fp, Responses(fp.shared, kAll, 0, nullptr));
+  ASSERT_EQ(r.conditions.size(), kSpeeds.size());
+  for (const ConditionForces& c : r.conditions) {
+    for (const OrderForces& o : c.orders) {
+      ASSERT_EQ(o.forces.size(), 3u) << c.name << " order " << o.order;
+      for (const auto& [f, e] : o.forces) {
+        EXPECT_LT(std::abs(e.value - TrueForce(f, o.order)), 1e-8 * std::abs(TrueForce(f, o.order)))
+            << c.name << " " << ToString(f) << " order " << o.order;
+      }
+      ASSERT_TRUE(o.chi_square.has_value());
+      EXPECT_LT(*o.chi_square, 1e-12);
+      EXPECT_EQ(o.degrees_of_freedom, 4);
+    }
+  }
+}
+
+// The in-plane channels alone say nothing of F_y: it is named undetermined,
+// and F_x and F_z are estimated exactly from two channels.
+TEST(ForcesTest, WhatTheChannelsDoNotDetermineIsSaid) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  const ForcesResult r =
+      Estimate(fp, Responses(fp.shared, {AxleChannel::kForceX, AxleChannel::kForceZ}, 0, nullptr));
+  for (const ConditionForces& c : r.conditions) {
+    for (const OrderForces& o : c.orders) {
+      EXPECT_EQ(o.forces.size(), 2u);
+      ASSERT_EQ(o.undetermined.count(LugForce::kFy), 1u);
+      EXPECT_NE(o.undetermined.at(LugForce::kFy).find("no measured channel"), std::string::npos);
+      EXPECT_FALSE(o.chi_square.has_value());
+    }
+  }
+}
+
+// 400 replicates at 20 dB (noise of |Y| / 10 on re and on im): per force and
+// order, the mean is the truth within 2 % of |F| plus 3 standard errors of
+// the mean, and the spread of re and im is std_measurement within 10 %.
+TEST(ForcesTest, TheEstimatesAreUnbiasedAndSpreadAsStdMeasurementSays) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  std::mt19937_64 rng(11);
+  const int replicates = 400;
+  const ResponseDataset clean = Responses(fp.shared, kAll, 0.1, nullptr);
+  std::map<std::tuple<int, int, LugForce>, std::vector<Complex>> estimates;
+  std::map<std::tuple<int, int, LugForce>, double> stds;
+  for (int rep = 0; rep < replicates; ++rep) {
+    const ForcesResult r = Estimate(fp, Responses(fp.shared, kAll, 0.1, &rng));
+    for (size_t c = 0; c < r.conditions.size(); ++c) {
+      for (const OrderForces& o : r.conditions[c].orders) {
+        for (const auto& [f, e] : o.forces) {
+          estimates[{static_cast<int>(c), o.order, f}].push_back(e.value);
+          stds[{static_cast<int>(c), o.order, f}] = e.std_measurement;
+        }
+      }
+    }
+  }
+  ASSERT_EQ(estimates.size(), kSpeeds.size() * 5 * 3);
+  for (const auto& [key, values] : estimates) {
+    const auto& [c, order, f] = key;
+    Complex mean = 0;
+    for (const Complex& v : values) mean += v / double(values.size());
+    double re2 = 0, im2 = 0;
+    for (const Complex& v : values) {
+      re2 += std::norm((v - mean).real()) / (values.size() - 1);
+      im2 += std::norm((v - mean).imag()) / (values.size() - 1);
+    }
+    const double sd = stds.at(key), truth = std::abs(TrueForce(f, order));
+    const std::string what = std::string(ToString(f)) + " at " + std::to_string(c) + ", order " +
+                             std::to_string(order);
+    EXPECT_LT(std::abs(mean - TrueForce(f, order)), 0.02 * truth + 3 * sd / std::sqrt(replicates))
+        << what;
+    EXPECT_NEAR(std::sqrt(re2) / sd, 1, 0.1) << what;
+    EXPECT_NEAR(std::sqrt(im2) / sd, 1, 0.1) << what;
+  }
+}
+
+// std_total adds the parameters' share, linearised; parameters sampled from
+// the same covariance spread the estimates by that share (500 samples:
+// within 15 %).
+TEST(ForcesTest, TheParametersShareOfStdTotalIsTheSpreadUnderSampledParameters) {
+  const Parameters truth = ExampleCarTire();
+  const ResponseDataset data = Responses(truth, kAll, 0.1, nullptr);
+  ForceParameters fp;
+  fp.shared = truth;
+  const std::vector<Param> uncertain = {Param::k_bz, Param::c_bz, Param::k_cz, Param::k_bx,
+                                        Param::k_by, Param::sigma_cy};
+  Eigen::VectorXd sd(uncertain.size());
+  for (size_t i = 0; i < uncertain.size(); ++i) {
+    fp.coordinates.push_back({ParameterKey{uncertain[i], ""}, {}});
+    sd(i) = 0.03 + 0.01 * i;  // log coordinates: 3-8 %
+  }
+  fp.covariance = sd.cwiseAbs2().asDiagonal();
+  const ForcesResult linear = Estimate(fp, data);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0, 1);
+  const int samples = 500;
+  const int c = 1, order = 3;  // 10 m/s, the third order
+  std::map<LugForce, std::vector<Complex>> spread;
+  for (int s = 0; s < samples; ++s) {
+    ForceParameters sampled;
+    sampled.shared = truth;
+    for (size_t i = 0; i < uncertain.size(); ++i) sampled.shared[uncertain[i]] *= std::exp(sd(i) * n(rng));
+    const ForcesResult r = Estimate(sampled, data);
+    for (const auto& [f, e] : r.conditions[c].orders[order - 1].forces) spread[f].push_back(e.value);
+  }
+  for (const auto& [f, values] : spread) {
+    Complex mean = 0;
+    for (const Complex& v : values) mean += v / double(samples);
+    double var = 0;
+    for (const Complex& v : values) var += std::norm(v - mean) / 2 / (samples - 1);
+    const ForceEstimate& e = linear.conditions[c].orders[order - 1].forces.at(f);
+    const double share = std::sqrt(e.std_total * e.std_total - e.std_measurement * e.std_measurement);
+    ASSERT_GT(share, 0.05 * e.std_measurement) << ToString(f);  // the parameters matter here
+    EXPECT_NEAR(std::sqrt(var) / share, 1, 0.15) << ToString(f);
+  }
+}
+
+TEST(ResponseDatasetTest, WritesReadsAndWritesTheSameBytes) {
+  const ResponseDataset d = Responses(ExampleCarTire(), kAll, 0.1, nullptr);
+  const std::string text = ResponseDatasetToJson(d);
+  ResponseDataset again;
+  LoadError e;
+  ASSERT_TRUE(ParseResponseDataset(text, "r.json", &again, &e)) << e.OneLine();
+  EXPECT_EQ(ResponseDatasetToJson(again), text);
+  ASSERT_EQ(again.conditions.size(), 3u);
+  EXPECT_EQ(again.conditions[1].orders[2].channels.at(AxleChannel::kForceZ).value,
+            d.conditions[1].orders[2].channels.at(AxleChannel::kForceZ).value);
+}
+
+TEST(ResponseDatasetTest, RefusesEachKindOfBadFileNamingTheField) {
+  const std::string good = R"({"format": "ringid-lug-response/1", "name": "r", "lugs_per_revolution": 20,
+    "conditions": [{"name": "drum_8", "speed_m_s": 8.0, "orders": [{"order": 1,
+      "response": {"axle_force_x": {"re": 12.3, "im": -4.1, "sigma": 0.5}}}]}]})";
+  ResponseDataset d;
+  LoadError e;
+  ASSERT_TRUE(ParseResponseDataset(good, "r.json", &d, &e)) << e.OneLine();
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+  };
+  const std::pair<std::string, std::string> bad[] = {
+      {with("\"name\": \"r\", ", ""), "name"},
+      {with("\"lugs_per_revolution\": 20", "\"lugs_per_revolution\": 0"), "lugs_per_revolution"},
+      {with("\"lugs_per_revolution\": 20", "\"lugs_per_revolution\": 2.5"), "lugs_per_revolution"},
+      {with("\"speed_m_s\": 8.0", "\"speed_m_s\": 0"), "conditions[0].speed_m_s"},
+      {with("\"speed_m_s\": 8.0", "\"speed_m_s\": -3"), "conditions[0].speed_m_s"},
+      {with("\"order\": 1", "\"order\": 0"), "conditions[0].orders[0].order"},
+      {with("{\"axle_force_x\": {\"re\": 12.3, \"im\": -4.1, \"sigma\": 0.5}}", "{}"),
+       "conditions[0].orders[0].response"},
+      {with("axle_force_x", "axle_force_q"), "conditions[0].orders[0].response.axle_force_q"},
+      {with("\"sigma\": 0.5", "\"sigma\": 0"), "conditions[0].orders[0].response.axle_force_x.sigma"},
+      {with("\"im\": -4.1", "\"im\": \"x\""), "conditions[0].orders[0].response.axle_force_x.im"},
+      {with("\"orders\"", "\"f_lug_hz\": -1, \"orders\""), "conditions[0].f_lug_hz"},
+      {with("\"orders\"", "\"known\": {\"k_cz\": -1}, \"orders\""), "conditions[0].known.k_cz"},
+      {with("\"orders\"", "\"extra\": 1, \"orders\""), "conditions[0].extra"},
+      {with("ringid-lug-response/1", "ringid-lug-response/2"), "format"},
+  };
+  for (const auto& [text, field] : bad) {
+    EXPECT_FALSE(ParseResponseDataset(text, "r.json", &d, &e)) << text;
+    EXPECT_EQ(e.field, field) << e.OneLine();
+    EXPECT_EQ(e.OneLine().rfind("r.json: ", 0), 0u) << e.OneLine();
+  }
+  EXPECT_FALSE(ParseResponseDataset(with("axle_force_x", "axle_forc_x"), "r.json", &d, &e));
+  EXPECT_NE(e.message.find("did you mean 'axle_force_x'"), std::string::npos) << e.message;
+}
+
+// The command: a report that reads back; bad input exits 2 and writes nothing.
+TEST(ForcesCommandTest, WritesAReportAndRefusesBadInputWithExitTwo) {
+  const std::string data = Scratch("forces_data.json"), set = Scratch("forces_set.json"),
+                    out = Scratch("forces_report.json");
+  std::ofstream(data) << ResponseDatasetToJson(Responses(ExampleCarTire(), kAll, 0.1, nullptr));
+  std::ofstream(set) << ParameterSetToJson(ExampleCarTire(), "car", "example");
+  std::remove(out.c_str());
+  RunResult r = Ringid("forces --parameters=" + set + " --dataset=" + data + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("F_z"), std::string::npos);
+  ForcesReport report;
+  std::string error;
+  ASSERT_TRUE(ReadReport(Json::parse(testing::ReadFile(out)), &report, &error)) << error;
+  EXPECT_EQ(report.body.result.conditions.size(), 3u);
+  std::remove(out.c_str());
+  const std::string bad = Scratch("forces_bad.json");
+  std::ofstream(bad) << R"({"format": "ringid-lug-response/1", "name": "r", "lugs_per_revolution": 20,
+    "conditions": [{"name": "d", "speed_m_s": 8, "orders": [{"order": 1, "response": {}}]}]})";
+  r = Ringid("forces --parameters=" + set + " --dataset=" + bad + " --output=" + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(bad + ": conditions[0].orders[0].response: names no channel"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+}
+
+}  // namespace
+}  // namespace ringid
