@@ -199,6 +199,12 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
         return;
       }
       const Weighted w = Weigh(order, H);
+      if (!w.A.allFinite() || !w.y.allFinite()) {  // a sigma far below the amplitudes
+        r->status = Status::Failed("condition " + c.name + ", order " +
+                                   std::to_string(order.order) +
+                                   ": the weighted response is not finite");
+        return;
+      }
       const std::vector<LugForce> kept =
           Determined(w.A, o.max_condition_number, &of.undetermined);
       if (kept.empty()) {
@@ -227,7 +233,13 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
                                        "parameters: " + why);
             return;
           }
-          side[s] = Solve(Columns(Weigh(order, Hs).A, kept), w.y);
+          const Eigen::MatrixXcd As = Columns(Weigh(order, Hs).A, kept);
+          if (!As.allFinite()) {
+            r->status = Status::Failed("condition " + c.name + ": the response near the "
+                                       "parameters is not finite");
+            return;
+          }
+          side[s] = Solve(As, w.y);
         }
         G.col(i) = (side[0] - side[1]) / (2 * h);
       }
