@@ -47,9 +47,12 @@ DEFINE_double(shape_noise, ringid::SimulateOptions().shape_noise,
               "shape component noise (sd, shapes scaled to 1)");
 DEFINE_double(shift, 0, "size the one effect of --effects to shift some frequency by this fraction (e.g. 0.04)");
 DEFINE_double(prior_spread, 0.1, "log-normal spread of the dataset's initial values around the truth");
-DEFINE_string(speeds, "0", "V1,V2,...: speeds in m/s (>= 0), one condition each (0: standing, else drum_V)");
+DEFINE_string(speeds, "0", "V1,V2,...: speeds in m/s (>= 0); simulate: one condition each (0: standing, else drum_V); predict: the modes at each (a Campbell diagram)");
 DEFINE_string(loads, "", "F1,F2,...: loads F_cz0 in N (> 0); the conditions are then speeds x loads");
 DEFINE_string(suite, "", "the validation suite to run");
+DEFINE_int32(lugs_per_revolution, 0,
+             "predict: lug impacts per wheel turn; with --speeds, the lug orders meet the modes "
+             "at the critical speeds listed (0: none)");
 DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling)");
 DEFINE_string(markdown, "", "also write the Markdown table here");
 DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");

@@ -47,6 +47,7 @@ DECLARE_string(speeds);
 DECLARE_string(loads);
 DECLARE_string(suite);
 DECLARE_int32(replicates);
+DECLARE_int32(lugs_per_revolution);
 DECLARE_string(markdown);
 DECLARE_string(output_dir);
 DECLARE_int32(jobs);

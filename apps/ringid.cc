@@ -20,6 +20,7 @@
 #include "apps/data_dir.h"
 #include "apps/flags.h"
 #include "apps/forces_command.h"
+#include "apps/predict_command.h"
 #include "apps/html_report.h"
 #include "apps/interrupt.h"
 #include "apps/progress.h"
@@ -42,41 +43,6 @@
 
 namespace ringid {
 namespace {
-
-int Predict(int argc, char** argv) {
-  std::string error;
-  std::vector<const Effect*> effects;
-  if (!ParseEffects(&effects, &error)) return Usage(error);
-  if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
-    return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
-  }
-  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
-  std::map<Param, double> set;
-  if (!ParseSet(&set, &error)) return Usage(error);
-  Parameters p;
-  LoadError load;
-  if (!FLAGS_parameters.empty()) {  // a .tir by its extension
-    if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
-  } else {
-    Dataset d;
-    if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
-    p = InitialParameters(d);
-  }
-  for (const auto& [q, v] : set) p[q] = v;
-  const RigidRingModel model(effects);
-  const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
-  const std::vector<Param> missing = Missing(model, p);
-  if (!missing.empty()) return Usage(MissingParameters(source, missing));
-  const ModalSolution s = model.Solve(p);
-  const PredictBody body = PredictBody::From(s);
-  if (!s.ok) std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
-  else std::printf("%s", body.FullReport().c_str());
-  if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, ReportText(PredictReport{ThisRun(argc, argv, std::nullopt), body}));
-    if (rc != kExitOk) return rc;
-  }
-  return s.ok ? kExitOk : kExitFailure;
-}
 
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
@@ -397,7 +363,8 @@ const std::vector<Command>& Commands() {
       {"predict", "--parameters=FILE | --dataset=FILE",
        "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
        "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
-       {"parameters", "dataset", "set", "effects", "output"}, Predict},
+       {"parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"},
+       Predict},
       {"identify", "--dataset=FILE",
        "fit parameters to a dataset, with covariance and identifiability;\n"
        "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"

@@ -133,6 +133,38 @@ std::string PredictBody::FullReport() const {
     std::snprintf(line, sizeof line, "%-22s overdamped: no oscillating mode\n", LabelName(l));
     text += line;
   }
+  if (speeds) {
+    text += "\nmodes by speed (Hz):\n";
+    std::snprintf(line, sizeof line, "%8s", "m/s");
+    text += line;
+    for (const PredictedMode& m : modes) {
+      std::snprintf(line, sizeof line, " %10.10s", LabelName(m.label));
+      text += line;
+    }
+    text += "\n";
+    for (const SpeedModes& s : *speeds) {
+      std::snprintf(line, sizeof line, "%8.3g", s.speed_m_s);
+      text += line;
+      for (const PredictedMode& m : modes) {
+        const auto it = s.modes.find(m.label);
+        if (it == s.modes.end()) std::snprintf(line, sizeof line, " %10s", "-");
+        else std::snprintf(line, sizeof line, " %10.2f", it->second.first);
+        text += line;
+      }
+      text += "\n";
+    }
+  }
+  if (critical_speeds) {
+    std::snprintf(line, sizeof line, "\ncritical speeds (%d lugs per revolution):\n",
+                  lugs_per_revolution.value_or(0));
+    text += line;
+    if (critical_speeds->empty()) text += "  none within the speeds given\n";
+    for (const CriticalSpeed& c : *critical_speeds) {
+      std::snprintf(line, sizeof line, "  order %2d meets %-20s at %7.3f m/s, %8.2f Hz, zeta %.4f\n",
+                    c.order, LabelName(c.label), c.speed_m_s, c.frequency_hz, c.damping_ratio);
+      text += line;
+    }
+  }
   return text;
 }
 

@@ -18,6 +18,7 @@
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "estimation/status.h"
+#include "model/campbell.h"
 #include "model/modal.h"
 #include "model/archive.h"
 
@@ -108,19 +109,42 @@ struct PredictedMode {
   }
 };
 
+// The modes rolling at one speed (predict --speeds).
+struct SpeedModes {
+  double speed_m_s = 0;
+  std::map<ModeLabel, std::pair<double, double>> modes;  // label -> (Hz, damping ratio)
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("speed_m_s", &speed_m_s);
+    a->Visit("modes", &modes);
+  }
+};
+
 struct PredictBody {
   Status status;
   std::vector<PredictedMode> modes;
   std::vector<ModeLabel> overdamped;  // labels whose roots are real
+  // With --speeds: the modes at each speed; with --lugs_per_revolution too,
+  // where the lug orders meet them (model/campbell.h).
+  std::optional<std::vector<SpeedModes>> speeds;
+  std::optional<int> lugs_per_revolution;
+  std::optional<double> r_e0;  // the orders' slope: k lugs V / (2 pi r_e0)
+  std::optional<std::vector<CriticalSpeed>> critical_speeds;
 
   static PredictBody From(const ModalSolution& solution);
-  // The modes as a table (mode, plane, Hz, zeta) and the overdamped labels.
+  // The modes as a table (mode, plane, Hz, zeta) and the overdamped labels;
+  // the modes by speed and the critical speeds where there are.
   std::string FullReport() const;
   template <class Archive>
   void Serialize(Archive* a) {
     status.Serialize(a);
     a->Visit("modes", &modes);
     a->Visit("overdamped", &overdamped);
+    a->VisitIfSet("speeds", &speeds);
+    a->VisitIfSet("lugs_per_revolution", &lugs_per_revolution);
+    a->VisitIfSet("r_e0", &r_e0);
+    a->VisitIfSet("critical_speeds", &critical_speeds);
   }
 };
 

@@ -211,6 +211,12 @@ Made Forces() {
   return Make("forces", "forces --parameters=" + fit.report_path + " --dataset=" + response);
 }
 
+// The paper's tire from 2 to 12 m/s with 20 lugs per revolution.
+Made PredictAtSpeeds() {
+  return Make("predict_speeds", "predict --parameters=" + Source("datasets/paper/parameters.json") +
+                                    " --speeds=2,3,4,5,6,7,8,9,10,11,12 --lugs_per_revolution=20");
+}
+
 Made Campaign() {
   const std::string dir = Scratch("campaign");
   ::mkdir(dir.c_str(), 0700);
@@ -672,6 +678,20 @@ TEST(HtmlReportTest, PredictIsTablesOnly) {
   EXPECT_NE(m.html.find("72.133"), std::string::npos);  // Table 3's vertical mode, 72.1 Hz
 }
 
+TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSpeeds) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = PredictAtSpeeds();
+  ExpectWellFormed(m.html, 1);
+  ASSERT_EQ(m.report["speeds"].size(), 11u);
+  ASSERT_GT(m.report["critical_speeds"].size(), 0u);
+  for (const json& c : m.report["critical_speeds"]) {
+    char speed[32];
+    std::snprintf(speed, sizeof speed, "%.3f", c["speed_m_s"].get<double>());
+    EXPECT_NE(m.html.find(speed), std::string::npos) << speed;
+  }
+  EXPECT_NE(m.html.find("Critical speeds"), std::string::npos);
+}
+
 TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGaps) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Campaign();
@@ -971,7 +991,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identifiability", Identifiability},
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
-                      Kind{"forces", Forces},
+                      Kind{"forces", Forces}, Kind{"predict_speeds", PredictAtSpeeds},
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},

@@ -1,7 +1,81 @@
-// The page of `ringid predict`: the modes of a parameter set, tables only.
+// The page of `ringid predict`: the modes of a parameter set; with
+// --speeds, the Campbell diagram with the lug orders and the critical speeds.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
 #include "apps/html/pages.h"
+#include "apps/html/text.h"
 
 namespace ringid::html {
+namespace {
+
+void Campbell(const PredictBody& r, Page* page) {
+  if (!r.speeds || r.speeds->size() < 2) return;
+  Figure figure("predict-campbell", 900, 460);
+  const char* colors[] = {kBlue, kOrange, kGreen, kRed, "#9467bd", "#8c564b", "#e377c2"};
+  std::vector<std::string> parts;
+  double top = 0, fastest = 0;
+  int color = 0;
+  for (const PredictedMode& m : r.modes) {
+    Series s;
+    for (const SpeedModes& at : *r.speeds) {
+      const auto it = at.modes.find(m.label);
+      if (it == at.modes.end()) continue;
+      s.Row({at.speed_m_s, it->second.first});
+      top = std::max(top, it->second.first);
+      fastest = std::max(fastest, at.speed_m_s);
+    }
+    if (s.empty()) continue;
+    parts.push_back(figure.AddData(s) + " using 1:2 with linespoints pt 7 ps 0.6 lw 2 lc rgb '" +
+                    colors[color++ % 7] + "' title " + GnuplotString(Pretty(ToString(m.label))));
+  }
+  if (parts.empty()) return;
+  top *= 1.15;
+  if (r.lugs_per_revolution && r.r_e0) {
+    // The orders that meet a mode (at least the first) as lines through the
+    // origin, up to the top of the graph.
+    int highest = 1;
+    for (const CriticalSpeed& c : r.critical_speeds.value_or(std::vector<CriticalSpeed>{})) {
+      highest = std::max(highest, c.order);
+    }
+    Series orders;
+    for (int k = 1; k <= std::min(highest, 50); ++k) {
+      const double slope = LugOrderHz(k, *r.lugs_per_revolution, *r.r_e0, 1.0);
+      if (!(slope > 0)) break;
+      const double v_top = std::min(fastest, top / slope);
+      orders.Row({0.0, 0.0});
+      orders.Row({v_top, slope * v_top});
+      orders.Break();
+    }
+    parts.push_back(figure.AddData(orders) + " using 1:2 with lines dt 2 lc rgb '#888888' "
+                    "title 'lug orders'");
+    Series critical;
+    for (const CriticalSpeed& c : r.critical_speeds.value_or(std::vector<CriticalSpeed>{})) {
+      critical.Row({c.speed_m_s, c.frequency_hz});
+    }
+    if (!critical.empty()) {
+      parts.push_back(figure.AddData(critical) +
+                      " using 1:2 with points pt 6 ps 1.8 lw 2 lc rgb '#000000' title 'critical speeds'");
+    }
+  }
+  std::ostringstream script;
+  script << "set grid\nset key outside below center horizontal\nset xlabel 'speed (m/s)'\n"
+         << "set ylabel 'frequency (Hz)'\nset xrange [0:" << fastest << "]\nset yrange [0:" << top
+         << "]\n";
+  figure.script = script.str() + PlotCommand(parts);
+  figure.caption = "Campbell diagram: each mode's damped frequency against the drum speed" +
+                   std::string(r.lugs_per_revolution
+                                   ? "; dashed, the lug orders k lugs V / (2 pi r_e0) (" +
+                                         std::to_string(*r.lugs_per_revolution) +
+                                         " lugs); circles, the critical speeds where an order "
+                                         "meets a mode"
+                                   : "") +
+                   ".";
+  page->AddFigure(std::move(figure));
+}
+
+}  // namespace
 
 void PredictPage(const PredictReport& report, Page* page) {
   const PredictBody& r = report.body;
@@ -19,6 +93,16 @@ void PredictPage(const PredictReport& report, Page* page) {
       "Modes",
       {"mode", "plane", "frequency (Hz)", "damping ratio", "energy share of the label's element"},
       rows);
+  Campbell(r, page);
+  std::vector<Row> critical;
+  for (const CriticalSpeed& c : r.critical_speeds.value_or(std::vector<CriticalSpeed>{})) {
+    critical.push_back({NumberCell(c.order, "%.0f"), NameCell(c.label),
+                        NumberCell(c.speed_m_s, "%.3f"), NumberCell(c.frequency_hz, "%.2f"),
+                        NumberCell(c.damping_ratio, "%.4f")});
+  }
+  page->TableSection("Critical speeds: where a lug order meets a mode",
+                     {"order", "mode", "speed (m/s)", "frequency (Hz)", "damping ratio there"},
+                     critical);
 }
 
 void ProvenanceSection(const Provenance& p, Page* page) {

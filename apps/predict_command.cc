@@ -1,0 +1,79 @@
+#include "apps/predict_command.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "apps/flags.h"
+#include "apps/reports.h"
+#include "datasets/tir_parameters.h"
+#include "model/campbell.h"
+#include "report/report.h"
+
+namespace ringid {
+namespace {
+
+// predict --speeds (and --lugs_per_revolution): the modes at each speed and
+// the critical speeds, into body.
+bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* body,
+              std::string* error) {
+  std::vector<double> speeds;
+  if (!ParseNumberList("speeds", FLAGS_speeds, false, "m/s", &speeds, error)) return false;
+  if (FLAGS_lugs_per_revolution < 0) {
+    *error = "--lugs_per_revolution: must not be negative";
+    return false;
+  }
+  std::sort(speeds.begin(), speeds.end());
+  if (speeds == std::vector<double>{0}) return true;  // standing: the modes above
+  body->speeds.emplace();
+  for (double v : speeds) {
+    SpeedModes at{v, {}};
+    for (const Mode& m : model.Solve(p, v).modes) at.modes[m.label] = {m.frequency_hz, m.damping_ratio};
+    body->speeds->push_back(at);
+  }
+  if (FLAGS_lugs_per_revolution > 0) {
+    body->lugs_per_revolution = FLAGS_lugs_per_revolution;
+    body->r_e0 = p[Param::r_e0];
+    body->critical_speeds = CriticalSpeeds(model, p, FLAGS_lugs_per_revolution, speeds);
+  }
+  return true;
+}
+
+}  // namespace
+
+int Predict(int argc, char** argv) {
+  std::string error;
+  std::vector<const Effect*> effects;
+  if (!ParseEffects(&effects, &error)) return Usage(error);
+  if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
+    return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
+  }
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error)) return Usage(error);
+  Parameters p;
+  LoadError load;
+  if (!FLAGS_parameters.empty()) {  // a .tir by its extension
+    if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+  } else {
+    Dataset d;
+    if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
+    p = InitialParameters(d);
+  }
+  for (const auto& [q, v] : set) p[q] = v;
+  const RigidRingModel model(effects);
+  const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
+  const std::vector<Param> missing = Missing(model, p);
+  if (!missing.empty()) return Usage(MissingParameters(source, missing));
+  const ModalSolution s = model.Solve(p);
+  PredictBody body = PredictBody::From(s);
+  if (!AtSpeeds(model, p, &body, &error)) return Usage(error);
+  if (!s.ok) std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
+  else std::printf("%s", body.FullReport().c_str());
+  if (!FLAGS_output.empty()) {
+    const int rc = Write(FLAGS_output, ReportText(PredictReport{ThisRun(argc, argv, std::nullopt), body}));
+    if (rc != kExitOk) return rc;
+  }
+  return s.ok ? kExitOk : kExitFailure;
+}
+
+}  // namespace ringid
