@@ -151,6 +151,22 @@ BENCHMARK_CAPTURE(BM_JointFit, standing_drum_6_drum_12_analytic, std::vector<dou
                   Derivatives::kAnalytic)
     ->Unit(benchmark::kMillisecond);
 
+// Issue 23: the forces of three speeds, five orders and five channels with
+// the parameters' covariance (std_total). Target: <= 0.1 s.
+void BM_Forces(benchmark::State& state) {
+  ForceParameters parameters;
+  ResponseDataset data;
+  if (!SpeedForcesCase(&parameters, &data).ok()) state.SkipWithError("the case failed");
+  const RigidRingModel model;
+  for (auto _ : state) {
+    ForcesResult r;
+    EstimateForces(model, parameters, data, ForcesOptions{}, &r);
+    if (!r.status.ok()) state.SkipWithError("forces failed");
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_Forces)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace ringid
 

@@ -9,6 +9,8 @@
 #include <Eigen/Eigenvalues>
 
 #include "datasets/synthetic.h"
+#include "estimation/identify.h"
+#include "model/forced_response.h"
 #include "model/modal.h"
 #include "model/rigid_ring_model.h"
 
@@ -93,6 +95,43 @@ double BareEigenSolve(const std::vector<SpeedBlock>& blocks, bool vectors) {
 
 void NextSpeedPoint(Parameters* p, int* i) {
   (*p)[Param::k_bx] *= 1 + (++*i % 128 == 0 ? -127e-15 : 1e-15);
+}
+
+Status SpeedForcesCase(ForceParameters* parameters, ResponseDataset* data) {
+  Dataset d;
+  Status s = SpeedCarTire({0, 6, 12}, &d);
+  if (!s.ok()) return s;
+  IdentifyOptions o;
+  o.starts = 1;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  IdentifyResult fit;
+  Identify(RigidRingModel(), d, o, &fit);
+  if (!fit.status.ok()) return fit.status;
+  *parameters = ForceParameters::From(fit);
+  const Parameters p = ExampleCarTire();
+  *data = ResponseDataset{};
+  data->name = "speed";
+  data->lugs_per_revolution = 20;
+  for (double v : {6.0, 12.0, 18.0}) {
+    ResponseCondition c;
+    c.name = "v" + std::to_string(static_cast<int>(v));
+    c.speed_m_s = v;
+    for (int k = 1; k <= 5; ++k) {
+      AxleResponseMatrix H;
+      std::string why;
+      if (!AxleResponse(RigidRingModel(), p, v, k * 20 * v / (2 * M_PI * p[Param::r_e0]), &H, &why)) {
+        return Status::Failed(why);
+      }
+      OrderResponse order{k, {}};
+      for (int ch = 0; ch < kNumAxleChannels; ++ch) {
+        const std::complex<double> y = (H(ch, 0) * 300.0 + H(ch, 1) * 900.0 + H(ch, 2) * 150.0) / double(k);
+        order.channels[static_cast<AxleChannel>(ch)] = {y, 0.1 * std::abs(y)};
+      }
+      c.orders.push_back(order);
+    }
+    data->conditions.push_back(c);
+  }
+  return Status::Success();
 }
 
 Status SpeedCarTire(const std::vector<double>& speeds, Dataset* d) {

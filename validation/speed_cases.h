@@ -10,6 +10,8 @@
 #include <Eigen/Core>
 
 #include "datasets/dataset.h"
+#include "datasets/response_dataset.h"
+#include "estimation/forces.h"
 #include "estimation/status.h"
 #include "model/parameters.h"
 
@@ -50,6 +52,12 @@ void NextSpeedPoint(Parameters* p, int* i);
 // contact free (the rolling suite's 14 parameters, its four ties), started
 // with dampers 0.8 and the rest 1.25 times the truth.
 Status SpeedCarTire(const std::vector<double>& speeds, Dataset* d);
+
+// The forces case of issue 23: the car tire identified (analytic, one start)
+// from SpeedCarTire({0, 6, 12}), its covariance of 14 coordinates; and the
+// axle's response to known lug forces at 6, 12 and 18 m/s, orders 1-5, all
+// five channels, sigma a tenth of each amplitude, 20 lugs per revolution.
+Status SpeedForcesCase(ForceParameters* parameters, ResponseDataset* data);
 
 }  // namespace ringid
 
