@@ -51,9 +51,20 @@ int ForcesCommand(int argc, char** argv) {
   ResponseDataset data;
   if (!LoadResponseDataset(FLAGS_dataset, &data, &load)) return Usage(load.OneLine());
   const RigidRingModel model(effects);
-  for (const ResponseCondition& c : data.conditions) {
+  for (size_t i = 0; i < data.conditions.size(); ++i) {
+    const ResponseCondition& c = data.conditions[i];
     const std::vector<Param> missing = Missing(model, fp.In(c));
-    if (!missing.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
+    if (missing.empty()) continue;
+    // A value the fit has per condition, in none of this name.
+    std::string fitted;
+    for (const auto& [name, values] : fp.by_condition) {
+      if (values.IsSet(missing[0])) fitted += (fitted.empty() ? "" : ", ") + name;
+    }
+    if (fitted.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
+    return Usage(FLAGS_dataset + ": conditions[" + std::to_string(i) + "].known." +
+                 ParamName(missing[0]) + ": missing: " + FLAGS_parameters + " fitted " +
+                 ParamName(missing[0]) + " per condition (" + fitted + "); name the condition '" +
+                 c.name + "' as one of those, or give its value in known");
   }
   ForcesResult r;
   EstimateForces(model, fp, data, ForcesOptions{}, &r);

@@ -276,5 +276,32 @@ TEST(ForcesCommandTest, WritesAReportAndRefusesBadInputWithExitTwo) {
   EXPECT_FALSE(testing::Exists(out));
 }
 
+// A fit with the load per condition gives it to a response condition of the
+// same name; another name without the load is refused, naming both.
+TEST(ForcesCommandTest, APerConditionValueComesFromTheFitsConditionOfThatName) {
+  const std::string set = Scratch("forces_loads_set.json"), modes = Scratch("forces_loads.json"),
+                    fit = Scratch("forces_loads_fit.json"), data = Scratch("forces_loads_data.json");
+  std::ofstream(set) << ParameterSetToJson(ExampleCarTire(), "car", "example");
+  RunResult r = Ringid("simulate --parameters=" + set + " --speeds=0,6 --loads=3000,4500 --output=" +
+                       modes + " --truth=" + Scratch("forces_loads_truth.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("identify --starts=1 --derivatives=analytic --dataset=" + modes + " --output=" + fit);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ResponseDataset d = Responses(ExampleCarTire(), kAll, 0.1, nullptr);
+  d.conditions.resize(1);
+  d.conditions[0].name = "drum_6_4500N";
+  std::ofstream(data) << ResponseDatasetToJson(d);
+  r = Ringid("forces --parameters=" + fit + " --dataset=" + data);
+  EXPECT_EQ(r.status, 0) << r.err;
+  d.conditions[0].name = "drum_5";
+  std::ofstream(data) << ResponseDatasetToJson(d);
+  r = Ringid("forces --parameters=" + fit + " --dataset=" + data);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(data + ": conditions[0].known.F_cz0: missing: " + fit +
+                       " fitted F_cz0 per condition (drum_6_3000N, drum_6_4500N"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace ringid
