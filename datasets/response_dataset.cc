@@ -1,8 +1,10 @@
 #include "datasets/response_dataset.h"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 
+#include "model/forced_response.h"
 #include "model/spelling.h"
 
 namespace ringid {
@@ -122,6 +124,41 @@ bool ParseResponseDataset(const std::string& text, const std::string& path, Resp
 bool LoadResponseDataset(const std::string& path, ResponseDataset* data, LoadError* error) {
   std::string text;
   return ReadInputFile(path, &text, error) && ParseResponseDataset(text, path, data, error);
+}
+
+bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lugs,
+                       const std::vector<double>& speeds, int orders,
+                       const std::vector<AxleChannel>& channels, const LugForceOrders& forces,
+                       double relative_noise, std::mt19937_64* rng, ResponseDataset* data,
+                       std::string* why) {
+  std::normal_distribution<double> n(0, 1);
+  data->lugs_per_revolution = lugs;
+  data->conditions.clear();
+  for (double v : speeds) {
+    char name[32];
+    std::snprintf(name, sizeof name, "drum_%g", v);
+    ResponseCondition c;
+    c.name = name;
+    c.speed_m_s = v;
+    for (int k = 1; k <= orders; ++k) {
+      AxleResponseMatrix H;
+      if (!AxleResponse(model, p, v, k * lugs * v / (2 * M_PI * p[Param::r_e0]), &H, why)) {
+        return false;
+      }
+      const auto F = forces(k);
+      OrderResponse o{k, {}};
+      for (AxleChannel ch : channels) {
+        std::complex<double> y = 0;
+        for (int f = 0; f < kNumLugForces; ++f) y += H(static_cast<int>(ch), f) * F[f];
+        const double sigma = relative_noise * std::abs(y);
+        if (rng) y += std::complex<double>(sigma * n(*rng), sigma * n(*rng));
+        o.channels[ch] = {y, sigma};
+      }
+      c.orders.push_back(o);
+    }
+    data->conditions.push_back(c);
+  }
+  return true;
 }
 
 std::string ResponseDatasetToJson(const ResponseDataset& d) {

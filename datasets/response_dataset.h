@@ -5,7 +5,10 @@
 #ifndef RINGID_DATASETS_RESPONSE_DATASET_H_
 #define RINGID_DATASETS_RESPONSE_DATASET_H_
 
+#include <array>
 #include <complex>
+#include <functional>
+#include <random>
 #include <map>
 #include <optional>
 #include <string>
@@ -14,6 +17,7 @@
 #include "datasets/dataset.h"
 #include "model/archive.h"
 #include "model/names.h"
+#include "model/rigid_ring_model.h"
 
 namespace ringid {
 
@@ -103,6 +107,18 @@ struct ResponseDataset {
   int lugs_per_revolution = 0;
   std::vector<ResponseCondition> conditions;
 };
+
+// What a drum test would measure of known lug forces: at each speed (a
+// condition "drum_V"), orders 1 to `orders` of `lugs` lug impacts per turn,
+// on each of `channels`, the model's response to forces(order) (F_x, F_z,
+// F_y), with sigma `relative_noise` of each amplitude on re and on im and,
+// with `rng`, that noise added. False with why where the model cannot respond.
+using LugForceOrders = std::function<std::array<std::complex<double>, kNumLugForces>(int order)>;
+bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lugs,
+                       const std::vector<double>& speeds, int orders,
+                       const std::vector<AxleChannel>& channels, const LugForceOrders& forces,
+                       double relative_noise, std::mt19937_64* rng, ResponseDataset* data,
+                       std::string* why);
 
 // Reads and checks a response dataset: false with `error` (file, field,
 // message) and `data` unspecified.

@@ -33,39 +33,22 @@ Complex TrueForce(LugForce f, int order) {
 }
 
 // The axle's response to the true forces at each speed and orders 1-5 on
-// `channels`, sigma a tenth of each channel's largest |Y| over the orders
-// (noise added with `rng`, none without).
+// `channels`, sigma `relative_noise` of each |Y| (1e-3 without noise), the
+// noise added with `rng`.
 ResponseDataset Responses(const Parameters& p, const std::vector<AxleChannel>& channels,
                           double relative_noise, std::mt19937_64* rng) {
-  const RigidRingModel model;
   ResponseDataset d;
   d.name = "synthetic";
-  d.lugs_per_revolution = kLugs;
-  std::normal_distribution<double> n(0, 1);
-  for (double v : kSpeeds) {
-    ResponseCondition c;
-    c.name = "drum_" + std::to_string(static_cast<int>(v));
-    c.speed_m_s = v;
-    const double f_lug = kLugs * v / (2 * M_PI * p[Param::r_e0]);
-    for (int k = 1; k <= 5; ++k) {
-      AxleResponseMatrix H;
-      std::string why;
-      EXPECT_TRUE(AxleResponse(model, p, v, k * f_lug, &H, &why)) << why;
-      OrderResponse o;
-      o.order = k;
-      for (AxleChannel ch : channels) {
-        Complex y = 0;
-        for (LugForce f : {LugForce::kFx, LugForce::kFz, LugForce::kFy}) {
-          y += H(static_cast<int>(ch), static_cast<int>(f)) * TrueForce(f, k);
-        }
-        const double sigma = relative_noise > 0 ? relative_noise * std::abs(y) : 1e-3 * std::abs(y);
-        if (rng) y += Complex(sigma * n(*rng), sigma * n(*rng));
-        o.channels[ch] = {y, sigma};
-      }
-      c.orders.push_back(o);
-    }
-    d.conditions.push_back(c);
-  }
+  std::string why;
+  EXPECT_TRUE(SimulateResponses(
+      RigidRingModel(), p, kLugs, kSpeeds, 5, channels,
+      [](int k) {
+        return std::array<Complex, kNumLugForces>{TrueForce(LugForce::kFx, k),
+                                                  TrueForce(LugForce::kFz, k),
+                                                  TrueForce(LugForce::kFy, k)};
+      },
+      relative_noise > 0 ? relative_noise : 1e-3, rng, &d, &why))
+      << why;
   return d;
 }
 

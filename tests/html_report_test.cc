@@ -181,31 +181,17 @@ Made Forces() {
   using namespace ringid;  // NOLINT: the library's types, in this one maker
   const std::string data = Simulate("forces_modes", "--speeds=0,6,12");
   const Made fit = Make("forces_fit", "identify --starts=1 --derivatives=analytic --dataset=" + data);
-  const Parameters p = ringid::testing::PaperIdentified();
   ResponseDataset d;
   d.name = "drum";
-  d.lugs_per_revolution = 20;
   std::mt19937_64 rng(4);
-  std::normal_distribution<double> n(0, 1);
-  for (double v : {6.0, 12.0}) {
-    ResponseCondition c;
-    c.name = "drum_" + std::to_string(static_cast<int>(v));
-    c.speed_m_s = v;
-    for (int k = 1; k <= 3; ++k) {
-      AxleResponseMatrix H;
-      std::string why;
-      EXPECT_TRUE(AxleResponse(RigidRingModel(), p, v, k * 20 * v / (2 * M_PI * p[Param::r_e0]), &H,
-                               &why)) << why;
-      OrderResponse o{k, {}};
-      for (int ch = 0; ch < kNumAxleChannels; ++ch) {
-        const Complex y = (H(ch, 0) * 300.0 + H(ch, 1) * 900.0 + H(ch, 2) * 150.0) / double(k);
-        const double sigma = 0.1 * std::abs(y);
-        o.channels[static_cast<AxleChannel>(ch)] = {y + Complex(sigma * n(rng), sigma * n(rng)), sigma};
-      }
-      c.orders.push_back(o);
-    }
-    d.conditions.push_back(c);
-  }
+  std::string why;
+  EXPECT_TRUE(SimulateResponses(
+      RigidRingModel(), ringid::testing::PaperIdentified(), 20, {6, 12}, 3,
+      {AxleChannel::kForceX, AxleChannel::kForceZ, AxleChannel::kForceY, AxleChannel::kMomentX,
+       AxleChannel::kMomentZ},
+      [](int k) { return std::array<Complex, kNumLugForces>{300.0 / k, 900.0 / k, 150.0 / k}; },
+      0.1, &rng, &d, &why))
+      << why;
   const std::string response = Scratch("forces_response.json");
   std::ofstream(response) << ResponseDatasetToJson(d);
   return Make("forces", "forces --parameters=" + fit.report_path + " --dataset=" + response);

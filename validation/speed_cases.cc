@@ -108,28 +108,18 @@ Status SpeedForcesCase(ForceParameters* parameters, ResponseDataset* data) {
   Identify(RigidRingModel(), d, o, &fit);
   if (!fit.status.ok()) return fit.status;
   *parameters = ForceParameters::From(fit);
-  const Parameters p = ExampleCarTire();
   *data = ResponseDataset{};
   data->name = "speed";
-  data->lugs_per_revolution = 20;
-  for (double v : {6.0, 12.0, 18.0}) {
-    ResponseCondition c;
-    c.name = "v" + std::to_string(static_cast<int>(v));
-    c.speed_m_s = v;
-    for (int k = 1; k <= 5; ++k) {
-      AxleResponseMatrix H;
-      std::string why;
-      if (!AxleResponse(RigidRingModel(), p, v, k * 20 * v / (2 * M_PI * p[Param::r_e0]), &H, &why)) {
-        return Status::Failed(why);
-      }
-      OrderResponse order{k, {}};
-      for (int ch = 0; ch < kNumAxleChannels; ++ch) {
-        const std::complex<double> y = (H(ch, 0) * 300.0 + H(ch, 1) * 900.0 + H(ch, 2) * 150.0) / double(k);
-        order.channels[static_cast<AxleChannel>(ch)] = {y, 0.1 * std::abs(y)};
-      }
-      c.orders.push_back(order);
-    }
-    data->conditions.push_back(c);
+  std::string why;
+  const auto forces = [](int k) {
+    return std::array<std::complex<double>, kNumLugForces>{300.0 / k, 900.0 / k, 150.0 / k};
+  };
+  const std::vector<AxleChannel> all = {AxleChannel::kForceX, AxleChannel::kForceZ,
+                                        AxleChannel::kForceY, AxleChannel::kMomentX,
+                                        AxleChannel::kMomentZ};
+  if (!SimulateResponses(RigidRingModel(), ExampleCarTire(), 20, {6, 12, 18}, 5, all, forces, 0.1,
+                         nullptr, data, &why)) {
+    return Status::Failed(why);
   }
   return Status::Success();
 }
