@@ -1,5 +1,7 @@
 #include "apps/forces_command.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "apps/flags.h"
@@ -51,6 +53,19 @@ int ForcesCommand(int argc, char** argv) {
   ResponseDataset data;
   if (!LoadResponseDataset(FLAGS_dataset, &data, &load)) return Usage(load.OneLine());
   const RigidRingModel model(effects);
+  // The forces need the model that was fitted: an effect the parameters move
+  // off its baseline (0; m_a, the hub's mass, has none) asks for that effect.
+  for (const Effect* e : EffectCatalogue()) {
+    if (std::find(effects.begin(), effects.end(), e) != effects.end()) continue;
+    for (Param q : e->parameters()) {
+      if (Info(q).domain == Domain::kPositive || !std::isfinite(fp.shared[q]) || fp.shared[q] == 0) {
+        continue;
+      }
+      return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": a parameter of " +
+                   e->name() + ", which the model lacks; give --effects=" + e->name() +
+                   " (the forces use the model that was fitted)");
+    }
+  }
   for (size_t i = 0; i < data.conditions.size(); ++i) {
     const ResponseCondition& c = data.conditions[i];
     const std::vector<Param> missing = Missing(model, fp.In(c));

@@ -23,7 +23,13 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* bod
     return false;
   }
   std::sort(speeds.begin(), speeds.end());
-  if (speeds == std::vector<double>{0}) return true;  // standing: the modes above
+  if (speeds == std::vector<double>{0}) {  // standing: the modes above
+    if (FLAGS_lugs_per_revolution > 0) {
+      *error = "--lugs_per_revolution: needs --speeds (the lug orders meet the modes at speed)";
+      return false;
+    }
+    return true;
+  }
   body->speeds.emplace();
   for (double v : speeds) {
     SpeedModes at{v, {}};

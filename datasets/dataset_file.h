@@ -1,6 +1,6 @@
 // The modal dataset file as one field list (docs/conventions.md §3, §7): the
 // archive (model/archive.h) reads it strictly (types, unknown and missing
-// keys), writes it, and documents it (`ringid schema --inputs`); what the
+// keys), writes it, and documents it (`ringid inputs`); what the
 // field list cannot say (names, ranges, rules between fields) is the
 // loader's, datasets/dataset.cc. Names stay strings here so that the loader
 // can answer a typo with the nearest valid name.

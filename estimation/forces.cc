@@ -65,7 +65,8 @@ std::vector<LugForce> Determined(const Eigen::MatrixXcd& A, double limit,
     if (static_cast<int>(with.size()) > A.rows() || !(condition <= limit)) {
       std::snprintf(why, sizeof why,
                     "the measured channels cannot tell it from the forces kept (condition "
-                    "number %.3g with it, above %.3g)",
+                    "number %.3g with it, above %.3g); the estimates of those hold its share "
+                    "as if it were zero",
                     condition, limit);
       (*undetermined)[f] = why;
       continue;
@@ -87,17 +88,29 @@ bool ResponseAt(const RigidRingModel& model, const Parameters& p, const Response
   return AxleResponse(model, p, c.speed_m_s, frequency_hz, H, why);
 }
 
-// p with coordinate i of `fp` moved by `step` (in its coordinate).
-Parameters Moved(const ForceParameters& fp, const Parameters& p, const std::string& condition,
+// p in condition c with coordinate i of `fp` moved by `step` in its
+// coordinate (estimation/setup.h: log(value) for a positive parameter,
+// value / TypicalScale otherwise); unmoved where the coordinate is another
+// condition's or c's known value overrides it.
+Parameters Moved(const ForceParameters& fp, const Parameters& p, const ResponseCondition& c,
                  int i, double step) {
-  const ForceParameters::Coordinate& c = fp.coordinates[i];
+  const ForceParameters::Coordinate& k = fp.coordinates[i];
   Parameters q = p;
-  if (!c.key.condition.empty() && c.key.condition != condition) return q;
-  const bool log = Info(c.key.param).domain == Domain::kPositive;
-  const double v = log ? p[c.key.param] * std::exp(step) : p[c.key.param] + step;
-  q[c.key.param] = v;
-  for (Param t : c.tied) q[t] = v;
+  if (!k.key.condition.empty() && k.key.condition != c.name) return q;
+  if (c.known.count(k.key.param)) return q;
+  const bool log = Info(k.key.param).domain == Domain::kPositive;
+  const double v = log ? p[k.key.param] * std::exp(step)
+                       : p[k.key.param] + step * TypicalScale(k.key.param);
+  q[k.key.param] = v;
+  for (Param t : k.tied) {
+    if (!c.known.count(t)) q[t] = v;
+  }
   return q;
+}
+
+// The lug frequency of condition c under p: measured, or lugs V / (2 pi r_e0).
+double LugHz(const ResponseCondition& c, int lugs, const Parameters& p) {
+  return c.f_lug_hz.value_or(lugs * c.speed_m_s / (2 * M_PI * p[Param::r_e0]));
 }
 
 }  // namespace
@@ -132,8 +145,10 @@ ForceParameters ForceParameters::From(const IdentifyResult& fit) {
   }
   fp.source = "parameter values of an identify report";
   const Uncertainty& u = fit.uncertainty;
-  if (!u.covariance_ok || u.covariance.rows() != static_cast<int>(fit.coordinate_names.size())) {
-    return fp;
+  const int n = static_cast<int>(fit.coordinate_names.size());
+  if (!u.covariance_ok || u.covariance.rows() != n || u.covariance.cols() != n ||
+      !u.covariance.allFinite() || !u.covariance.isApprox(u.covariance.transpose())) {
+    return fp;  // none, or not one this can use: the values alone
   }
   for (const std::string& name : fit.coordinate_names) {
     Coordinate c;
@@ -185,25 +200,22 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
     cf.name = c.name;
     cf.speed_m_s = c.speed_m_s;
     cf.f_lug_measured = c.f_lug_hz.has_value();
-    cf.f_lug_hz = c.f_lug_hz.value_or(data.lugs_per_revolution * c.speed_m_s /
-                                      (2 * M_PI * p[Param::r_e0]));
+    cf.f_lug_hz = LugHz(c, data.lugs_per_revolution, p);
     for (const OrderResponse& order : c.orders) {
       OrderForces of;
       of.order = order.order;
       of.frequency_hz = order.order * cf.f_lug_hz;
       for (const auto& [channel, phasor] : order.channels) of.channels.push_back(channel);
       AxleResponseMatrix H;
-      if (!ResponseAt(model, p, c, of.frequency_hz, &H, &why)) {
-        r->status = Status::Failed("condition " + c.name + ", order " +
-                                   std::to_string(order.order) + ": " + why);
-        return;
-      }
-      const Weighted w = Weigh(order, H);
-      if (!w.A.allFinite() || !w.y.allFinite()) {  // a sigma far below the amplitudes
-        r->status = Status::Failed("condition " + c.name + ", order " +
-                                   std::to_string(order.order) +
-                                   ": the weighted response is not finite");
-        return;
+      const bool responds = ResponseAt(model, p, c, of.frequency_hz, &H, &why);
+      const Weighted w = responds ? Weigh(order, H) : Weighted{};
+      if (!responds || !w.A.allFinite() || !w.y.allFinite()) {  // one order: the others go on
+        const std::string reason = responds ? "the weighted response is not finite (a sigma far "
+                                              "below the amplitudes?)"
+                                            : "the model's response: " + why;
+        for (LugForce f : {LugForce::kFx, LugForce::kFz, LugForce::kFy}) of.undetermined[f] = reason;
+        cf.orders.push_back(of);
+        continue;
       }
       const std::vector<LugForce> kept =
           Determined(w.A, o.max_condition_number, &of.undetermined);
@@ -227,8 +239,10 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
         Eigen::VectorXcd side[2];
         for (int s = 0; s < 2; ++s) {
           AxleResponseMatrix Hs;
-          if (!ResponseAt(model, Moved(fp, p, c.name, i, s ? -h : h), c, of.frequency_hz, &Hs,
-                          &why)) {
+          const Parameters moved = Moved(fp, p, c, i, s ? -h : h);
+          // The lug frequency moves with r_e0 where the dataset does not give it.
+          const double hz = order.order * LugHz(c, data.lugs_per_revolution, moved);
+          if (!ResponseAt(model, moved, c, hz, &Hs, &why)) {
             r->status = Status::Failed("condition " + c.name + ": the response near the "
                                        "parameters: " + why);
             return;

@@ -21,6 +21,7 @@
 #define RINGID_MODEL_ARCHIVE_H_
 
 #include <cmath>
+#include <cstdint>
 #include <complex>
 #include <limits>
 #include <map>
@@ -270,6 +271,16 @@ class JsonReader {
       *v = *parsed;
     } else if constexpr (std::is_integral_v<T>) {
       if (!Expect(j, j.is_number_integer(), path, "a whole number", error)) return false;
+      // nlohmann converts out of range silently: 2^32 + 20 would read as 20.
+      const bool fits = j.is_number_unsigned()
+                            ? j.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())
+                            : j.get<std::int64_t>() >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
+                                  (std::numeric_limits<T>::max() >= std::numeric_limits<std::int64_t>::max() ||
+                                   j.get<std::int64_t>() <= static_cast<std::int64_t>(std::numeric_limits<T>::max()));
+      if (!fits) {
+        *error = path + ": out of range";
+        return false;
+      }
       *v = j.get<T>();
     } else if constexpr (std::is_floating_point_v<T>) {
       if (!Expect(j, j.is_number() || j.is_null(), path, "a number", error)) return false;  // null: not finite

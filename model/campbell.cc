@@ -6,7 +6,7 @@
 namespace ringid {
 
 double LugOrderHz(int order, int lugs_per_revolution, double r_e0, double speed_m_s) {
-  return order * lugs_per_revolution * speed_m_s / (2 * M_PI * r_e0);
+  return double(order) * lugs_per_revolution * speed_m_s / (2 * M_PI * r_e0);
 }
 
 std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Parameters& p,
@@ -26,13 +26,15 @@ std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Paramet
     if (v > 0) slowest = std::min(slowest, v);
   }
   if (!std::isfinite(slowest)) return out;
-  const int orders = static_cast<int>(std::ceil(highest / LugOrderHz(1, lugs_per_revolution, r, slowest)));
+  // At most kMaxOrders: a slowest speed near 0 would ask for millions.
+  const double needed = std::ceil(highest / LugOrderHz(1, lugs_per_revolution, r, slowest));
+  const int orders = needed < kMaxOrders ? static_cast<int>(needed) : kMaxOrders;
   // f_label(V) - f_order(V); NaN where the label has no oscillating mode.
   auto gap = [&](const ModalSolution& s, ModeLabel label, int k, double v) {
     const Mode* m = s.ok ? s.Find(label) : nullptr;
     return m ? m->frequency_hz - LugOrderHz(k, lugs_per_revolution, r, v) : NAN;
   };
-  for (int k = 1; k <= std::min(orders, 1000); ++k) {
+  for (int k = 1; k <= orders; ++k) {
     for (int l = 0; l < kNumLabels; ++l) {
       const ModeLabel label = static_cast<ModeLabel>(l);
       for (size_t i = 0; i + 1 < speeds.size(); ++i) {

@@ -33,7 +33,9 @@ double LugOrderHz(int order, int lugs_per_revolution, double r_e0, double speed_
 // Every crossing of a lug order with a mode between consecutive `speeds`
 // (ascending), found where their difference changes sign and refined by
 // bisection to 1e-6 of the interval, ordered by speed. The orders tried are
-// those that reach the highest mode frequency within the speeds.
+// those that reach the highest mode frequency within the speeds, at most
+// kMaxOrders (a slowest speed near 0 asks for more).
+inline constexpr int kMaxOrders = 200;
 std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Parameters& p,
                                           int lugs_per_revolution, const std::vector<double>& speeds);
 

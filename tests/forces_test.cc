@@ -12,6 +12,7 @@
 #include "datasets/response_dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/forces.h"
+#include "model/effects.h"
 #include "model/forced_response.h"
 #include "report/report.h"
 #include "tests/test_support.h"
@@ -56,9 +57,10 @@ const std::vector<AxleChannel> kAll = {AxleChannel::kForceX, AxleChannel::kForce
                                        AxleChannel::kForceY, AxleChannel::kMomentX,
                                        AxleChannel::kMomentZ};
 
-ForcesResult Estimate(const ForceParameters& fp, const ResponseDataset& d) {
+ForcesResult Estimate(const ForceParameters& fp, const ResponseDataset& d,
+                      const RigidRingModel& model = RigidRingModel()) {
   ForcesResult r;
-  EstimateForces(RigidRingModel(), fp, d, ForcesOptions{}, &r);
+  EstimateForces(model, fp, d, ForcesOptions{}, &r);
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
@@ -149,8 +151,9 @@ TEST(ForcesTest, TheParametersShareOfStdTotalIsTheSpreadUnderSampledParameters) 
   const ResponseDataset data = Responses(truth, kAll, 0.1, nullptr);
   ForceParameters fp;
   fp.shared = truth;
+  // r_e0 moves the lug frequency too (the dataset does not give it).
   const std::vector<Param> uncertain = {Param::k_bz, Param::c_bz, Param::k_cz, Param::k_bx,
-                                        Param::k_by, Param::sigma_cy};
+                                        Param::k_by, Param::sigma_cy, Param::r_e0};
   Eigen::VectorXd sd(uncertain.size());
   for (size_t i = 0; i < uncertain.size(); ++i) {
     fp.coordinates.push_back({ParameterKey{uncertain[i], ""}, {}});
@@ -180,6 +183,54 @@ TEST(ForcesTest, TheParametersShareOfStdTotalIsTheSpreadUnderSampledParameters) 
     ASSERT_GT(share, 0.05 * e.std_measurement) << ToString(f);  // the parameters matter here
     EXPECT_NEAR(std::sqrt(var) / share, 1, 0.15) << ToString(f);
   }
+}
+
+// A parameter that is not positive is fitted as value / TypicalScale: its
+// covariance is in those units, and sampling it so spreads the estimates as
+// the linearised share says (an anisotropic sidewall's dk_bz).
+TEST(ForcesTest, AnEffectParameterCarriesItsUncertaintyInItsFittedCoordinate) {
+  const RigidRingModel model({FindEffect("anisotropic_sidewall")});
+  Parameters truth = ExampleCarTire();
+  truth[Param::dk_bz] = 0.1 * truth[Param::k_bz];
+  truth[Param::dk_bpsi] = 0;
+  ResponseDataset data;
+  std::string why;
+  ASSERT_TRUE(SimulateResponses(
+      model, truth, kLugs, kSpeeds, 5, kAll,
+      [](int k) {
+        return std::array<Complex, kNumLugForces>{TrueForce(LugForce::kFx, k),
+                                                  TrueForce(LugForce::kFz, k),
+                                                  TrueForce(LugForce::kFy, k)};
+      },
+      0.1, nullptr, &data, &why))
+      << why;
+  ForceParameters fp;
+  fp.shared = truth;
+  fp.coordinates.push_back({ParameterKey{Param::dk_bz, ""}, {}});
+  // 5 % of k_bz: small enough for the linearisation (a scale mistaken for 1
+  // would be a factor 1e4 off).
+  const double sd = 0.05 * truth[Param::k_bz] / TypicalScale(Param::dk_bz);
+  fp.covariance = Eigen::MatrixXd::Constant(1, 1, sd * sd);
+  const ForcesResult linear = Estimate(fp, data, model);
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> n(0, 1);
+  const int samples = 400, c = 0, order = 2;
+  std::vector<Complex> values;
+  for (int s = 0; s < samples; ++s) {
+    ForceParameters sampled;
+    sampled.shared = truth;
+    sampled.shared[Param::dk_bz] += sd * TypicalScale(Param::dk_bz) * n(rng);
+    values.push_back(Estimate(sampled, data, model).conditions[c].orders[order - 1].forces.at(
+        LugForce::kFz).value);
+  }
+  Complex mean = 0;
+  for (const Complex& v : values) mean += v / double(samples);
+  double var = 0;
+  for (const Complex& v : values) var += std::norm(v - mean) / 2 / (samples - 1);
+  const ForceEstimate& e = linear.conditions[c].orders[order - 1].forces.at(LugForce::kFz);
+  const double share = std::sqrt(e.std_total * e.std_total - e.std_measurement * e.std_measurement);
+  ASSERT_GT(share, 0.05 * e.std_measurement);
+  EXPECT_NEAR(std::sqrt(var) / share, 1, 0.15);
 }
 
 TEST(ResponseDatasetTest, WritesReadsAndWritesTheSameBytes) {
@@ -223,6 +274,8 @@ TEST(ResponseDatasetTest, RefusesEachKindOfBadFileNamingTheField) {
       {with("\"orders\"", "\"known\": {\"k_cz\": -1}, \"orders\""), "conditions[0].known.k_cz"},
       {with("\"orders\"", "\"extra\": 1, \"orders\""), "conditions[0].extra"},
       {with("ringid-lug-response/1", "ringid-lug-response/2"), "format"},
+      {with("\"lugs_per_revolution\": 20", "\"lugs_per_revolution\": 4294967316"),
+       "lugs_per_revolution"},
   };
   for (const auto& [text, field] : bad) {
     EXPECT_FALSE(ParseResponseDataset(text, "r.json", &d, &e)) << text;
@@ -257,6 +310,27 @@ TEST(ForcesCommandTest, WritesAReportAndRefusesBadInputWithExitTwo) {
             std::string::npos)
       << r.err;
   EXPECT_FALSE(testing::Exists(out));
+}
+
+// The forces use the model that was fitted: a set holding an effect's
+// parameter without --effects is refused; predict's lug orders need speeds.
+TEST(ForcesCommandTest, TheModelOfTheFitIsAskedForAndLugsNeedSpeeds) {
+  const std::string data = Scratch("forces_effect_data.json"), set = Scratch("forces_effect_set.json");
+  std::ofstream(data) << ResponseDatasetToJson(Responses(ExampleCarTire(), kAll, 0.1, nullptr));
+  Parameters p = ExampleCarTire();
+  p[Param::dk_bz] = 1e4;
+  std::ofstream(set) << ParameterSetToJson(p, "car", "with a sidewall anisotropy");
+  RunResult r = Ringid("forces --parameters=" + set + " --dataset=" + data);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("parameters.dk_bz: a parameter of anisotropic_sidewall, which the model "
+                       "lacks; give --effects=anisotropic_sidewall"),
+            std::string::npos)
+      << r.err;
+  r = Ringid("forces --effects=anisotropic_sidewall --parameters=" + set + " --dataset=" + data);
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = Ringid("predict --parameters=" + set + " --effects=anisotropic_sidewall --lugs_per_revolution=20");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--lugs_per_revolution: needs --speeds"), std::string::npos) << r.err;
 }
 
 // A fit with the load per condition gives it to a response condition of the
