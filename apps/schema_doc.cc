@@ -38,7 +38,8 @@ std::string ReportsMarkdown() {
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +
          Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE") +
          Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE") +
-         Section<BenchSpeedReport>("ringid bench --suite=speed --output=FILE");
+         Section<BenchSpeedReport>("ringid bench --suite=speed --output=FILE") +
+         Section<BenchForcesReport>("ringid bench --suite=forces --output=FILE");
 }
 
 std::string InputsMarkdown() {

@@ -31,13 +31,14 @@ enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
   // validation/
   kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling, kBenchSpeed,
+  kBenchForces,
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 13> kNames = {
+  static constexpr std::array<const char*, 14> kNames = {
       "identify", "predict", "identifiability", "compare", "diagnose", "campaign", "forces",
       "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis", "bench_rolling",
-      "bench_speed"};
+      "bench_speed", "bench_forces"};
 };
 
 struct InputFile {

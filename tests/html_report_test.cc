@@ -983,7 +983,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
                       Kind{"bench_diagnosis", BenchDiagnosis},
                       Kind{"bench_rolling", [] { return Bench("rolling"); }},
-                      Kind{"bench_speed", BenchSpeed}),
+                      Kind{"bench_speed", BenchSpeed},
+                      Kind{"bench_forces", [] { return Bench("forces"); }}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for

@@ -182,4 +182,39 @@ std::string SpeedSuite::Markdown() const {
          " in all.\n";
 }
 
+std::string ForcesSuite::Markdown() const {
+  std::string speeds;
+  for (double v : speeds_m_s) speeds += (speeds.empty() ? "" : ", ") + Format("%.3g", v);
+  const auto optional_percent = [](const std::optional<double>& v) {
+    return v ? Percent(*v) : std::string("-");
+  };
+  std::string md =
+      "Tire: " + tire + "; " + std::to_string(lugs_per_revolution) + " lugs, orders 1-" +
+      std::to_string(orders) + " at " + speeds + " m/s (order 1 meets the vertical mode at " +
+      Format("%.3f", resonance_speed_m_s) + " m/s); every axle channel with noise of " +
+      Format("%.3g", response_noise) + " |Y| on re and on im; the parameters identified from " +
+      "modal data standing and on the drum; " + std::to_string(replicates) + " replicates.\n\n"
+      "| method | estimates | largest bias | rms error | median error | rms z (std_measurement) |"
+      " 95 % coverage, std_total | 95 % coverage, std_measurement | on the resonance: std_total |"
+      " std_measurement |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const ForcesMethodRow& r : methods) {
+    md += std::string("| ") + ToString(r.method) + " | " + std::to_string(r.estimates) + " | " +
+          Percent(r.bias_max) + " | " + Percent(r.rms_error) + " | " + Percent(r.median_error) +
+          " | " + (r.rms_z_measurement ? Format("%.3f", *r.rms_z_measurement) : "-") + " | " +
+          optional_percent(r.coverage_total) + " | " + optional_percent(r.coverage_measurement) +
+          " | " + optional_percent(r.coverage_total_at_resonance) + " | " +
+          optional_percent(r.coverage_measurement_at_resonance) + " |\n";
+  }
+  const auto verdict = [](bool ok) { return ok ? std::string("met") : std::string("NOT met"); };
+  return md + "\n" + std::to_string(failed_fits) + " identifications failed; " +
+         Format("%.1f s", seconds) + " in all.\n\nCriteria: with the true parameters, bias at most " +
+         Percent(bias_max_allowed) + " of |F| per force and order (" + verdict(Unbiased()) +
+         ") and the spread as std_measurement says, rms z within " + Format("%.2f", rms_z_tolerance) +
+         " of 1 (" + verdict(StdIsRight()) + "); with identified parameters, std_total covers in " +
+         Percent(coverage_range.first) + "-" + Percent(coverage_range.second) +
+         ", on the resonance too (" + verdict(TotalCovers()) +
+         "), and std_measurement alone covers less, below the nominal 95 % (" +
+         verdict(MeasurementUnderCovers()) + ").\n";
+}
+
 }  // namespace ringid

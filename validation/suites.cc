@@ -200,8 +200,8 @@ const Param kRollingFree[] = {P::c_bx, P::c_btheta, P::k_bx,     P::k_btheta, P:
 const std::pair<Param, Param> kRollingTies[] = {
     {P::c_bz, P::c_bx}, {P::k_bz, P::k_bx}, {P::c_bpsi, P::c_bgamma}, {P::k_bpsi, P::k_bgamma}};
 
-// One replicate's data: every condition of `speeds` measured with the
-// synthetic suite's noise, shapes on the belt, rim and hub.
+}  // namespace
+
 Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds,
                       std::mt19937_64* rng, Dataset* d) {
   d->name = "rolling";
@@ -232,6 +232,8 @@ Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds
   }
   return Status::Success();
 }
+
+namespace {
 
 // The error of `estimate` in units of its std: in log space for a positive
 // parameter (the covariance's coordinates), linear otherwise.
@@ -386,6 +388,9 @@ const std::vector<SuiteEntry>& Suites() {
        }},
       {"speed", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchSpeedReport>(RunSpeedSuite, o, p);
+       }},
+      {"forces", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchForcesReport>(RunForcesSuite, o, p);
        }},
   };
   return suites;

@@ -48,6 +48,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchDiagnosis, Typed<BenchDiagnosisReport, html::BenchDiagnosisPage>},
     {ReportKind::kBenchRolling, Typed<BenchRollingReport, html::BenchRollingPage>},
     {ReportKind::kBenchSpeed, Typed<BenchSpeedReport, html::BenchSpeedPage>},
+    {ReportKind::kBenchForces, Typed<BenchForcesReport, html::BenchForcesPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

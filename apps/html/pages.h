@@ -22,6 +22,7 @@ void BenchConditioningPage(const BenchConditioningReport& report, Page* page);
 void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page);
 void BenchRollingPage(const BenchRollingReport& report, Page* page);
 void BenchSpeedPage(const BenchSpeedReport& report, Page* page);
+void BenchForcesPage(const BenchForcesReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);
