@@ -50,6 +50,12 @@ DEFINE_double(prior_spread, 0.1, "log-normal spread of the dataset's initial val
 DEFINE_string(speeds, "0", "V1,V2,...: speeds in m/s (>= 0); simulate: one condition each (0: standing, else drum_V); predict: the modes at each (a Campbell diagram)");
 DEFINE_string(loads, "", "F1,F2,...: loads F_cz0 in N (> 0); the conditions are then speeds x loads");
 DEFINE_string(suite, "", "the validation suite to run");
+DEFINE_string(lug_forces, "",
+              "simulate: a lug-force file (ringid-lug-forces/1); writes the axle's response to "
+              "those forces at --speeds, a response dataset (ringid-lug-response/1)");
+DEFINE_double(response_noise, 1 / (10 * std::sqrt(2.0)),
+              "simulate --lug_forces: noise on re and on im of each channel, a share of its "
+              "amplitude (the default is 20 dB)");
 DEFINE_int32(lugs_per_revolution, 0,
              "predict: lug impacts per wheel turn; with --speeds, the lug orders meet the modes "
              "at the critical speeds listed (0: none)");

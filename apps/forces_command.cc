@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <random>
 
 #include "apps/flags.h"
 #include "apps/reports.h"
@@ -37,6 +39,61 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
 }
 
 }  // namespace
+
+int SimulateResponsesCommand(int argc, char** argv) {
+  std::string error;
+  std::vector<const Effect*> effects;
+  if (!ParseEffects(&effects, &error)) return Usage(error);
+  if (FLAGS_parameters.empty() || FLAGS_output.empty()) {
+    return Usage("simulate --lug_forces needs --parameters=FILE and --output=RESPONSE");
+  }
+  if (!FLAGS_truth.empty()) {
+    return Usage("--truth: the file of --lug_forces is the truth of a response simulation");
+  }
+  if (!(FLAGS_response_noise > 0) || !std::isfinite(FLAGS_response_noise)) {
+    return Usage("--response_noise: must be positive (it is each channel's sigma)");
+  }
+  std::vector<double> speeds;
+  if (!ParseNumberList("speeds", FLAGS_speeds, true, "m/s", &speeds, &error)) {
+    return Usage(error + " (a lug order exists only rolling)");
+  }
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  LoadError load;
+  Parameters p;
+  if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error)) return Usage(error);
+  for (const auto& [q, v] : set) p[q] = v;
+  LugForceSpectrum spectrum;
+  if (!LoadLugForces(FLAGS_lug_forces, &spectrum, &load)) return Usage(load.OneLine());
+  const RigidRingModel model(effects);
+  const std::vector<Param> missing = Missing(model, p);
+  if (!missing.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
+  ResponseDataset data;
+  data.name = spectrum.name + "_response";
+  data.description = "The axle's response to the lug forces of " + FLAGS_lug_forces + " under " +
+                     FLAGS_parameters + ", simulated by ringid (noise " +
+                     std::to_string(FLAGS_response_noise) + " of each amplitude, seed " +
+                     std::to_string(FLAGS_seed) + ").";
+  const int orders = spectrum.orders.rbegin()->first;
+  std::mt19937_64 rng(FLAGS_seed);
+  const std::vector<AxleChannel> all = {AxleChannel::kForceX, AxleChannel::kForceZ,
+                                        AxleChannel::kForceY, AxleChannel::kMomentX,
+                                        AxleChannel::kMomentZ};
+  const auto forces = [&](int k) {
+    const auto it = spectrum.orders.find(k);
+    return it == spectrum.orders.end() ? std::array<Complex, kNumLugForces>{} : it->second;
+  };
+  if (!SimulateResponses(model, p, spectrum.lugs_per_revolution, speeds, orders, all, forces,
+                         FLAGS_response_noise, &rng, &data, &error)) {
+    return Usage(FLAGS_parameters + ": the model cannot respond: " + error);
+  }
+  const int rc = Write(FLAGS_output, ResponseDatasetToJson(data));
+  if (rc != kExitOk) return rc;
+  std::printf("wrote %s: %zu conditions, %zu orders, 5 channels\n", FLAGS_output.c_str(),
+              data.conditions.size(), spectrum.orders.size());
+  return kExitOk;
+}
 
 int ForcesCommand(int argc, char** argv) {
   std::string error;

@@ -5,6 +5,8 @@
 namespace ringid {
 
 int ForcesCommand(int argc, char** argv);
+// `simulate --lug_forces=FILE`: the axle's response to known lug forces.
+int SimulateResponsesCommand(int argc, char** argv);
 
 }  // namespace ringid
 

@@ -117,6 +117,7 @@ int CompareCommand(int argc, char** argv) {
 }
 
 int SimulateCommand(int argc, char** argv) {
+  if (!FLAGS_lug_forces.empty()) return SimulateResponsesCommand(argc, argv);
   std::string error;
   std::vector<double> speeds, loads;
   if (!ParseNumberList("speeds", FLAGS_speeds, false, "m/s", &speeds, &error)) return Usage(error);
@@ -383,9 +384,11 @@ const std::vector<Command>& Commands() {
       {"simulate", "--parameters=FILE --output=DATASET --truth=FILE",
        "a dataset measured from a parameter set, optionally with effects (each\n"
        "sized by --set or --shift), and a separate truth file; one condition per\n"
-       "speed and load, and several give a format-2 dataset",
+       "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
+       "the axle's response to those lug forces at --speeds (docs/forces.md)",
        {"parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
-        "damping_noise", "shape_noise", "prior_spread", "seed", "speeds", "loads"},
+        "damping_noise", "shape_noise", "prior_spread", "seed", "speeds", "loads", "lug_forces",
+        "response_noise"},
        SimulateCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"

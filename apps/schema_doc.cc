@@ -65,7 +65,10 @@ std::string InputsMarkdown() {
          "(contract §8, [forces.md](forces.md)): per drum condition, the complex amplitude of\n"
          "each measured axle channel (`axle_force_x`, `axle_force_z`, `axle_force_y`,\n"
          "`axle_moment_x`, `axle_moment_z`) at each lug order.\n\n" +
-         InputSchema(ResponseDatasetFields{});
+         InputSchema(ResponseDatasetFields{}) + "\n" +
+         "## Lug forces (`" + kLugForcesFormat + "`)\n\nRead by `simulate --lug_forces`: the lug "
+         "forces whose axle response it writes, per order the complex amplitude of `F_x`,\n"
+         "`F_z` and `F_y` (N; a force left out is 0).\n\n" + InputSchema(LugForcesFields{});
 }
 
 }  // namespace ringid

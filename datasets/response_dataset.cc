@@ -1,5 +1,6 @@
 #include "datasets/response_dataset.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -93,32 +94,82 @@ bool Check(const ResponseDatasetFields& j, ResponseDataset* d, LoadError* error)
   return true;
 }
 
-}  // namespace
+bool CheckLugForces(const LugForcesFields& j, LugForceSpectrum* s, LoadError* error) {
+  Checker c(error);
+  s->name = j.name;
+  if (s->name.empty()) return c.Fail("name", "must not be empty");
+  s->lugs_per_revolution = j.lugs_per_revolution;
+  if (j.lugs_per_revolution <= 0) return c.Fail("lugs_per_revolution", "must be positive");
+  if (j.orders.empty()) return c.Fail("orders", "must be a non-empty array");
+  for (size_t k = 0; k < j.orders.size(); ++k) {
+    const LugForceOrderFields& o = j.orders[k];
+    const std::string f = "orders[" + std::to_string(k) + "]";
+    if (o.order < 1) return c.Fail(f + ".order", "must be a positive whole number");
+    if (s->orders.count(o.order)) {
+      return c.Fail(f + ".order", "order " + std::to_string(o.order) + " appears twice");
+    }
+    if (o.forces.empty()) {
+      return c.Fail(f + ".forces", "names no force (expected " + OneOf(NamesOf<LugForce>()) + ")");
+    }
+    auto& forces = s->orders[o.order];
+    forces.fill(0.0);
+    for (const auto& [name, value] : o.forces) {
+      const auto force = FromString<LugForce>(name);
+      if (!force) return c.Fail(f + ".forces." + name, UnknownName("force", name, NamesOf<LugForce>()));
+      if (!std::isfinite(value.real()) || !std::isfinite(value.imag())) {
+        return c.Fail(f + ".forces." + name, "must be finite");
+      }
+      forces[static_cast<int>(*force)] = value;
+    }
+  }
+  return true;
+}
 
-bool ParseResponseDataset(const std::string& text, const std::string& path, ResponseDataset* data,
-                          LoadError* error) {
-  *data = ResponseDataset{};
-  data->path = path;
+// Reads `text` as the typed file Fields of `format`, then `check` says what
+// the type cannot.
+template <class Fields, class Check>
+bool ReadTyped(const std::string& text, const std::string& path, const char* format,
+               LoadError* error, Check check) {
   error->file = path;
   Json j;
   if (!ParseJsonInput(text, &j, error)) return false;
-  if (!j.is_object()) {
-    error->field = "";
-    error->message = "top level must be a JSON object";
-    return false;
-  }
-  if (j.contains("format") && j["format"] != kResponseFormat) {
+  if (j.is_object() && j.contains("format") && j["format"] != format) {
     error->field = "format";
-    error->message = std::string("must be \"") + kResponseFormat + "\"";
+    error->message = std::string("must be \"") + format + "\"";
     return false;
   }
-  ResponseDatasetFields fields;
+  Fields fields;
   std::string why;
   if (!JsonReader::FromJson(j, "", &fields, &why)) {
     SetArchiveError(why, error);
     return false;
   }
-  return Check(fields, data, error);
+  return check(fields);
+}
+
+}  // namespace
+
+bool ParseLugForces(const std::string& text, const std::string& path, LugForceSpectrum* spectrum,
+                    LoadError* error) {
+  *spectrum = LugForceSpectrum{};
+  return ReadTyped<LugForcesFields>(text, path, kLugForcesFormat, error, [&](const LugForcesFields& j) {
+    return CheckLugForces(j, spectrum, error);
+  });
+}
+
+bool LoadLugForces(const std::string& path, LugForceSpectrum* spectrum, LoadError* error) {
+  std::string text;
+  return ReadInputFile(path, &text, error) && ParseLugForces(text, path, spectrum, error);
+}
+
+bool ParseResponseDataset(const std::string& text, const std::string& path, ResponseDataset* data,
+                          LoadError* error) {
+  *data = ResponseDataset{};
+  data->path = path;
+  return ReadTyped<ResponseDatasetFields>(text, path, kResponseFormat, error,
+                                         [&](const ResponseDatasetFields& j) {
+    return Check(j, data, error);
+  });
 }
 
 bool LoadResponseDataset(const std::string& path, ResponseDataset* data, LoadError* error) {
@@ -141,16 +192,29 @@ bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lug
     c.name = name;
     c.speed_m_s = v;
     for (int k = 1; k <= orders; ++k) {
+      const auto F = forces(k);
+      if (std::all_of(F.begin(), F.end(), [](std::complex<double> f) { return f == 0.0; })) {
+        continue;  // no force at this order: nothing measured there
+      }
       AxleResponseMatrix H;
       if (!AxleResponse(model, p, v, k * lugs * v / (2 * M_PI * p[Param::r_e0]), &H, why)) {
         return false;
       }
-      const auto F = forces(k);
       OrderResponse o{k, {}};
+      std::map<AxleChannel, std::complex<double>> Y;
+      double largest = 0;
       for (AxleChannel ch : channels) {
-        std::complex<double> y = 0;
-        for (int f = 0; f < kNumLugForces; ++f) y += H(static_cast<int>(ch), f) * F[f];
-        const double sigma = relative_noise * std::abs(y);
+        for (int f = 0; f < kNumLugForces; ++f) Y[ch] += H(static_cast<int>(ch), f) * F[f];
+        largest = std::max(largest, std::abs(Y[ch]));
+      }
+      if (!(largest > 0)) {
+        *why = "order " + std::to_string(k) + ": no channel responds to its forces";
+        return false;
+      }
+      for (auto [ch, y] : Y) {
+        // A channel the forces leave still (the other plane) gets the noise of
+        // a thousandth of the order's largest amplitude: a sigma must be positive.
+        const double sigma = relative_noise * std::max(std::abs(y), 1e-3 * largest);
         if (rng) y += std::complex<double>(sigma * n(*rng), sigma * n(*rng));
         o.channels[ch] = {y, sigma};
       }

@@ -81,6 +81,48 @@ struct ResponseDatasetFields {
   }
 };
 
+inline constexpr char kLugForcesFormat[] = "ringid-lug-forces/1";
+
+// The lug forces a simulation puts in (`simulate --lug_forces`): per order,
+// the complex amplitude of F_x, F_z and F_y (N; a force left out is 0).
+struct LugForceOrderFields {
+  int order = 1;
+  std::map<std::string, std::complex<double>> forces;  // force -> {re, im}
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("order", &order);
+    a->Visit("forces", &forces);
+  }
+};
+
+struct LugForcesFields {
+  std::string name;
+  std::optional<std::string> description;
+  int lugs_per_revolution = 0;
+  std::vector<LugForceOrderFields> orders;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Derived("format", std::string(kLugForcesFormat));
+    a->Visit("name", &name);
+    a->VisitIfSet("description", &description);
+    a->Visit("lugs_per_revolution", &lugs_per_revolution);
+    a->Visit("orders", &orders);
+  }
+};
+
+struct LugForceSpectrum {
+  std::string name;
+  int lugs_per_revolution = 0;
+  std::map<int, std::array<std::complex<double>, kNumLugForces>> orders;  // by order
+};
+
+// Reads and checks a lug-force file: false with `error` (file, field, message).
+bool LoadLugForces(const std::string& path, LugForceSpectrum* spectrum, LoadError* error);
+bool ParseLugForces(const std::string& text, const std::string& path, LugForceSpectrum* spectrum,
+                    LoadError* error);
+
 // A measured channel at one order.
 struct Phasor {
   std::complex<double> value;
@@ -109,10 +151,12 @@ struct ResponseDataset {
 };
 
 // What a drum test would measure of known lug forces: at each speed (a
-// condition "drum_V"), orders 1 to `orders` of `lugs` lug impacts per turn,
+// condition "drum_V"), the orders 1 to `orders` that have a force, of `lugs` lug impacts per turn,
 // on each of `channels`, the model's response to forces(order) (F_x, F_z,
-// F_y), with sigma `relative_noise` of each amplitude on re and on im and,
-// with `rng`, that noise added. False with why where the model cannot respond.
+// F_y), with sigma `relative_noise` of each amplitude on re and on im (of a
+// thousandth of the order's largest where a channel is still) and, with
+// `rng`, that noise added. False with why where the model cannot respond or
+// no channel does.
 using LugForceOrders = std::function<std::array<std::complex<double>, kNumLugForces>(int order)>;
 bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lugs,
                        const std::vector<double>& speeds, int orders,

@@ -187,6 +187,13 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
     return;
   }
   const int n = static_cast<int>(fp.coordinates.size());
+  if (n > 0 && (fp.covariance.rows() != n || fp.covariance.cols() != n ||
+                !fp.covariance.allFinite())) {
+    r->status = Status::InvalidInput("the parameters' covariance is not " + std::to_string(n) +
+                                     " x " + std::to_string(n) + " and finite, one row and "
+                                     "column per coordinate");
+    return;
+  }
   for (const ResponseCondition& c : data.conditions) {
     const Parameters p = fp.In(c);
     for (Param q : model.parameters()) {

@@ -238,6 +238,19 @@ TEST(ForcesTest, AnEffectParameterCarriesItsUncertaintyInItsFittedCoordinate) {
 // README): the car tire's axle response at 6, 12 and 18 m/s, orders 1-5,
 // every channel, to TrueForce, with 10 % noise drawn from seed 2026.
 // RINGID_REGENERATE=1 writes it again.
+// A covariance that does not match the coordinates is refused, not read
+// out of its bounds.
+TEST(ForcesTest, ACovarianceOfTheWrongSizeIsInvalidInput) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  fp.coordinates = {{ParameterKey{Param::k_bz, ""}, {}}, {ParameterKey{Param::k_cz, ""}, {}}};
+  fp.covariance = Eigen::MatrixXd::Identity(1, 1);
+  ForcesResult r;
+  EstimateForces(RigidRingModel(), fp, Responses(fp.shared, kAll, 0.1, nullptr), ForcesOptions{}, &r);
+  EXPECT_TRUE(r.status.invalid_input()) << r.status.message;
+  EXPECT_NE(r.status.message.find("2 x 2"), std::string::npos) << r.status.message;
+}
+
 TEST(ResponseDatasetTest, TheShippedExampleIsTheSimulationItsReadmeDescribes) {
   ResponseDataset d;
   d.name = "car_tire_lug_response";
@@ -361,6 +374,54 @@ TEST(ForcesCommandTest, TheModelOfTheFitIsAskedForAndLugsNeedSpeeds) {
   r = Ringid("predict --parameters=" + set + " --effects=anisotropic_sidewall --lugs_per_revolution=20");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--lugs_per_revolution: needs --speeds"), std::string::npos) << r.err;
+}
+
+// simulate --lug_forces writes the axle's response to the forces given, at
+// the orders given; forces recovers them (to the noise asked for, 1e-6).
+// Zero speeds, a truth file and a misspelt force are refused with exit 2.
+TEST(ForcesCommandTest, SimulateWritesTheResponseToGivenLugForcesAndForcesRecoversThem) {
+  const std::string set = Scratch("lugs_set.json"), lugs = Scratch("lugs.json"),
+                    response = Scratch("lugs_response.json"), out = Scratch("lugs_forces.json");
+  std::ofstream(set) << ParameterSetToJson(ExampleCarTire(), "car", "example");
+  const std::string lug_forces = R"({"format": "ringid-lug-forces/1", "name": "tread",
+    "lugs_per_revolution": 20,
+    "orders": [{"order": 1, "forces": {"F_x": {"re": 300, "im": 0}, "F_z": {"re": 0, "im": 900},
+                                       "F_y": {"re": -150, "im": 50}}},
+               {"order": 3, "forces": {"F_z": {"re": 200, "im": -100}}}]})";
+  std::ofstream(lugs) << lug_forces;
+  const std::string base = "simulate --parameters=" + set + " --lug_forces=" + lugs;
+  RunResult r = Ringid(base + " --speeds=8,14 --response_noise=1e-6 --seed=3 --output=" + response);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("forces --parameters=" + set + " --dataset=" + response + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ForcesReport report;
+  std::string error;
+  ASSERT_TRUE(ReadReport(Json::parse(testing::ReadFile(out)), &report, &error)) << error;
+  const std::map<int, std::array<Complex, 3>> given = {
+      {1, {Complex(300, 0), Complex(0, 900), Complex(-150, 50)}}, {3, {0.0, Complex(200, -100), 0.0}}};
+  ASSERT_EQ(report.body.result.conditions.size(), 2u);
+  for (const ConditionForces& c : report.body.result.conditions) {
+    ASSERT_EQ(c.orders.size(), 2u) << c.name;  // orders 1 and 3 only
+    for (const OrderForces& o : c.orders) {
+      for (const auto& [f, e] : o.forces) {
+        const Complex truth = given.at(o.order)[static_cast<int>(f)];
+        EXPECT_LT(std::abs(e.value - truth), 1e-3 * 900) << c.name << " " << ToString(f);
+      }
+    }
+  }
+  r = Ringid(base + " --speeds=0,8 --output=" + Scratch("lugs_zero.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("a lug order exists only rolling"), std::string::npos) << r.err;
+  r = Ringid(base + " --speeds=8 --truth=" + Scratch("t.json") + " --output=" + Scratch("l2.json"));
+  EXPECT_EQ(r.status, 2);
+  std::string misspelt = lug_forces;
+  misspelt.replace(misspelt.find("\"F_y\""), 5, "\"F_q\"");
+  std::ofstream(lugs) << misspelt;
+  r = Ringid(base + " --speeds=8 --output=" + Scratch("l3.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(lugs + ": orders[0].forces.F_q: unknown force 'F_q'"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(testing::Exists(Scratch("l3.json")));
 }
 
 // A fit with the load per condition gives it to a response condition of the
