@@ -56,7 +56,11 @@ std::vector<LugForce> Determined(const Eigen::MatrixXcd& A, double limit,
   for (LugForce f : order) {
     const double norm = A.col(static_cast<int>(f)).norm();
     if (!(norm > strongest / limit)) {
-      (*undetermined)[f] = "no measured channel responds to it";
+      std::snprintf(why, sizeof why,
+                    "no measured channel responds to it (its weighted response below 1/%.3g of "
+                    "the strongest force's)",
+                    limit);
+      (*undetermined)[f] = why;
       continue;
     }
     std::vector<LugForce> with = kept;
