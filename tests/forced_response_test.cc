@@ -227,7 +227,8 @@ TEST(CampbellTest, CriticalSpeedsAreWhereALugOrderMeetsAModeAndNoneIsMissed) {
   for (const CriticalSpeed& c : found) {
     const double order_hz = LugOrderHz(c.order, lugs, p[P::r_e0], c.speed_m_s);
     EXPECT_NEAR(order_hz, c.frequency_hz, 1e-5 * c.frequency_hz) << ToString(c.label);
-    const Mode* m = model.Solve(p, c.speed_m_s).Find(c.label);
+    const ModalSolution there = model.Solve(p, c.speed_m_s);
+    const Mode* m = there.Find(c.label);
     ASSERT_NE(m, nullptr);
     EXPECT_NEAR(m->frequency_hz, c.frequency_hz, 1e-9 * c.frequency_hz);
   }
