@@ -29,6 +29,13 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
       SetArchiveError(why, error);
       return false;
     }
+    if (!report.body.result.status.ok()) {  // a failed fit's values are not an estimate
+      error->field = "status";
+      error->message = "the identification did not succeed (" +
+                       std::string(ToString(report.body.result.status.outcome)) + ": " +
+                       report.body.result.status.message + "); its values are no estimate";
+      return false;
+    }
     *fp = ForceParameters::From(report.body.result);
     return true;
   }

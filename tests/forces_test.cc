@@ -441,6 +441,15 @@ TEST(ForcesCommandTest, APerConditionValueComesFromTheFitsConditionOfThatName) {
   std::ofstream(data) << ResponseDatasetToJson(d);
   r = Ringid("forces --parameters=" + fit + " --dataset=" + data);
   EXPECT_EQ(r.status, 0) << r.err;
+  // The report of a fit that failed gives no forces.
+  Json failed = Json::parse(testing::ReadFile(fit));
+  failed["status"] = "failed";
+  const std::string failed_fit = Scratch("forces_loads_failed_fit.json");
+  std::ofstream(failed_fit) << failed.dump(2);
+  r = Ringid("forces --parameters=" + failed_fit + " --dataset=" + data);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(failed_fit + ": status: the identification did not succeed"), std::string::npos)
+      << r.err;
   d.conditions[0].name = "drum_5";
   std::ofstream(data) << ResponseDatasetToJson(d);
   r = Ringid("forces --parameters=" + fit + " --dataset=" + data);
