@@ -67,7 +67,7 @@ DEFINE_string(shard, "0/1", "campaign: I/N, analyse every N-th dataset from the 
 DEFINE_string(input, "", "a JSON report of ringid");
 DEFINE_string(figures_dir, "", "also write each figure as DIR/NAME.svg (the directory made if missing)");
 DEFINE_string(bounds, "", "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around the start");
-DEFINE_string(fix, "", "NAME,...: parameters held at their initial values");
+DEFINE_string(fix, "", "NAME,...: parameters held at their initial values (simulate: written known, at the truth)");
 DEFINE_string(effects, "", "EFFECT,...: effects of docs/conventions.md §4 to add to the model (diagnose: to its baseline; the others are tried on top)");
 DEFINE_double(level, ringid::DiagnoseOptions().effect_significance,
               "significance level of each effect's likelihood-ratio test and of the verdict's group (the default is Bonferroni-safe for six candidates)");
@@ -184,17 +184,28 @@ const Effect* EffectOwning(Param p) {
 // parameter comes from --set (the file of a tire need not know the effect); a
 // .tir's, from the key that would give it or, when a .tir cannot hold it,
 // from --set, and the others missing are named too.
-std::string MissingParameters(const std::string& source, const std::vector<Param>& missing) {
+std::string MissingParameters(const std::string& source, const std::vector<Param>& missing,
+                              const std::vector<std::string>& notes) {
   const Param q = missing[0];
   const std::string name = ParamName(q);
+  std::string reason;  // what reading the file said of it
+  for (const std::string& note : notes) {
+    if (note.rfind(name + " not derived: ", 0) == 0) reason = note.substr(name.size() + 14);
+  }
   if (const Effect* e = EffectOwning(q)) {
     return "--effects: " + std::string(e->name()) + " needs " + name + ": give --set=" + name +
            "=VALUE";
   }
   if (!IsTirPath(source)) return source + ": parameters." + name + ": missing (the model needs it)";
   const std::string key = TirKeyFor(q);
-  std::string line = source + ": " + name + ": missing (the model needs it; " +
-                     (key.empty() ? std::string("a .tir cannot hold it") : "the .tir has no " + key) +
+  if (reason.empty()) {
+    reason = key.empty() ? std::string("a .tir cannot hold it") : "the .tir has no " + key;
+  }
+  if (q == Param::I_ay) {
+    reason = "a .tir describes the tire, not the wheel: give the rim's own inertia (the tire's "
+             "IYY - BELT_IYY, where the file gives them, is added)";
+  }
+  std::string line = source + ": " + name + ": missing (the model needs it; " + reason +
                      "): give --set=" + name + "=VALUE";
   for (size_t i = 1; i < missing.size(); ++i) {
     line += (i == 1 ? "; also missing: " : ", ") + std::string(ParamName(missing[i]));
@@ -235,9 +246,7 @@ bool ParseBounds(Bounds* bounds, std::string* error) {
   return true;
 }
 
-// --fix=NAME,... applied to a loaded dataset.
-bool ApplyFix(Dataset* d, std::string* error) {
-  std::vector<Param> fixed;
+bool ParseFix(std::vector<Param>* fixed, std::string* error) {
   std::stringstream list(FLAGS_fix);
   for (std::string name; std::getline(list, name, ',');) {
     if (name.empty()) continue;
@@ -246,8 +255,15 @@ bool ApplyFix(Dataset* d, std::string* error) {
       *error = "--fix: " + UnknownName("parameter", name, NamesOf<Param>());
       return false;
     }
-    fixed.push_back(*p);
+    fixed->push_back(*p);
   }
+  return true;
+}
+
+// --fix=NAME,... applied to a loaded dataset.
+bool ApplyFix(Dataset* d, std::string* error) {
+  std::vector<Param> fixed;
+  if (!ParseFix(&fixed, error)) return false;
   if (!FixParameters(fixed, d, error)) {
     *error = "--" + *error;
     return false;

@@ -86,6 +86,8 @@ bool ParseEffects(std::vector<const Effect*>* effects, std::string* error);
 bool ParseSet(std::map<Param, double>* set, std::string* error);
 // --bounds=NAME:LO:HI,...
 bool ParseBounds(Bounds* bounds, std::string* error);
+// The parameters --fix=NAME,... names.
+bool ParseFix(std::vector<Param>* fixed, std::string* error);
 // --fix=NAME,... applied to a loaded dataset.
 bool ApplyFix(Dataset* d, std::string* error);
 // --NAME=X1,X2,...: finite numbers, each >= 0 (or > 0 when `positive`),
@@ -116,7 +118,8 @@ const Effect* EffectOwning(Param p);
 std::vector<Param> Missing(const RigidRingModel& model, const Parameters& p);
 // The one line for the parameters the model needs and neither `source` (a
 // parameter set, a dataset or a .tir) nor --set gives.
-std::string MissingParameters(const std::string& source, const std::vector<Param>& missing);
+std::string MissingParameters(const std::string& source, const std::vector<Param>& missing,
+                              const std::vector<std::string>& notes = {});
 // simulate: every effect of --effects has a size and every effect size in
 // --set has its effect in --effects.
 bool CheckEffectSizes(const std::vector<const Effect*>& effects,

@@ -40,7 +40,7 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
     return true;
   }
   *fp = ForceParameters{};
-  if (!LoadParameters(path, &fp->shared, error)) return false;
+  if (!LoadParameters(path, {}, &fp->shared, error)) return false;
   fp->source = "parameter set (values alone: std_total is std_measurement)";
   return true;
 }
@@ -65,12 +65,11 @@ int SimulateResponsesCommand(int argc, char** argv) {
     return Usage(error + " (a lug order exists only rolling)");
   }
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
-  LoadError load;
-  Parameters p;
-  if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
   std::map<Param, double> set;
   if (!ParseSet(&set, &error)) return Usage(error);
-  for (const auto& [q, v] : set) p[q] = v;
+  LoadError load;
+  Parameters p;
+  if (!LoadParameters(FLAGS_parameters, set, &p, &load)) return Usage(load.OneLine());
   LugForceSpectrum spectrum;
   if (!LoadLugForces(FLAGS_lug_forces, &spectrum, &load)) return Usage(load.OneLine());
   const RigidRingModel model(effects);

@@ -32,7 +32,8 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* bod
   }
   body->speeds.emplace();
   for (double v : speeds) {
-    SpeedModes at{v, {}};
+    SpeedModes at;
+    at.speed_m_s = v;
     for (const Mode& m : model.Solve(p, v).modes) at.modes[m.label] = {m.frequency_hz, m.damping_ratio};
     body->speeds->push_back(at);
   }
@@ -42,6 +43,22 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* bod
     body->critical_speeds = CriticalSpeeds(model, p, FLAGS_lugs_per_revolution, speeds);
   }
   return true;
+}
+
+// The modes of every condition of `d`, each with its per-condition values.
+std::vector<SpeedModes> ByCondition(const RigidRingModel& model, const Dataset& d,
+                                    const std::map<Param, double>& set) {
+  std::vector<SpeedModes> out;
+  for (size_t c = 0; c < d.conditions.size(); ++c) {
+    Parameters p = InitialParameters(d, static_cast<int>(c));
+    for (const auto& [q, v] : set) p[q] = v;
+    SpeedModes at{d.conditions[c].name, d.conditions[c].speed_m_s, {}};
+    for (const Mode& m : model.Solve(p, at.speed_m_s).modes) {
+      at.modes[m.label] = {m.frequency_hz, m.damping_ratio};
+    }
+    out.push_back(at);
+  }
+  return out;
 }
 
 }  // namespace
@@ -58,20 +75,23 @@ int Predict(int argc, char** argv) {
   if (!ParseSet(&set, &error)) return Usage(error);
   Parameters p;
   LoadError load;
+  std::vector<std::string> notes;
+  Dataset d;
   if (!FLAGS_parameters.empty()) {  // a .tir by its extension
-    if (!LoadParameters(FLAGS_parameters, &p, &load)) return Usage(load.OneLine());
+    if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes)) return Usage(load.OneLine());
   } else {
-    Dataset d;
     if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
     p = InitialParameters(d);
+    for (const auto& [q, v] : set) p[q] = v;
   }
-  for (const auto& [q, v] : set) p[q] = v;
   const RigidRingModel model(effects);
   const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
   const std::vector<Param> missing = Missing(model, p);
-  if (!missing.empty()) return Usage(MissingParameters(source, missing));
+  if (!missing.empty()) return Usage(MissingParameters(source, missing, notes));
   const ModalSolution s = model.Solve(p);
   PredictBody body = PredictBody::From(s);
+  if (!notes.empty()) body.parameter_notes = notes;
+  if (d.conditions.size() > 1) body.conditions = ByCondition(model, d, set);
   if (!AtSpeeds(model, p, &body, &error)) return Usage(error);
   if (!s.ok) std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
   else std::printf("%s", body.FullReport().c_str());

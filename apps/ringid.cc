@@ -159,6 +159,17 @@ int SimulateCommand(int argc, char** argv) {
   }
   std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
   Dataset d = PlanSimulation(truth, FLAGS_prior_spread, speeds, loads, &rng);
+  std::vector<Param> fixed;  // written known, at the truth
+  if (!ParseFix(&fixed, &error)) return Usage(error);
+  for (Param q : fixed) {
+    if (Info(q).group == Group::kEffect ||
+        std::find(d.per_condition.begin(), d.per_condition.end(), q) != d.per_condition.end()) {
+      return Usage("--fix: simulate writes " + std::string(ParamName(q)) + " known already");
+    }
+    d.known[q] = truth[q];
+    d.initial.erase(q);
+    d.ties.erase(q);
+  }
   d.name = std::filesystem::path(FLAGS_output).stem().string();
   d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
   SimulateOptions so;
@@ -313,11 +324,11 @@ int ExportCommand(int, char**) {
   Parameters p;
   LoadError load;
   Undetermined undetermined;  // from an identify report's or --save_parameters' classes
-  if (!LoadParameters(FLAGS_parameters, &p, &load, &undetermined)) return Usage(load.OneLine());
-  for (const auto& [q, v] : set) {
-    p[q] = v;
-    undetermined.erase(q);  // given by hand
+  std::vector<std::string> notes;
+  if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes, &undetermined)) {
+    return Usage(load.OneLine());
   }
+  for (const std::string& note : notes) std::fprintf(stderr, "ringid: %s\n", note.c_str());
   const std::string source =
       FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();
@@ -387,8 +398,8 @@ const std::vector<Command>& Commands() {
        "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
        {"parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
-        "damping_noise", "shape_noise", "prior_spread", "seed", "speeds", "loads", "lug_forces",
-        "response_noise"},
+        "damping_noise", "shape_noise", "prior_spread", "fix", "seed", "speeds", "loads",
+        "lug_forces", "response_noise"},
        SimulateCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"

@@ -189,6 +189,15 @@ Dataset PlanSimulation(const Parameters& truth, double prior_spread,
     d.per_condition = {Param::F_cz0};
   }
   if (d.conditions.size() > 1 || !loads.empty()) d.format = 2;
+  // Rolling, the data separate K_cx from sigma_cx (and K_cy from sigma_cy):
+  // the relaxation lengths are unknowns to fit, from the prior's spread.
+  if (std::any_of(speeds.begin(), speeds.end(), [](double v) { return v > 0; })) {
+    std::normal_distribution<double> normal(0, 1);
+    for (Param q : {Param::sigma_cx, Param::sigma_cy}) {
+      d.known.erase(q);
+      d.initial[q] = truth[q] * std::exp(prior_spread * normal(*rng));
+    }
+  }
   return d;
 }
 

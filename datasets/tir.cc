@@ -105,7 +105,8 @@ std::string LineField(int n) { return "line " + std::to_string(n); }
 
 class Parser {
  public:
-  Parser(const std::string& text, TirFile* file) : text_(text), file_(file) {}
+  Parser(const std::string& text, TirFile* file, const std::vector<std::string>* strict)
+      : text_(text), file_(file), strict_(strict) {}
 
   void Run() {
     size_t start = 0;
@@ -124,6 +125,14 @@ class Parser {
   }
 
  private:
+  // Whether `section` (as written) is read strictly.
+  bool Strict(const std::string& section) const {
+    if (!strict_ || section.empty()) return true;
+    return std::find(strict_->begin(), strict_->end(), Upper(section)) != strict_->end();
+  }
+
+  // A line; in a section not read strictly, what cannot be read skips the
+  // rest of the section with a note.
   void Line(const std::string& raw, int n) {
     for (const char c : raw) {
       if (c == '\0') Fail(LineField(n), "a NUL byte: not a text file");
@@ -131,6 +140,19 @@ class Parser {
         Fail(LineField(n), "a control character: not a text file");
       }
     }
+    const std::string head = Trim(raw);
+    if (skipping_ && (head.empty() || head[0] != '[')) return;
+    try {
+      Read(raw, n);
+    } catch (const Failure& f) {
+      if (Strict(section_) || skipping_) throw;
+      file_->notes.push_back(f.field + ": " + f.message + "; the rest of [" + section_ +
+                             "] is skipped (ringid does not read it)");
+      skipping_ = true;
+    }
+  }
+
+  void Read(const std::string& raw, int n) {
     // Where an unterminated quote is: the key of its line, if it has one.
     const std::string key = Trim(raw.substr(0, raw.find('=')));
     const std::string where = raw.find('=') != std::string::npos && ValidName(key) && !section_.empty()
@@ -174,13 +196,21 @@ class Parser {
   void Section(const std::string& line, int n) {
     const std::string name = HeaderName(line, ']', "section", n);
     const auto [it, fresh] = section_lines_.emplace(Upper(name), n);
-    if (!fresh) {
-      Fail("[" + name + "] (" + LineField(n) + ")",
-           "section appears twice (first on line " + std::to_string(it->second) + ")");
-    }
-    section_ = name;
+    skipping_ = false;
     subsection_.clear();
     table_ = nullptr;
+    if (!fresh) {
+      const std::string message =
+          "section appears twice (first on line " + std::to_string(it->second) + ")";
+      section_ = name;  // the failure is this section's
+      if (Strict(name)) Fail("[" + name + "] (" + LineField(n) + ")", message);
+      file_->notes.push_back("[" + name + "] (" + LineField(n) + "): " + message +
+                             "; the second is skipped (ringid does not read it)");
+      section_ = name;
+      skipping_ = true;
+      return;
+    }
+    section_ = name;
     file_->sections.push_back(name);
   }
 
@@ -277,6 +307,8 @@ class Parser {
   TirFile* file_;
   std::string section_, subsection_;
   TirTable* table_ = nullptr;  // the table whose rows follow, if any
+  const std::vector<std::string>* strict_;  // upper case; nullptr: every section
+  bool skipping_ = false;  // the rest of a lenient section that could not be read
   std::map<std::string, int> section_lines_, subsection_lines_, key_lines_;
 };
 
@@ -304,14 +336,14 @@ bool TirFile::HasSection(const std::string& section) const {
 }
 
 bool ParseTir(const std::string& text, const std::string& path, TirFile* file,
-              LoadError* error) {
+              LoadError* error, const std::vector<std::string>* strict_sections) {
   *file = TirFile{};
   file->path = path;
   error->file = path;
   error->field.clear();
   error->message.clear();
   try {
-    Parser(text, file).Run();
+    Parser(text, file, strict_sections).Run();
   } catch (const Failure& f) {
     error->field = f.field;
     error->message = f.message;
@@ -320,9 +352,11 @@ bool ParseTir(const std::string& text, const std::string& path, TirFile* file,
   return true;
 }
 
-bool LoadTir(const std::string& path, TirFile* file, LoadError* error) {
+bool LoadTir(const std::string& path, TirFile* file, LoadError* error,
+             const std::vector<std::string>* strict_sections) {
   std::string text;
-  return ReadInputFile(path, &text, error) && ParseTir(text, path, file, error);
+  return ReadInputFile(path, &text, error) &&
+         ParseTir(text, path, file, error, strict_sections);
 }
 
 std::string TirNumber(double v) {
@@ -338,6 +372,12 @@ std::string TirNumber(double v) {
     digits = std::max(digits, static_cast<int>(std::floor(std::log10(magnitude))) + 1);
   }
   std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+  return buffer;
+}
+
+std::string ShortNumber(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
   return buffer;
 }
 

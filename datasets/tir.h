@@ -13,7 +13,10 @@
 //                        header hold one number per column
 // Keys and section names are letters, digits and '_'; they are matched without
 // regard to case (tools write them in upper case), and a key appears at most
-// once in its (sub-)section, a section at most once in the file.
+// once in its (sub-)section, a section at most once in the file. Given the
+// sections a reader uses, the rest are read leniently: what cannot be read
+// there (a section given twice, rows without a {header}, quoted rows) skips
+// the rest of that section with a note.
 #ifndef RINGID_DATASETS_TIR_H_
 #define RINGID_DATASETS_TIR_H_
 
@@ -50,6 +53,9 @@ struct TirFile {
   std::vector<std::string> sections;  // as written, in file order
   std::vector<TirEntry> entries;      // in file order
   std::vector<TirTable> tables;
+  // What lenient reading skipped: "[SHAPE] (line 71): cannot read ...; the
+  // rest of [SHAPE] is skipped (ringid does not read it)".
+  std::vector<std::string> notes;
 
   // The entry KEY of [SECTION] (outside any sub-section), matched without
   // regard to case; nullptr when absent.
@@ -59,15 +65,19 @@ struct TirFile {
 
 // Parses .tir text; `path` only names it in messages. On failure returns false
 // with `error` set (field: "[SECTION] KEY (line N)" or "line N") and `file`
-// unspecified.
+// unspecified. `strict_sections` (upper case): the sections read strictly,
+// the others leniently; nullptr: every section strictly.
 bool ParseTir(const std::string& text, const std::string& path, TirFile* file,
-              LoadError* error);
+              LoadError* error, const std::vector<std::string>* strict_sections = nullptr);
 // Reads (at most kMaxFileBytes) and parses a .tir file.
-bool LoadTir(const std::string& path, TirFile* file, LoadError* error);
+bool LoadTir(const std::string& path, TirFile* file, LoadError* error,
+             const std::vector<std::string>* strict_sections = nullptr);
 
 // The shortest decimal text that reads back as exactly `v` (at most 17
 // significant digits), as .tir values are written.
 std::string TirNumber(double v);
+// `v` to six significant digits, as messages and notes give a value.
+std::string ShortNumber(double v);
 
 }  // namespace ringid
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <set>
 
+#include "datasets/tir_contact.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -30,8 +31,11 @@ double Damper(double zeta, double k, double m) { return 2 * zeta * std::sqrt(k) 
 
 const std::vector<TirUnit>& TirUnits() {
   static const std::vector<TirUnit> units = {
-      {"LENGTH", "meter", true}, {"FORCE", "newton", true}, {"ANGLE", "radians", false},
-      {"MASS", "kg", true},      {"TIME", "second", true},
+      {"LENGTH", "meter", {"metre", "m"}, true},
+      {"FORCE", "newton", {"n"}, true},
+      {"ANGLE", "radians", {"radian", "rad"}, false},
+      {"MASS", "kg", {"kilogram"}, true},
+      {"TIME", "second", {"seconds", "sec", "s"}, true},
   };
   return units;
 }
@@ -55,7 +59,8 @@ const std::vector<TirField>& TirFields() {  // size-check: data table
        [](double v, Parameters* p) { (*p)[P::I_by] = v; }},
       {"STRUCTURAL", "LONGITUDINAL_STIFFNESS", "N/m", "Tyre overall longitudinal stiffness",
        "1 / (1/k_bx + r_e0^2/k_btheta + sigma_cx/K_cx)",
-       "not read: with r_e0 it gives only K_cx/sigma_cx; give K_cx, sigma_cx and r_e0 with --set",
+       "with a full file (docs/tir.md): sigma_cx = K_cx (1/C_x - 1/k_bx - r_e0^2/k_btheta), C_x "
+       "this at F_cz0; else not read (it gives only K_cx/sigma_cx)",
        "the static force on the hub per unit longitudinal hub displacement, wheel locked "
        "(theta_a held), standing on the road: the sidewall k_bx, the sidewall torsion k_btheta "
        "through r_e0 and the contact K_cx/sigma_cx in series (the standing K of eq. (12))",
@@ -67,8 +72,8 @@ const std::vector<TirField>& TirFields() {  // size-check: data table
        nullptr},
       {"STRUCTURAL", "LATERAL_STIFFNESS", "N/m", "Tyre overall lateral stiffness",
        "1 / (1/k_by + r_l0^2/(k_bgamma + r_l0 F_cz0) + sigma_cy/K_cy)",
-       "not read: with r_l0 and F_cz0 it gives only K_cy/sigma_cy; give K_cy, sigma_cy, r_l0 and "
-       "F_cz0 with --set",
+       "with a full file (docs/tir.md): sigma_cy = K_cy (1/C_y - 1/k_by - r_l0^2/(k_bgamma + r_l0 "
+       "F_cz0)), C_y this at F_cz0; else not read (it gives only K_cy/sigma_cy)",
        "the static force on the hub per unit lateral hub displacement, standing on the road at "
        "the load F_cz0: the sidewall k_by, the belt camber k_bgamma + r_l0 F_cz0 through r_l0 "
        "and the contact K_cy/sigma_cy in series (the standing S of eq. (15); the belt yaws but "
@@ -147,7 +152,7 @@ const std::vector<TirField>& TirFields() {  // size-check: data table
       {"VERTICAL", "VERTICAL_STIFFNESS", "N/m", "Tyre vertical stiffness",
        "1 / (1/k_bz + 1/k_cz)",
        "k_cz = 1 / (1/VERTICAL_STIFFNESS - 1/k_bz), k_bz from FREQ_LONG; so it must be below "
-       "k_bz",
+       "k_bz. With a full file, VERTICAL_STIFFNESS is the vertical law's at F_cz0 (docs/tir.md)",
        "the static stiffness from hub to road: the load passes the sidewall k_bz (hub to belt) "
        "and then the contact's residual stiffness k_cz (belt to road), in series. Not k_bz + "
        "k_cz, which is the vertical mode's stiffness with the hub held",
@@ -165,7 +170,8 @@ const std::vector<TirNotWritten>& TirKeysNotWritten() {
        "hold"},
       {"VERTICAL", "FNOMIN",
        "the reference load of the Magic Formula coefficients, which ringid does not have; the "
-       "values written are at the parameter set's F_cz0, which the header names"},
+       "values written are at the parameter set's F_cz0, which the header names (read, with the "
+       "Magic Formula, from a full file)"},
       {"VERTICAL", "VERTICAL_DAMPING",
        "the model's contact has no damper (c_bz, the sidewall's, is in DAMP_LONG)"},
       {"STRUCTURAL", "YAW_STIFFNESS",
@@ -416,6 +422,15 @@ bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error) {
     error->message = message;
     return false;
   };
+  if (!file.Find("INERTIA", "BELT_MASS") && !file.Find("STRUCTURAL", "FREQ_LONG")) {
+    return fail("[INERTIA] BELT_MASS",
+                "missing, and [STRUCTURAL] FREQ_LONG too: the file has no rigid-ring (MF-Swift "
+                "belt) block, and ringid reads its model from that block" +
+                std::string(std::any_of(file.entries.begin(), file.entries.end(),
+                                        [](const TirEntry& e) { return Upper(e.key) == "MBELT"; })
+                                ? " (MBELT is PAC2002's belt mass, not a rigid ring)"
+                                : ""));
+  }
   if (!file.HasSection("UNITS")) {
     return fail("[UNITS]", "missing: ringid reads SI .tir files only, and needs them to say so");
   }
@@ -425,7 +440,9 @@ bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error) {
       if (u.required) return fail(std::string("[UNITS] ") + u.key, std::string("missing (ringid reads SI .tir files only: '") + u.si + "')");
       continue;
     }
-    if (e->number || Upper(e->text) != Upper(u.si)) {
+    bool si = !e->number && Upper(e->text) == Upper(u.si);
+    for (const char* spelling : u.also) si = si || (!e->number && Upper(e->text) == Upper(spelling));
+    if (!si) {
       return fail(e->Where(), std::string("must be '") + u.si + "' (ringid reads SI .tir files only)");
     }
   }
@@ -458,12 +475,73 @@ bool IsTirPath(const std::string& path) {
   return Upper(std::filesystem::path(path).extension().string()) == ".TIR";
 }
 
-bool LoadParameters(const std::string& path, Parameters* p, LoadError* error,
+namespace {
+
+// The rim's inertia: `rim` (the wheel's own, given by hand) and the tire's
+// part off the belt, IYY - BELT_IYY, where the file gives both.
+bool RimInertia(const TirFile& file, double rim, Parameters* p, std::vector<std::string>* notes,
+                LoadError* error) {
+  const TirEntry* whole = file.Find("INERTIA", "IYY");
+  const TirEntry* belt = file.Find("INERTIA", "BELT_IYY");
+  if (!whole || !belt || !whole->number || !belt->number) {
+    notes->push_back("I_ay = " + ShortNumber(rim) + " kg m^2 as given (the file has no [INERTIA] "
+                     "IYY and BELT_IYY for the tire's share)");
+    (*p)[Param::I_ay] = rim;
+    return true;
+  }
+  const double share = *whole->number - *belt->number;
+  if (!(share >= 0)) {
+    error->field = whole->Where();
+    error->message = "IYY = " + TirNumber(*whole->number) + " is below BELT_IYY = " +
+                     TirNumber(*belt->number) + ": the tire's inertia must hold its belt's";
+    return false;
+  }
+  (*p)[Param::I_ay] = rim + share;
+  notes->push_back("I_ay = " + ShortNumber(rim + share) + " kg m^2: the rim's " +
+                   ShortNumber(rim) + " given, plus the tire's part off the belt, IYY - BELT_IYY = " +
+                   ShortNumber(share) + " (a .tir describes the tire, not the wheel)");
+  return true;
+}
+
+}  // namespace
+
+bool LoadParameters(const std::string& path, const std::map<Param, double>& set, Parameters* p,
+                    LoadError* error, std::vector<std::string>* notes,
                     Undetermined* undetermined) {
-  if (!IsTirPath(path)) return LoadParameterSet(path, p, error, undetermined);
+  std::vector<std::string> ignored;
+  if (!notes) notes = &ignored;
+  notes->clear();
+  if (!IsTirPath(path)) {
+    if (!LoadParameterSet(path, p, error, undetermined)) return false;
+    for (const auto& [q, v] : set) {
+      (*p)[q] = v;
+      if (undetermined) undetermined->erase(q);  // given by hand
+    }
+    return true;
+  }
   if (undetermined) undetermined->clear();
   TirFile file;
-  if (!LoadTir(path, &file, error) || !TirToParameters(file, p, error)) return false;
+  if (!LoadTir(path, &file, error, &TirSectionsRead()) || !TirToParameters(file, p, error)) {
+    return false;
+  }
+  *notes = file.notes;
+  TirContact contact;
+  if (!DeriveTirContact(file, *p, set, &contact, error)) return false;
+  for (const auto& [q, v] : set) (*p)[q] = v;
+  for (const TirDerived& d : contact.derived) {
+    (*p)[d.parameter] = d.value;
+    notes->push_back(std::string(ParamName(d.parameter)) + " = " + ShortNumber(d.value) + " " +
+                     Info(d.parameter).unit + " from " + d.from);
+  }
+  if (!contact.version.empty() && !contact.derived.empty()) {
+    notes->insert(notes->begin() + file.notes.size(),
+                  "contact values of MF " + contact.version + " at F_cz0 = " +
+                      ShortNumber(contact.load) + " N, zero slip, camber and speed, the file's "
+                      "inflation pressure");
+  }
+  notes->insert(notes->end(), contact.notes.begin(), contact.notes.end());
+  const auto rim = set.find(Param::I_ay);
+  if (rim != set.end() && !RimInertia(file, rim->second, p, notes, error)) return false;
   for (int i = 0; i < kNumParams; ++i) {  // what the keys give, against physics
     const Param q = ParamAt(i);
     const std::string problem = p->IsSet(q) ? ParameterValueProblem(q, (*p)[q]) : "";
@@ -485,9 +563,15 @@ std::string TirMappingMarkdown() {
     md += std::string(&u == &TirUnits().front() ? " " : ", ") + "`" + u.key + " = '" + u.si + "'`";
     if (u.required) required += (required.empty() ? "" : ", ") + std::string(u.key);
   }
+  std::string spellings;
+  for (const TirUnit& u : TirUnits()) {
+    for (const char* also : u.also) {
+      spellings += (spellings.empty() ? "" : ", ") + std::string("`'") + also + "'`";
+    }
+  }
   md += ". A file read must give " + required +
-        " with these values (without regard to case), and ANGLE, where it gives it: ringid "
-        "reads SI files only.\n\n";
+        " with these values or another spelling of them (" + spellings +
+        "; without regard to case), and ANGLE, where it gives it: ringid reads SI files only.\n\n";
   md += "| section | key | unit | meaning (MF-Swift) | written from | read back as | assumption | "
         "needed to read |\n";
   md += "| --- | --- | --- | --- | --- | --- | --- | --- |\n";

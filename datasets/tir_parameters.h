@@ -7,6 +7,7 @@
 #ifndef RINGID_DATASETS_TIR_PARAMETERS_H_
 #define RINGID_DATASETS_TIR_PARAMETERS_H_
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,12 @@
 namespace ringid {
 
 // A key of [UNITS]: written with its SI value, and a file read must give that
-// value (without regard to case) where it gives the key.
+// value or another spelling of it (without regard to case) where it gives the key.
 struct TirUnit {
   const char* key;
   const char* si;
-  bool required;  // reading refuses a file without it
+  std::vector<const char*> also;  // other spellings of the SI unit read
+  bool required;                  // reading refuses a file without it
 };
 const std::vector<TirUnit>& TirUnits();
 
@@ -71,17 +73,23 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
 
 // The parameters the rigid-ring part of `file` determines (TirFields' `sets`);
 // every other parameter is left unset. Sections and keys it does not use are
-// ignored. False with `error` naming the key on a missing required key, a
-// unit that is not SI, a value that is not a positive number, or one whose
-// parameters would not be positive finite numbers.
+// ignored. False with `error` naming the key on a file without a belt block
+// (said first), a missing required key, a unit that is not SI, a value that is
+// not a positive number, or one whose parameters would not be positive
+// finite numbers.
 bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error);
 
 // Whether `path` names a .tir file (its extension, without regard to case).
 bool IsTirPath(const std::string& path);
-// A parameter set from `path`: a .tir (IsTirPath) through TirToParameters,
-// anything else as ringid-parameters/1 JSON (LoadParameterSet).
-// With `undetermined`, as LoadParameterSet; a .tir says nothing of it.
-bool LoadParameters(const std::string& path, Parameters* p, LoadError* error,
+// A parameter set from `path` with the values `set` gives by hand applied:
+// a .tir (IsTirPath) through TirToParameters and, from a full file, the
+// contact values (DeriveTirContact, at set's F_cz0 or FNOMIN); set's I_ay is
+// then the rim's own, and the tire's IYY - BELT_IYY is added. Anything else
+// as ringid-parameters/1 JSON (LoadParameterSet). `notes` gets where values
+// came from and what holds only at the nominal load. With `undetermined`, as
+// LoadParameterSet less what `set` gives; a .tir says nothing of it.
+bool LoadParameters(const std::string& path, const std::map<Param, double>& set, Parameters* p,
+                    LoadError* error, std::vector<std::string>* notes = nullptr,
                     Undetermined* undetermined = nullptr);
 
 // docs/tir.md's generated part: the mapping table, the keys not written and

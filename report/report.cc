@@ -122,6 +122,10 @@ PredictBody PredictBody::From(const ModalSolution& solution) {
 std::string PredictBody::FullReport() const {
   std::string text;
   char line[160];
+  for (const std::string& note : parameter_notes.value_or(std::vector<std::string>{})) {
+    text += "parameters: " + note + "\n";
+  }
+  if (parameter_notes && !parameter_notes->empty()) text += "\n";
   std::snprintf(line, sizeof line, "%-22s %-13s %10s %8s\n", "mode", "plane", "Hz", "zeta");
   text += line;
   for (const PredictedMode& m : modes) {
@@ -133,17 +137,18 @@ std::string PredictBody::FullReport() const {
     std::snprintf(line, sizeof line, "%-22s overdamped: no oscillating mode\n", LabelName(l));
     text += line;
   }
-  if (speeds) {
-    text += "\nmodes by speed (Hz):\n";
-    std::snprintf(line, sizeof line, "%8s", "m/s");
+  const auto table = [&](const std::vector<SpeedModes>& rows, const char* title, bool named) {
+    text += title;
+    std::snprintf(line, sizeof line, named ? "%-12s %8s" : "%8s", named ? "condition" : "m/s", "m/s");
     text += line;
     for (const PredictedMode& m : modes) {
       std::snprintf(line, sizeof line, " %10.10s", LabelName(m.label));
       text += line;
     }
     text += "\n";
-    for (const SpeedModes& s : *speeds) {
-      std::snprintf(line, sizeof line, "%8.3g", s.speed_m_s);
+    for (const SpeedModes& s : rows) {
+      if (named) std::snprintf(line, sizeof line, "%-12.12s %8.3g", s.condition.value_or("").c_str(), s.speed_m_s);
+      else std::snprintf(line, sizeof line, "%8.3g", s.speed_m_s);
       text += line;
       for (const PredictedMode& m : modes) {
         const auto it = s.modes.find(m.label);
@@ -153,7 +158,9 @@ std::string PredictBody::FullReport() const {
       }
       text += "\n";
     }
-  }
+  };
+  if (conditions) table(*conditions, "\nmodes by condition (Hz):\n", true);
+  if (speeds) table(*speeds, "\nmodes by speed (Hz):\n", false);
   if (critical_speeds) {
     std::snprintf(line, sizeof line, "\ncritical speeds (%d lugs per revolution):\n",
                   lugs_per_revolution.value_or(0));

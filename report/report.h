@@ -112,11 +112,13 @@ struct PredictedMode {
 
 // The modes rolling at one speed (predict --speeds).
 struct SpeedModes {
+  std::optional<std::string> condition;  // a dataset's condition, by name
   double speed_m_s = 0;
   std::map<ModeLabel, std::pair<double, double>> modes;  // label -> (Hz, damping ratio)
 
   template <class Archive>
   void Serialize(Archive* a) {
+    a->VisitIfSet("condition", &condition);
     a->Visit("speed_m_s", &speed_m_s);
     a->Visit("modes", &modes);
   }
@@ -132,6 +134,11 @@ struct PredictBody {
   std::optional<int> lugs_per_revolution;
   std::optional<double> r_e0;  // the orders' slope: k lugs V / (2 pi r_e0)
   std::optional<std::vector<CriticalSpeed>> critical_speeds;
+  // With --dataset of several conditions: the modes of each (`modes` are the
+  // first's).
+  std::optional<std::vector<SpeedModes>> conditions;
+  // Where the parameters came from: a .tir's derived values and warnings.
+  std::optional<std::vector<std::string>> parameter_notes;
 
   static PredictBody From(const ModalSolution& solution);
   // The modes as a table (mode, plane, Hz, zeta) and the overdamped labels;
@@ -146,6 +153,8 @@ struct PredictBody {
     a->VisitIfSet("lugs_per_revolution", &lugs_per_revolution);
     a->VisitIfSet("r_e0", &r_e0);
     a->VisitIfSet("critical_speeds", &critical_speeds);
+    a->VisitIfSet("conditions", &conditions);
+    a->VisitIfSet("parameter_notes", &parameter_notes);
   }
 };
 

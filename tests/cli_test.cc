@@ -26,6 +26,7 @@
 #include "datasets/synthetic.h"
 #include "datasets/tir.h"
 #include "datasets/tir_parameters.h"
+#include "model/rigid_ring_model.h"
 #include "model/spelling.h"
 #include "tests/test_support.h"
 
@@ -345,6 +346,53 @@ TEST(CliTest, SimulateAtSeveralSpeedsWritesFormat2ThatIdentifies) {
     ++per_condition[m["condition"].get<std::string>()];
   }
   EXPECT_EQ(per_condition, (std::map<std::string, int>{{"standing", 7}, {"drum_6", 7}, {"drum_12", 7}}));
+  // Rolling data separate K from sigma: simulate writes the relaxation
+  // lengths as unknowns, and the fit finds them near the truth.
+  const ringid::Parameters truth = ringid::ExampleCarTire();
+  for (const char* sigma : {"sigma_cx", "sigma_cy"}) {
+    EXPECT_FALSE(d["known"].contains(sigma)) << sigma;
+    ASSERT_TRUE(d["initial"].contains(sigma)) << sigma;
+    const auto& fitted = j["parameters"][sigma];
+    EXPECT_EQ(fitted["identifiable"], "yes") << fitted.dump();
+    const double truth_value = truth[*ringid::ParseParam(sigma)];
+    EXPECT_LT(std::abs(fitted["value"].get<double>() - truth_value),
+              4 * fitted["std"].get<double>()) << fitted.dump();
+  }
+  // Asked, it writes them known at the truth.
+  const nlohmann::json fixed = LoadJson(SimulateCarTire("rolling_fixed.json", "--speeds=0,6 --fix=sigma_cx,sigma_cy"));
+  EXPECT_EQ(fixed["known"]["sigma_cx"].get<double>(), truth[ringid::Param::sigma_cx]);
+  EXPECT_FALSE(fixed["initial"].contains("sigma_cy"));
+}
+
+// predict --dataset of several conditions gives each condition's modes: the
+// model at the condition's speed, the slip damping growing with speed.
+TEST(CliTest, PredictOnAFormat2DatasetGivesTheModesOfEveryCondition) {
+  const std::string rolling = Source("datasets/examples/car_tire_rolling.json");
+  const std::string out = Scratch("predict_conditions.json");
+  std::remove(out.c_str());
+  const RunResult r = Ringid("predict --dataset=" + rolling + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("modes by condition"), std::string::npos) << r.out;
+  const nlohmann::json j = LoadJson(out);
+  ASSERT_EQ(j["conditions"].size(), 3u) << j.dump();
+  ringid::Dataset d;
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadDataset(rolling, &d, &e)) << e.OneLine();
+  for (int c = 0; c < 3; ++c) {
+    const nlohmann::json& at = j["conditions"][c];
+    EXPECT_EQ(at["condition"], d.conditions[c].name);
+    EXPECT_EQ(at["speed_m_s"].get<double>(), d.conditions[c].speed_m_s);
+    const ringid::ModalSolution s =
+        ringid::RigidRingModel().Solve(ringid::InitialParameters(d, c), d.conditions[c].speed_m_s);
+    ASSERT_TRUE(s.ok);
+    EXPECT_EQ(at["modes"].size(), s.modes.size());
+    for (const ringid::Mode& m : s.modes) {
+      const nlohmann::json& mode = at["modes"][ringid::LabelName(m.label)];
+      EXPECT_NEAR(mode[0].get<double>(), m.frequency_hz, 1e-9) << ringid::LabelName(m.label);
+    }
+  }
+  const auto zeta = [&](int c) { return j["conditions"][c]["modes"]["longitudinal"][1].get<double>(); };
+  EXPECT_GT(zeta(2), 3 * zeta(0));  // 12 m/s against standing
 }
 
 TEST(CliTest, Format2DatasetThroughIdentifiabilityCompareAndReport) {
@@ -536,7 +584,7 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
   ASSERT_EQ(expected.size(), 7u);
   for (const std::string& file : {tir, Source("datasets/examples/tno_205_60R15_belt.tir")}) {
     ringid::Parameters from_tir;
-    ASSERT_TRUE(ringid::LoadParameters(file, &from_tir, &e)) << e.OneLine();
+    ASSERT_TRUE(ringid::LoadParameters(file, {}, &from_tir, &e)) << e.OneLine();
     const auto modes = PredictedModes("--parameters=" + file + " " + SetTheRest(from_tir, full));
     ASSERT_EQ(modes.size(), 7u) << file;
     for (const auto& [label, m] : expected) {
@@ -641,7 +689,7 @@ TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
   const std::string out = dir + "never_written.tir";
   ringid::Parameters all_but_c_bx;  // the TNO belt and c_bx: --set gives the rest but c_bx
   ringid::LoadError e;
-  ASSERT_TRUE(ringid::LoadParameters(tno, &all_but_c_bx, &e)) << e.OneLine();
+  ASSERT_TRUE(ringid::LoadParameters(tno, {}, &all_but_c_bx, &e)) << e.OneLine();
   all_but_c_bx[ringid::Param::c_bx] = 1;
   const std::pair<std::string, std::string> cases[] = {
       {"export --parameters=" + no_lat + " --format=json", "no_lat.tir: [STRUCTURAL] FREQ_LAT: missing"},
@@ -650,7 +698,9 @@ TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
       {"export --parameters=" + syntax + " --format=tir",
        "syntax.tir: [INERTIA] BELT_MASS (line 21): not a number"},
       {"predict --parameters=" + tno, "tno_205_60R15_belt.tir: I_ay: missing (the model needs it; "
-                                      "a .tir cannot hold it): give --set=I_ay=VALUE; also missing: F_cz0"},
+                                      "a .tir describes the tire, not the wheel: give the rim's own "
+                                      "inertia (the tire's IYY - BELT_IYY, where the file gives them, "
+                                      "is added)): give --set=I_ay=VALUE; also missing: F_cz0"},
       {"predict --parameters=" + tno + " " + SetTheRest(all_but_c_bx, ringid::ExampleCarTire()),
        "c_bx: missing (the model needs it; the .tir has no [STRUCTURAL] DAMP_LONG): give --set=c_bx=VALUE"},
       {"predict --parameters=/nonexistent.tir", "/nonexistent.tir: cannot open file"},

@@ -89,10 +89,27 @@ void PredictPage(const PredictReport& report, Page* page) {
     rows.push_back({NameCell(m.label), NameCell(LabelPlane(m.label)), NumberCell(m.model_hz, "%.3f"),
                     NumberCell(m.damping_ratio), NumberCell(m.label_energy_share, "%.3f")});
   }
+  if (r.parameter_notes && !r.parameter_notes->empty()) {
+    page->Heading("Where the parameters came from");
+    for (const std::string& note : *r.parameter_notes) page->Note(note);
+  }
   page->TableSection(
       "Modes",
       {"mode", "plane", "frequency (Hz)", "damping ratio", "energy share of the label's element"},
       rows);
+  if (r.conditions) {
+    std::vector<Row> by_condition;
+    for (const SpeedModes& c : *r.conditions) {
+      for (const auto& [label, mode] : c.modes) {
+        by_condition.push_back({TextCell(c.condition.value_or("")), NumberCell(c.speed_m_s, "%.3g"),
+                                NameCell(label), NumberCell(mode.first, "%.3f"),
+                                NumberCell(mode.second)});
+      }
+    }
+    page->TableSection("Modes by condition",
+                       {"condition", "speed (m/s)", "mode", "frequency (Hz)", "damping ratio"},
+                       by_condition);
+  }
   Campbell(r, page);
   std::vector<Row> critical;
   for (const CriticalSpeed& c : r.critical_speeds.value_or(std::vector<CriticalSpeed>{})) {
