@@ -50,6 +50,8 @@ DEFINE_double(prior_spread, 0.1, "log-normal spread of the dataset's initial val
 DEFINE_string(speeds, "0", "V1,V2,...: speeds in m/s (>= 0); simulate: one condition each (0: standing, else drum_V); predict: the modes at each (a Campbell diagram)");
 DEFINE_string(loads, "", "F1,F2,...: loads F_cz0 in N (> 0); the conditions are then speeds x loads");
 DEFINE_string(suite, "", "the validation suite to run");
+DEFINE_string(uff, "", "import: a Universal File Format file of a modal test (datasets 55, 58/58b, 15, 18, 82, 151, 164)");
+DEFINE_string(map, "", "import: a UFF map (ringid-uff-map/1): each node and direction a degree of freedom, modes to labels");
 DEFINE_string(lug_forces, "",
               "simulate: a lug-force file (ringid-lug-forces/1); writes the axle's response to "
               "those forces at --speeds, a response dataset (ringid-lug-response/1)");

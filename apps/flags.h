@@ -49,6 +49,8 @@ DECLARE_string(suite);
 DECLARE_int32(replicates);
 DECLARE_int32(lugs_per_revolution);
 DECLARE_string(lug_forces);
+DECLARE_string(uff);
+DECLARE_string(map);
 DECLARE_double(response_noise);
 DECLARE_string(markdown);
 DECLARE_string(output_dir);

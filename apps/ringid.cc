@@ -20,6 +20,7 @@
 #include "apps/data_dir.h"
 #include "apps/flags.h"
 #include "apps/forces_command.h"
+#include "apps/import_command.h"
 #include "apps/predict_command.h"
 #include "apps/html_report.h"
 #include "apps/interrupt.h"
@@ -421,6 +422,10 @@ const std::vector<Command>& Commands() {
        "the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 JSON;\n"
        "what maps to what and what a .tir cannot hold: docs/tir.md",
        {"parameters", "set", "format", "output"}, ExportCommand},
+      {"import", "--uff=FILE [--map=FILE --output=DATASET]",
+       "a test lab's UFF modes (dataset 55) as a dataset, by a map of nodes to\n"
+       "degrees of freedom; without --map, what the file holds (docs/uff.md)",
+       {"uff", "map", "parameters", "set", "output"}, ImportCommand},
       {"forces", "--parameters=FILE --dataset=FILE",
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"

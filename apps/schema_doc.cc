@@ -3,6 +3,7 @@
 #include "datasets/dataset_file.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
+#include "datasets/uff_dataset.h"
 #include "report/report.h"
 #include "report/schema.h"
 #include "validation/suites.h"
@@ -68,7 +69,12 @@ std::string InputsMarkdown() {
          InputSchema(ResponseDatasetFields{}) + "\n" +
          "## Lug forces (`" + kLugForcesFormat + "`)\n\nRead by `simulate --lug_forces`: the lug "
          "forces whose axle response it writes, per order the complex amplitude of `F_x`,\n"
-         "`F_z` and `F_y` (N; a force left out is 0).\n\n" + InputSchema(LugForcesFields{});
+         "`F_z` and `F_y` (N; a force left out is 0).\n\n" + InputSchema(LugForcesFields{}) + "\n" +
+         "## UFF map (`" + kUffMapFormat + "`)\n\nRead by `import --map` ([uff.md](uff.md)): "
+         "each channel a UFF node's direction (1..3 x, y, z; 4..6\nrotations; negative: the "
+         "opposite sense) as a degree of freedom, with a sign; the\nlabels of modes the user "
+         "knows, by dataset 55's mode number; the parameters of\n`--parameters` written `known` "
+         "(the rest `initial`).\n\n" + InputSchema(UffMapFields{});
 }
 
 }  // namespace ringid

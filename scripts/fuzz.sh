@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-targets=${*:-dataset model identify tir forces}
+targets=${*:-dataset model identify tir forces uff}
 bash scripts/install_deps.sh clang libclang-rt-14-dev
 # Debian's Ceres is a static library built without sanitizers. Eigen drops its
 # "glibc malloc is aligned" assumption under ASan, so without this define our
@@ -28,7 +28,7 @@ flags+=" -fsanitize-coverage-ignorelist=$PWD/tests/fuzz/coverage_ignorelist.txt"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRINGID_BUILD_TESTS=OFF -DRINGID_BUILD_BENCHMARKS=OFF -DRINGID_BUILD_FUZZERS=ON \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$sanitizers" > /dev/null
-cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer
+cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer uff_fuzzer
 export ASAN_OPTIONS=detect_leaks=1
 for target in $targets; do
   work=$build/corpus-$target
@@ -36,6 +36,7 @@ for target in $targets; do
   cp tests/fuzz/corpus/$target/* "$work"/ 2>/dev/null || true
   [ "$target" = dataset ] && cp datasets/paper/*.json "$work"/
   [ "$target" = tir ] && cp datasets/examples/*.tir "$work"/
+  [ "$target" = uff ] && cp datasets/examples/*.uff "$work"/
   echo "fuzzing $target for ${seconds}s" >&2
   # The last status line carries the executions reached over all workers.
   log=$build/fuzz-$target.log

@@ -907,7 +907,7 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
                    "predict, identify, identifiability, compare, simulate, diagnose, bench, "
-                   "report, export, forces, schema, inputs or reference); see 'ringid help'\n");
+                   "report, export, import, forces, schema, inputs or reference); see 'ringid help'\n");
 }
 
 TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {

@@ -1,0 +1,244 @@
+#include "datasets/uff_dataset.h"
+
+#include <cmath>
+#include <complex>
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+#include "datasets/measurement.h"
+#include "model/assignment.h"
+#include "model/rigid_ring_model.h"
+#include "model/spelling.h"
+
+namespace ringid {
+namespace {
+
+bool Fail(LoadError* error, const std::string& field, const std::string& message) {
+  error->field = field;
+  error->message = message;
+  return false;
+}
+
+bool CheckMap(const UffMapFields& j, UffMap* map, LoadError* error) {
+  if (j.format != kUffMapFormat) {
+    return Fail(error, "format", std::string("must be \"") + kUffMapFormat + "\"");
+  }
+  if (j.name.empty()) return Fail(error, "name", "must not be empty");
+  map->name = j.name;
+  map->description = j.description.value_or("");
+  if (j.channels.empty()) return Fail(error, "channels", "must name at least one channel");
+  std::set<std::pair<int, int>> seen;
+  for (size_t i = 0; i < j.channels.size(); ++i) {
+    const UffChannelFields& c = j.channels[i];
+    const std::string at = "channels[" + std::to_string(i) + "]";
+    if (c.node <= 0) return Fail(error, at + ".node", "must be a positive node label");
+    if (std::abs(c.direction) < 1 || std::abs(c.direction) > 6) {
+      return Fail(error, at + ".direction", "must be 1..6 (x, y, z; rotations about them)");
+    }
+    if (!seen.insert({c.node, std::abs(c.direction)}).second) {
+      return Fail(error, at, "node " + std::to_string(c.node) + " direction " +
+                                 std::to_string(std::abs(c.direction)) + " is mapped twice");
+    }
+    const std::optional<Dof> dof = ParseDof(c.dof);
+    if (!dof) return Fail(error, at + ".dof", UnknownName("degree of freedom", c.dof, NamesOf<Dof>()));
+    const double sign = c.sign.value_or(1);
+    if (sign != 1 && sign != -1) return Fail(error, at + ".sign", "must be 1 or -1");
+    map->channels.push_back({c.node, std::abs(c.direction), *dof, c.direction < 0 ? -sign : sign});
+  }
+  const std::vector<UffLabelFields> labels = j.labels.value_or(std::vector<UffLabelFields>{});
+  for (size_t i = 0; i < labels.size(); ++i) {
+    const std::string at = "labels[" + std::to_string(i) + "]";
+    const std::optional<ModeLabel> label = ParseLabel(labels[i].label);
+    if (!label) {
+      return Fail(error, at + ".label", UnknownName("label", labels[i].label, NamesOf<ModeLabel>()));
+    }
+    if (map->labels.count(labels[i].mode)) return Fail(error, at + ".mode", "mode labelled twice");
+    for (const auto& [mode, other] : map->labels) {
+      if (other == *label) return Fail(error, at + ".label", "label given to two modes");
+    }
+    map->labels[labels[i].mode] = *label;
+  }
+  for (const std::string& name : j.known.value_or(std::vector<std::string>{})) {
+    const std::optional<Param> q = ParseParam(name);
+    if (!q) return Fail(error, "known", UnknownName("parameter", name, NamesOf<Param>()));
+    map->known.push_back(*q);
+  }
+  return true;
+}
+
+bool IsTranslation(Dof d) {
+  return d == Dof::kXb || d == Dof::kZb || d == Dof::kYb || d == Dof::kXa || d == Dof::kZa ||
+         d == Dof::kYa;
+}
+
+std::string Where(const UffModalData& m) {
+  return "dataset 55 (line " + std::to_string(m.line) + ") mode " + std::to_string(m.mode_number);
+}
+
+// The measured shape of `m` on the map's channels, real as the contract's §2.
+bool Shape(const UffModalData& m, const UffMap& map, const UffUnits* units,
+           std::vector<std::pair<Dof, double>>* shape, LoadError* error) {
+  std::vector<std::pair<Dof, std::complex<double>>> complex;
+  for (const UffMap::Channel& c : map.channels) {
+    for (const UffNodeValues& n : m.nodes) {
+      if (n.label != c.node) continue;
+      if (c.direction > static_cast<int>(n.values.size())) {
+        return Fail(error, Where(m), "node " + std::to_string(c.node) + " holds " +
+                                         std::to_string(n.values.size()) +
+                                         " values, not direction " + std::to_string(c.direction));
+      }
+      std::complex<double> v = c.sign * n.values[c.direction - 1];
+      if (units && IsTranslation(c.dof)) v = units->LengthToSi(1.0) * v;
+      for (const auto& [dof, value] : complex) {
+        if (dof == c.dof) return Fail(error, Where(m), std::string(DofName(c.dof)) + " is mapped from two channels");
+      }
+      complex.push_back({c.dof, v});
+    }
+  }
+  if (complex.empty()) return true;
+  size_t largest = 0;
+  for (size_t i = 1; i < complex.size(); ++i) {
+    if (std::abs(complex[i].second) > std::abs(complex[largest].second)) largest = i;
+  }
+  const double size = std::abs(complex[largest].second);
+  if (!(size > 0)) return Fail(error, Where(m), "the mapped channels are all zero");
+  const std::complex<double> turn = std::conj(complex[largest].second) / size;
+  for (const auto& [dof, v] : complex) shape->push_back({dof, std::real(turn * v) / size});
+  return true;
+}
+
+// Labels the modes the map does not, by MAC with the model's modes at `p`
+// (by frequency where no shape was measured), one-to-one.
+bool LabelByModel(const Parameters& p, const std::set<ModeLabel>& taken,
+                  const std::vector<int>& unlabelled, const std::vector<std::string>& names,
+                  std::vector<MeasuredMode>* modes, std::vector<std::string>* notes,
+                  LoadError* error) {
+  const ModalSolution s = RigidRingModel().Solve(p);
+  if (!s.ok) return Fail(error, "parameters", "the model has no modes there: " + s.error);
+  std::vector<const Mode*> free;
+  for (const Mode& m : s.modes) {
+    if (!taken.count(m.label)) free.push_back(&m);
+  }
+  if (unlabelled.size() > free.size() || free.size() > 16) {
+    return Fail(error, "labels", std::to_string(unlabelled.size()) + " modes to label, and the "
+                                 "model has " + std::to_string(free.size()) + " left to pair them with");
+  }
+  Eigen::MatrixXd score(unlabelled.size(), free.size());
+  for (size_t r = 0; r < unlabelled.size(); ++r) {
+    const MeasuredMode& m = (*modes)[unlabelled[r]];
+    for (size_t c = 0; c < free.size(); ++c) {
+      score(r, c) = m.shape.empty()
+                        ? std::exp(-std::abs(std::log(m.frequency_hz / free[c]->frequency_hz)))
+                        : Mac(ComparableShape(*free[c], ShapeConvention::kContract, m.shape), m.shape);
+    }
+  }
+  const std::vector<int> pick = internal::AssignMaxScore(score);
+  for (size_t r = 0; r < unlabelled.size(); ++r) {
+    MeasuredMode& m = (*modes)[unlabelled[r]];
+    const Mode& model = *free[pick[r]];
+    m.label = model.label;
+    char line[200];
+    std::snprintf(line, sizeof line, "%s, %.4g Hz, labelled %s by the model (%.4g Hz there, %s %.3f)",
+                  names[unlabelled[r]].c_str(), m.frequency_hz, LabelName(model.label), model.frequency_hz,
+                  m.shape.empty() ? "no shape measured: by frequency, score" : "MAC",
+                  score(r, pick[r]));
+    notes->push_back(line);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool ParseUffMap(const std::string& text, const std::string& path, UffMap* map,
+                 LoadError* error) {
+  *map = UffMap{};
+  error->file = path;
+  error->field.clear();
+  nlohmann::ordered_json j;
+  if (!ParseJsonInput(text, &j, error)) return false;
+  UffMapFields fields;
+  std::string why;
+  if (!JsonReader::FromJson(j, "", &fields, &why)) {
+    SetArchiveError(why, error);
+    return false;
+  }
+  return CheckMap(fields, map, error);
+}
+
+bool LoadUffMap(const std::string& path, UffMap* map, LoadError* error) {
+  std::string text;
+  return ReadInputFile(path, &text, error) && ParseUffMap(text, path, map, error);
+}
+
+bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, UffImport* out,
+                  LoadError* error) {
+  *out = UffImport{};
+  error->file = file.path;
+  error->field.clear();
+  Dataset& d = out->dataset;
+  d.path = file.path;
+  d.name = map.name;
+  d.description = map.description.empty() ? "imported by ringid from the UFF file " + file.path
+                                           : map.description;
+  const UffUnits* units = file.units.empty() ? nullptr : &file.units.front();
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%g", units ? units->length_factor : 1.0);
+  out->notes.push_back(units ? "units: dataset 164 '" + units->description +
+                                   "', lengths divided by " + factor + " to metres"
+                             : "units: no dataset 164; the values are taken as SI");
+  std::vector<int> unlabelled;
+  std::set<int> numbers;
+  std::set<ModeLabel> taken;
+  std::vector<std::string> names;  // each mode's record, for the notes
+  for (const UffModalData& m : file.modal_data) {
+    if (!m.IsNormalMode() && !m.IsComplexMode()) {
+      out->notes.push_back(Where(m) + ": analysis type " + std::to_string(m.analysis_type) +
+                           " is not a mode; skipped");
+      continue;
+    }
+    if (!numbers.insert(m.mode_number).second) {
+      return Fail(error, Where(m), "mode number given twice (the map's labels name modes by it)");
+    }
+    MeasuredMode mode;
+    mode.frequency_hz = m.FrequencyHz().value_or(0);
+    const std::string problem = ModeFrequencyProblem(mode.frequency_hz);
+    if (!problem.empty()) return Fail(error, Where(m) + " frequency", problem);
+    const std::optional<double> zeta = m.DampingRatio();
+    if (zeta && *zeta > kMinDampingRatio && *zeta < kMaxDampingRatio) mode.damping_ratio = zeta;
+    if (!Shape(m, map, units, &mode.shape, error)) return false;
+    const auto label = map.labels.find(m.mode_number);
+    if (label != map.labels.end()) {
+      mode.label = label->second;
+      taken.insert(label->second);
+      out->notes.push_back(Where(m) + " labelled " + LabelName(label->second) + " by the map");
+    } else {
+      unlabelled.push_back(static_cast<int>(d.modes.size()));
+    }
+    d.modes.push_back(mode);
+    names.push_back(Where(m));
+  }
+  for (const auto& [number, label] : map.labels) {
+    if (!numbers.count(number)) {
+      return Fail(error, "labels", "mode " + std::to_string(number) + " is not in the file");
+    }
+  }
+  if (d.modes.empty()) return Fail(error, "dataset 55", "the file holds no mode");
+  if (!unlabelled.empty()) {
+    if (!p) {
+      return Fail(error, "labels", std::to_string(unlabelled.size()) + " modes have no label: give "
+                                   "them in the map, or --parameters to label them by the model");
+    }
+    if (!LabelByModel(*p, taken, unlabelled, names, &d.modes, &out->notes, error)) return false;
+  }
+  if (p) {
+    for (Param q : RigidRingModel().parameters()) {
+      if (!p->IsSet(q)) continue;
+      const bool known = std::find(map.known.begin(), map.known.end(), q) != map.known.end();
+      (known ? d.known : d.initial)[q] = (*p)[q];
+    }
+  }
+  return true;
+}
+
+}  // namespace ringid
