@@ -1,6 +1,9 @@
 #include "apps/campaign.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <regex>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +11,7 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/html_report.h"
 #include "apps/interrupt.h"
 #include "apps/reports.h"
 #include "estimation/parallel.h"
@@ -18,20 +22,66 @@ namespace ringid {
 namespace fs = std::filesystem;
 
 bool ParseShard(const std::string& text, Shard* shard, std::string* error) {
+  if (text == "slurm") {
+    return SlurmShard([](const char* name) { return std::getenv(name); }, shard, error);
+  }
   std::istringstream in(text);
   char slash = 0;
   std::string rest;
   if (!(in >> shard->index >> slash >> shard->count) || slash != '/' || (in >> rest) ||
       shard->count < 1 || shard->index < 0 || shard->index >= shard->count) {
-    *error = "--shard: must be I/N with 0 <= I < N, got '" + text + "'";
+    *error = "--shard: must be I/N with 0 <= I < N, or slurm, got '" + text + "'";
     return false;
   }
   return true;
 }
 
-bool ListDatasets(const std::string& list, const Shard& shard,
+bool SlurmShard(const std::function<const char*(const char*)>& getenv, Shard* shard,
+                std::string* error) {
+  const auto fail = [&](const std::string& why) {
+    *error = "--shard=slurm: " + why;
+    return false;
+  };
+  std::map<std::string, long> v;
+  for (const char* name : {"ID", "COUNT", "MIN", "MAX", "STEP"}) {
+    const std::string variable = std::string("SLURM_ARRAY_TASK_") + name;
+    const char* text = getenv(variable.c_str());
+    if (!text) continue;
+    char* end = nullptr;
+    errno = 0;
+    const long value = std::strtol(text, &end, 10);
+    if (!*text || *end || errno || value < 0 || value > (1L << 30)) {
+      return fail(variable + " = '" + std::string(text).substr(0, 20) + "' is not a task number");
+    }
+    v[name] = value;
+  }
+  if (!v.count("ID")) {
+    return fail("SLURM_ARRAY_TASK_ID is not set: not a task of a Slurm job array (sbatch --array)");
+  }
+  for (const char* name : {"COUNT", "MIN", "MAX"}) {
+    if (!v.count(name)) return fail(std::string("SLURM_ARRAY_TASK_") + name + " is not set");
+  }
+  const long id = v["ID"], count = v["COUNT"], min = v["MIN"], max = v["MAX"];
+  const long step = v.count("STEP") ? v["STEP"] : 1;
+  const std::string array = std::to_string(min) + "-" + std::to_string(max) +
+                            (step == 1 ? "" : ":" + std::to_string(step));
+  if (step < 1 || max < min || (max - min) % step != 0 || (max - min) / step + 1 != count) {
+    return fail("the array " + array + " of " + std::to_string(count) +
+                " tasks is not an evenly stepped range (a list such as 1,3,7 is not): give "
+                "--shard=I/N");
+  }
+  if (id < min || id > max || (id - min) % step != 0) {
+    return fail("task " + std::to_string(id) + " is not in the array " + array);
+  }
+  shard->index = static_cast<int>((id - min) / step);
+  shard->count = static_cast<int>(count);
+  return true;
+}
+
+bool ListDatasets(const std::string& list, const Shard& shard, std::vector<std::string>* all_out,
                   std::vector<std::string>* files, std::string* error) {
-  std::vector<std::string> all;
+  std::vector<std::string>& all = *all_out;
+  all.clear();
   std::stringstream items(list);
   std::string path;
   while (std::getline(items, path, ',')) {
@@ -83,7 +133,68 @@ bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
   return true;
 }
 
+CampaignRow IdentifyRow(const IdentifyResult& s) {
+  CampaignRow row;
+  row.status = s.status;
+  row.converged = s.converged;
+  row.cost = s.cost;
+  row.relative_error_in_plane_eq19 = s.relative_error_in_plane;
+  row.relative_error_out_of_plane_eq20 = s.relative_error_out_of_plane;
+  row.seconds = s.seconds;
+  std::map<Param, double> values;
+  for (const ParameterEstimate& e : s.estimates) {
+    if (e.free && !values.count(e.key.param)) values[e.key.param] = e.value;
+  }
+  if (s.status.ok()) row.parameters = values;
+  return row;
+}
+
+CampaignRow DiagnoseRow(const DiagnosisResult& r) {
+  CampaignRow row;
+  row.status = r.status;
+  row.seconds = r.seconds;
+  if (r.status.ok()) {
+    row.verdict = r.verdict;
+    row.indistinguishable = r.indistinguishable;
+    row.gap_before = row.gap_after = r.gap_before;
+    row.shrink = 0;
+    for (const EffectFit& f : r.ranking) {
+      if (f.effect == r.verdict) row.gap_after = f.gap_after, row.shrink = f.shrink;
+    }
+  }
+  return row;
+}
+
 namespace {
+
+// The row of a report kept from an earlier run: read back whole, made from
+// `dataset`'s bytes under `options`; false otherwise.
+bool KeptRow(ReportKind command, const std::string& path, const std::string& dataset,
+             const std::vector<std::string>& options, CampaignRow* row) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  Json json;
+  std::string why;
+  if (!LoadReport(path, &json, &why)) return false;
+  const auto same_source = [&](const Provenance& p) {
+    if (!p.options || *p.options != options) return false;
+    for (const InputFile& f : p.inputs) {
+      if (f.role == "dataset") return !f.sha256.empty() && f.sha256 == FileSha256(dataset);
+    }
+    return false;
+  };
+  if (command == ReportKind::kIdentify) {
+    IdentifyReport r;
+    if (!ReadReport(json, &r, &why) || !same_source(r.provenance)) return false;
+    *row = IdentifyRow(r.body.result);
+  } else {
+    DiagnoseReport r;
+    if (!ReadReport(json, &r, &why) || !same_source(r.provenance)) return false;
+    *row = DiagnoseRow(r.body.result);
+  }
+  row->resumed = true;
+  return true;
+}
 
 // What an interrupted campaign kept: the reports finished whole (each is
 // written as its dataset finishes), and whether the summary was written.
@@ -118,8 +229,8 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
   Shard shard;
   if (request.jobs < 1) return usage("--jobs: must be at least 1");
   if (!ParseShard(request.shard, &shard, error)) return kExitUsage;
-  std::vector<std::string> files, reports;
-  if (!ListDatasets(request.datasets, shard, &files, error)) return kExitUsage;
+  std::vector<std::string> all, files, reports;
+  if (!ListDatasets(request.datasets, shard, &all, &files, error)) return kExitUsage;
   if (!ReportNames(files, request.output_dir, &reports, error)) return kExitUsage;
   for (size_t i = 0; i < reports.size(); ++i) {  // --output_dir=the datasets' own directory
     for (const std::string& f : files) {
@@ -129,20 +240,33 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
       }
     }
   }
+  const std::string shard_name = std::to_string(shard.index) + "/" + std::to_string(shard.count);
   const std::string summary_path =
       (std::filesystem::path(request.output_dir) /
        (shard.count == 1 ? std::string("campaign.json")
                          : "campaign." + std::to_string(shard.index) + "-of-" +
                                std::to_string(shard.count) + ".json")).string();
-  std::vector<Dataset> datasets(files.size());
-  for (size_t i = 0; i < files.size(); ++i) {
+  const int n = static_cast<int>(files.size());
+  std::vector<Dataset> datasets(n);
+  std::vector<CampaignItem> items(n);
+  std::vector<bool> done(n, false);  // failed to load (--keep_going) or kept
+  for (int i = 0; i < n; ++i) {
     LoadError load;
-    if (!LoadDataset(files[i], &datasets[i], &load)) return usage(load.OneLine());
-    if (request.prepare && !request.prepare(&datasets[i], error)) return kExitUsage;
+    std::string why;
     Status status;  // a dataset the model cannot start on
-    if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
-      return usage(files[i] + ": " + status.message);
+    if (!LoadDataset(files[i], &datasets[i], &load)) {
+      why = load.OneLine();
+      items[i].row.field = load.field;
+    } else if (request.prepare && !request.prepare(&datasets[i], &why)) {
+      items[i].row.field = "";
+    } else if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
+      why = files[i] + ": " + status.message;
+      items[i].row.field = "";
     }
+    if (why.empty()) continue;
+    if (!request.keep_going) return usage(why);
+    items[i].row.status = Status::InvalidInput(why);
+    done[i] = true;
   }
   std::error_code ec;
   std::filesystem::create_directories(request.output_dir, ec);
@@ -151,16 +275,27 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
     if (!CanWrite(out, error)) return usage("--output_dir: " + *error);
   }
   if (!CanWrite(summary_path, error)) return usage("--output_dir: " + *error);
-  const int n = static_cast<int>(files.size());
+  int resumed = 0;
+  for (int i = 0; i < n; ++i) {
+    if (done[i] || request.force) continue;
+    if (KeptRow(request.command, reports[i], files[i], request.options, &items[i].row)) {
+      done[i] = true;
+      ++resumed;
+    }
+  }
+  std::vector<int> to_run;
+  for (int i = 0; i < n; ++i) {
+    if (!done[i]) to_run.push_back(i);
+  }
   const KeptNote kept([&](const std::vector<std::string>& written) {
     return CampaignKept(written, reports, summary_path);
   });
-  std::vector<CampaignItem> items(n);
   std::vector<std::string> write_errors(n);
   const auto t0 = std::chrono::steady_clock::now();
   {
-    Progress progress(ToString(request.command), n);
-    internal::ParallelFor(n, request.jobs, [&](int i) {
+    Progress progress(ToString(request.command), static_cast<int>(to_run.size()));
+    internal::ParallelFor(static_cast<int>(to_run.size()), request.jobs, [&](int k) {
+      const int i = to_run[k];
       items[i] = work(datasets[i], files[i]);
       WriteFileAtomically(reports[i], items[i].report, &write_errors[i]);
       progress.Add();
@@ -172,22 +307,124 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
     if (!e.empty()) return usage(e);
   }
   std::vector<std::pair<std::string, std::string>> inputs;
-  for (const std::string& f : files) inputs.emplace_back("dataset", f);
+  for (int i = 0; i < n; ++i) {
+    if (!items[i].row.field) inputs.emplace_back("dataset", files[i]);
+  }
   CampaignReport summary{request.provenance(inputs),
-                         {request.command, request.shard, request.jobs, seconds, {}}};
+                         {request.command, shard_name, request.jobs, seconds, {}}};
+  summary.body.campaign_datasets = all;
+  summary.body.options = request.options;
+  summary.body.resumed = resumed;
   bool all_ok = true;
   for (int i = 0; i < n; ++i) {
     items[i].row.dataset = files[i];
-    items[i].row.report_file = reports[i];
+    items[i].row.report_file = items[i].row.field ? "" : reports[i];
     all_ok &= items[i].row.status.ok();
+    summary.body.failed += items[i].row.status.ok() ? 0 : 1;
     summary.body.datasets.push_back(items[i].row);
   }
-  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; reports in %s\n",
-              CampaignTable(summary.body).c_str(), n, request.jobs, seconds,
-              request.output_dir.c_str());
+  std::printf("%s\n%d dataset(s), %d job(s), %.1f s; %d kept from an earlier run, %d failed; "
+              "reports in %s\n",
+              CampaignTable(summary.body).c_str(), n, request.jobs, seconds, resumed,
+              summary.body.failed, request.output_dir.c_str());
   if (!WriteFileAtomically(summary_path, ReportText(summary), error)) return kExitUsage;
   return all_ok ? kExitOk : kExitFailure;
 }
 
+bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error) {
+  const std::regex name("campaign\\.([0-9]+)-of-([0-9]+)\\.json");
+  std::map<int, std::string> paths;  // by shard index
+  std::error_code ec;
+  int count = 0;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::smatch m;
+    const std::string file = it->path().filename().string();
+    if (!std::regex_match(file, m, name)) continue;
+    const int index = std::stoi(m[1]), of = std::stoi(m[2]);
+    if (count && of != count) {
+      *error = dir + ": " + file + " is a shard of " + std::to_string(of) + ", " +
+               paths.begin()->second + " of " + std::to_string(count) + ": not one campaign";
+      return false;
+    }
+    count = of;
+    paths[index] = it->path().string();
+  }
+  if (ec) {
+    *error = dir + ": cannot read directory: " + ec.message();
+    return false;
+  }
+  if (paths.empty()) {
+    *error = dir + ": no shard summary (campaign.I-of-N.json) to merge";
+    return false;
+  }
+  std::map<std::string, CampaignRow> rows;
+  CampaignBody& body = merged->body;
+  body = CampaignBody{};
+  for (const auto& [index, path] : paths) {
+    Json json;
+    CampaignReport shard;
+    if (!LoadReport(path, &json, error) || !ReadReport(json, &shard, error)) {
+      *error = path + ": " + *error;
+      return false;
+    }
+    const auto differs = [&](const std::string& what) {
+      *error = path + ": its " + what + " differ(s) from " + paths.begin()->second +
+               "'s: not a shard of the same campaign";
+      return false;
+    };
+    if (index == paths.begin()->first) {
+      body.command = shard.body.command;
+      body.campaign_datasets = shard.body.campaign_datasets;
+      body.options = shard.body.options;
+      body.jobs = shard.body.jobs;
+    } else if (shard.body.command != body.command) {
+      return differs("command");
+    } else if (shard.body.campaign_datasets != body.campaign_datasets) {
+      return differs("campaign_datasets");
+    } else if (shard.body.options != body.options) {
+      return differs("options");
+    }
+    if (shard.body.shard != std::to_string(index) + "/" + std::to_string(count)) {
+      *error = path + ": says it is shard " + shard.body.shard + ", its name " +
+               std::to_string(index) + "/" + std::to_string(count);
+      return false;
+    }
+    body.seconds += shard.body.seconds;
+    body.resumed += shard.body.resumed;
+    body.failed += shard.body.failed;
+    for (const CampaignRow& r : shard.body.datasets) {
+      if (!rows.emplace(r.dataset, r).second) {
+        *error = path + ": " + r.dataset + " is also in another shard";
+        return false;
+      }
+    }
+  }
+  std::string missing;
+  int n_missing = 0;
+  for (int i = 0; i < count; ++i) {
+    if (paths.count(i)) continue;
+    missing += (n_missing++ ? ", " : "") + ("campaign." + std::to_string(i) + "-of-" +
+                                             std::to_string(count) + ".json");
+  }
+  if (n_missing) {
+    *error = dir + ": " + std::to_string(n_missing) + " of " + std::to_string(count) +
+             " shard summaries missing: " + missing + " (run those shards, then merge)";
+    return false;
+  }
+  for (const std::string& d : body.campaign_datasets) {
+    const auto it = rows.find(d);
+    if (it == rows.end()) {
+      *error = dir + ": no shard has a row for " + d;
+      return false;
+    }
+    body.datasets.push_back(it->second);
+  }
+  if (rows.size() != body.datasets.size()) {
+    *error = dir + ": a shard has a row for a dataset not in the campaign's list";
+    return false;
+  }
+  body.shard = "merged";
+  return true;
+}
 
 }  // namespace ringid

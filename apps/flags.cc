@@ -65,7 +65,9 @@ DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replica
 DEFINE_string(markdown, "", "also write the Markdown table here");
 DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");
 DEFINE_int32(jobs, 1, "campaign: datasets analysed at once (threads)");
-DEFINE_string(shard, "0/1", "campaign: I/N, analyse every N-th dataset from the I-th (0-based)");
+DEFINE_string(shard, "0/1", "campaign: I/N, analyse every N-th dataset from the I-th (0-based); slurm: I and N from the job array's SLURM_ARRAY_TASK_* variables");
+DEFINE_bool(force, false, "campaign: fit every dataset again, also those whose report is already there from the same dataset and options");
+DEFINE_bool(keep_going, false, "campaign: a dataset that fails to load is a failed row of the summary (exit 1), not the end of the campaign (exit 2)");
 DEFINE_string(input, "", "a JSON report of ringid");
 DEFINE_string(figures_dir, "", "also write each figure as DIR/NAME.svg (the directory made if missing)");
 DEFINE_string(bounds, "", "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around the start");
@@ -119,7 +121,25 @@ Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
   Provenance p = MakeProvenance(argc, argv, Inputs(dataset), seed);
   // Checked by every command that fits before it runs.
   p.derivatives = FromString<Derivatives>(FLAGS_derivatives).value_or(Derivatives::kNumeric);
+  if (!FLAGS_output_dir.empty()) p.options = CampaignOptions();
   return p;
+}
+
+const std::vector<std::string>& ResultFlags() {
+  static const std::vector<std::string> flags = {
+      "method", "starts", "seed", "weighting", "relative_sigma", "shapes", "damping",
+      "shape_convention", "derivatives", "effects", "bounds", "fix"};
+  return flags;
+}
+
+std::vector<std::string> CampaignOptions() {
+  std::vector<std::string> options;
+  for (const std::string& name : Joined(ResultFlags(), {"level"})) {
+    std::string value;
+    gflags::GetCommandLineOption(name.c_str(), &value);
+    options.push_back(name + "=" + value);
+  }
+  return options;
 }
 
 // A number that is the whole of `text`.
@@ -322,6 +342,9 @@ int Campaign(int argc, char** argv, ReportKind command, const ModalModel& model,
              const CampaignWork& work) {
   if (!FLAGS_output.empty()) return Usage("--output: a campaign writes to --output_dir");
   CampaignRequest request{command, FLAGS_dataset, FLAGS_output_dir, FLAGS_shard, FLAGS_jobs};
+  request.options = CampaignOptions();
+  request.force = FLAGS_force;
+  request.keep_going = FLAGS_keep_going;
   request.prepare = ApplyFix;
   request.provenance = [&](const std::vector<std::pair<std::string, std::string>>& inputs) {
     return MakeProvenance(argc, argv, inputs, FLAGS_seed);

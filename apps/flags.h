@@ -50,6 +50,8 @@ DECLARE_int32(replicates);
 DECLARE_int32(lugs_per_revolution);
 DECLARE_string(lug_forces);
 DECLARE_string(uff);
+DECLARE_bool(force);
+DECLARE_bool(keep_going);
 DECLARE_string(map);
 DECLARE_double(response_noise);
 DECLARE_string(markdown);
@@ -127,6 +129,12 @@ std::string MissingParameters(const std::string& source, const std::vector<Param
 bool CheckEffectSizes(const std::vector<const Effect*>& effects,
                       const std::map<Param, double>& set, const Parameters& file,
                       std::string* error);
+
+// The flags that decide a fitting command's results (those of every fitting
+// command less --dataset, --output and --threads).
+const std::vector<std::string>& ResultFlags();
+// Their values, NAME=VALUE, with --level: what a campaign's reports record.
+std::vector<std::string> CampaignOptions();
 
 // --output_dir: a campaign of `command` over --dataset (apps/campaign.h).
 int Campaign(int argc, char** argv, ReportKind command, const ModalModel& model,

@@ -21,6 +21,7 @@
 #include "apps/flags.h"
 #include "apps/forces_command.h"
 #include "apps/import_command.h"
+#include "apps/merge_command.h"
 #include "apps/predict_command.h"
 #include "apps/html_report.h"
 #include "apps/interrupt.h"
@@ -58,15 +59,9 @@ int IdentifyCommand(int argc, char** argv) {
         [&](const Dataset& d, const std::string& file) {
           IdentifyResult s;
           Identify(model, d, o, &s);
-          CampaignItem item;
-          item.report = ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, s}});
-          item.row.status = s.status;
-          item.row.converged = s.converged;
-          item.row.cost = s.cost;
-          item.row.relative_error_in_plane_eq19 = s.relative_error_in_plane;
-          item.row.relative_error_out_of_plane_eq20 = s.relative_error_out_of_plane;
-          item.row.seconds = s.seconds;
-          return item;
+          return CampaignItem{
+              ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, s}}),
+              IdentifyRow(s)};
         });
   }
   Dataset d;
@@ -209,20 +204,9 @@ int DiagnoseCommand(int argc, char** argv) {
         [&](const Dataset& d, const std::string& file) {
           DiagnosisResult r;
           Diagnose(baseline, d, o, &r);
-          CampaignItem item;
-          item.report = ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}});
-          item.row.status = r.status;
-          item.row.seconds = r.seconds;
-          if (r.status.ok()) {
-            item.row.verdict = r.verdict;
-            item.row.indistinguishable = r.indistinguishable;
-            item.row.gap_before = item.row.gap_after = r.gap_before;
-            item.row.shrink = 0;
-            for (const EffectFit& f : r.ranking) {
-              if (f.effect == r.verdict) item.row.gap_after = f.gap_after, item.row.shrink = f.shrink;
-            }
-          }
-          return item;
+          return CampaignItem{
+              ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}}),
+              DiagnoseRow(r)};
         });
   }
   Dataset d;
@@ -349,10 +333,10 @@ int ExportCommand(int, char**) {
 }
 
 // The flags every fitting command takes, and a campaign's.
-const std::vector<std::string> kFitFlags = {
-    "dataset", "output", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix", "threads"};
-const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
+const std::vector<std::string> kFitFlags = Joined(Joined({"dataset", "output"}, ResultFlags()),
+                                                   {"threads"});
+const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard", "force",
+                                                 "keep_going"};
 
 int SchemaCommand(int, char**) {
   std::fputs(ReportsMarkdown().c_str(), stdout);
@@ -426,6 +410,10 @@ const std::vector<Command>& Commands() {
        "a test lab's UFF modes (dataset 55) as a dataset, by a map of nodes to\n"
        "degrees of freedom; without --map, what the file holds (docs/uff.md)",
        {"uff", "map", "parameters", "set", "output"}, ImportCommand},
+      {"merge", "--output_dir=DIR",
+       "the shard summaries DIR/campaign.I-of-N.json of one campaign as\n"
+       "DIR/campaign.json and its page DIR/campaign.html",
+       {"output_dir"}, MergeCommand},
       {"forces", "--parameters=FILE --dataset=FILE",
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"

@@ -9,9 +9,7 @@
 #include <iterator>
 
 namespace ringid {
-namespace {
 
-// SHA-256 of a file's bytes in hex; "" where it cannot be read.
 std::string FileSha256(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return "";
@@ -29,8 +27,6 @@ std::string FileSha256(const std::string& path) {
   }
   return hex;
 }
-
-}  // namespace
 
 Provenance MakeProvenance(int argc, const char* const* argv,
                           const std::vector<std::pair<std::string, std::string>>& role_paths,

@@ -61,6 +61,9 @@ struct Provenance {
   std::vector<InputFile> inputs;
   std::optional<long> seed;          // of random starts or noise, where used
   Derivatives derivatives = Derivatives::kNumeric;  // how Jacobians were taken
+  // A campaign's: the flags that decide its results, NAME=VALUE; a report
+  // is resumed only under the same.
+  std::optional<std::vector<std::string>> options;
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -69,8 +72,12 @@ struct Provenance {
     a->Visit("inputs", &inputs);
     a->Visit("seed", &seed);
     a->Visit("derivatives", &derivatives);
+    a->VisitIfSet("options", &options);
   }
 };
+
+// SHA-256 of a file's bytes in hex; "" where it cannot be read.
+std::string FileSha256(const std::string& path);
 
 // The provenance of this process: version, argv, and each input's SHA-256.
 Provenance MakeProvenance(int argc, const char* const* argv,
@@ -171,12 +178,19 @@ struct CampaignRow {
   std::optional<const Effect*> verdict;  // nullptr: none
   std::optional<std::vector<const Effect*>> indistinguishable;
   std::optional<double> gap_before, gap_after, shrink;
+  // identify: the fitted values (the first condition's, for per-condition ones)
+  std::optional<std::map<Param, double>> parameters;
+  // --keep_going: where the dataset failed to load ("" where it failed to fit)
+  std::optional<std::string> field;
+  std::optional<bool> resumed;  // its report was kept from an earlier run
 
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("dataset", &dataset);
     a->Visit("report_file", &report_file);
     status.Serialize(a);
+    a->VisitIfSet("field", &field);
+    a->VisitIfSet("resumed", &resumed);
     a->Visit("seconds", &seconds);
     a->VisitIfSet("cost", &cost);
     a->VisitIfSet("relative_error_in_plane_eq19", &relative_error_in_plane_eq19);
@@ -187,15 +201,22 @@ struct CampaignRow {
     a->VisitIfSet("gap_before", &gap_before);
     a->VisitIfSet("gap_after", &gap_after);
     a->VisitIfSet("shrink", &shrink);
+    a->VisitIfSet("parameters", &parameters);
   }
 };
 
 struct CampaignBody {
   ReportKind command = ReportKind::kIdentify;  // identify or diagnose
-  std::string shard;  // I/N
+  std::string shard;  // I/N; "merged" for `ringid merge`
   int jobs = 1;
   double seconds = 0;
   std::vector<CampaignRow> datasets;
+  // The whole campaign's datasets, every shard's, in order, and the flags
+  // that decide its results: what `ringid merge` checks shards against.
+  std::vector<std::string> campaign_datasets;
+  std::vector<std::string> options;
+  int resumed = 0;  // reports kept from an earlier run, not fitted again
+  int failed = 0;   // rows whose dataset failed to load or to fit
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -204,6 +225,10 @@ struct CampaignBody {
     a->Visit("jobs", &jobs);
     a->Visit("seconds", &seconds);
     a->Visit("datasets", &datasets);
+    a->Visit("campaign_datasets", &campaign_datasets);
+    a->Visit("options", &options);
+    a->Visit("resumed", &resumed);
+    a->Visit("failed", &failed);
   }
 };
 

@@ -37,6 +37,8 @@ using ringid::testing::ReadFile;
 using ringid::testing::Ringid;
 using ringid::testing::RunResult;
 using ringid::testing::Scratch;
+using ringid::testing::StartRingid;
+using ringid::testing::WaitFor;
 
 std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
 
@@ -907,7 +909,7 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
                    "predict, identify, identifiability, compare, simulate, diagnose, bench, "
-                   "report, export, import, forces, schema, inputs or reference); see 'ringid help'\n");
+                   "report, export, import, merge, forces, schema, inputs or reference); see 'ringid help'\n");
 }
 
 TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
@@ -1028,24 +1030,6 @@ TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::is_empty(figures));
 }
 
-// ringid `args`, started in the source tree and not waited for; stdout
-// discarded, stderr to `err`.
-pid_t Start(const std::string& args, const std::string& err) {
-  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
-                            args + " > /dev/null 2> " + err;
-  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
-  return pid;
-}
-
-// The exit status of `pid`, -1 if a signal killed it.
-int Finish(pid_t pid) {
-  int raw = 0;
-  EXPECT_EQ(::waitpid(pid, &raw, 0), pid);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
 // Ctrl-C or SIGTERM in the middle of a run: one line saying what was kept
 // (nothing: reports are written whole at the end), exit 128 + the signal.
 TEST(CliTest, AnInterruptedRunSaysWhatItKept) {
@@ -1055,12 +1039,12 @@ TEST(CliTest, AnInterruptedRunSaysWhatItKept) {
   const std::pair<int, std::string> signals[] = {{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}};
   for (const auto& [signo, name] : signals) {
     const std::string err = Scratch("interrupt_" + name + ".txt");
-    const pid_t pid = Start("bench --suite=synthetic --output=" + dir + "/bench.json --markdown=" +
+    const pid_t pid = StartRingid("bench --suite=synthetic --output=" + dir + "/bench.json --markdown=" +
                                 dir + "/bench.md",
                             err);
     std::this_thread::sleep_for(std::chrono::milliseconds(700));
     ::kill(pid, signo);
-    EXPECT_EQ(Finish(pid), 128 + signo) << name;
+    EXPECT_EQ(WaitFor(pid), 128 + signo) << name;
     EXPECT_EQ(ReadFile(err), "ringid: interrupted (" + name +
                                  "): nothing written (a report is written whole when its run "
                                  "ends)\n");
@@ -1079,7 +1063,7 @@ TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
                                dir + "/data/" + name + ".json");
   }
   const std::string err = Scratch("interrupted_campaign.txt");
-  const pid_t pid = Start("identify --starts=400 --dataset=" + dir + "/data --output_dir=" + dir +
+  const pid_t pid = StartRingid("identify --starts=400 --dataset=" + dir + "/data --output_dir=" + dir +
                               "/out",
                           err);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
@@ -1087,7 +1071,7 @@ TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   ::kill(pid, SIGINT);
-  ASSERT_EQ(Finish(pid), 130) << ReadFile(err);
+  ASSERT_EQ(WaitFor(pid), 130) << ReadFile(err);
   std::vector<std::string> kept;
   for (const auto& f : std::filesystem::directory_iterator(dir + "/out")) {
     kept.push_back(f.path().filename().string());

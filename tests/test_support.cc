@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <spawn.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -244,6 +245,21 @@ std::vector<MalformedDataset> MalformedDatasets() {
     out.push_back({what, text, ""});
   }
   return out;
+}
+
+int StartRingid(const std::string& args, const std::string& err) {
+  const std::string shell = "cd " + SourcePath("") + " && exec " + std::string(RINGID_BINARY) +
+                            " " + args + " > /dev/null 2> " + err;
+  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+  return pid;
+}
+
+int WaitFor(int pid) {
+  int raw = 0;
+  EXPECT_EQ(::waitpid(pid, &raw, 0), pid);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 std::string Scratch(const std::string& name) {

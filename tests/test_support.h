@@ -42,6 +42,11 @@ struct RunResult {
   std::string out;  // and on stdout
 };
 RunResult Ringid(const std::string& args, const std::string& cwd = "");
+// ringid `args`, started in the source tree and not waited for; stdout
+// discarded, stderr to `err`.
+int StartRingid(const std::string& args, const std::string& err);
+// The exit status of the process `pid`, -1 if a signal killed it.
+int WaitFor(int pid);
 // A scratch path private to this test process: ctest runs tests in parallel.
 std::string Scratch(const std::string& name);
 bool Exists(const std::string& path);
