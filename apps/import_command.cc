@@ -66,11 +66,13 @@ int ImportCommand(int argc, char** argv) {
   if (!LoadUffMap(FLAGS_map, &map, &load)) return Usage(load.OneLine());
   std::map<Param, double> set;
   if (!ParseSet(&set, &error)) return Usage(error);
+  if (!set.empty() && FLAGS_parameters.empty()) return Usage("--set: needs --parameters=FILE");
   Parameters p;
   std::vector<std::string> notes;
   if (!FLAGS_parameters.empty() && !LoadParameters(FLAGS_parameters, set, &p, &load, &notes)) {
     return Usage(load.OneLine());
   }
+  for (const std::string& note : notes) std::printf("parameters: %s\n", note.c_str());
   UffImport in;
   if (!UffToDataset(file, map, FLAGS_parameters.empty() ? nullptr : &p, &in, &load)) {
     return Usage(load.OneLine());

@@ -28,8 +28,14 @@ class Derivation {
     Version();
     const std::optional<double> fnomin = Get("VERTICAL", "FNOMIN");
     if (!fnomin) {
-      Note("no [VERTICAL] FNOMIN: no contact value is derived (the file has no Magic Formula "
-           "block)");
+      if (!file_.HasSection("LONGITUDINAL_COEFFICIENTS") && !file_.HasSection("LATERAL_COEFFICIENTS")) {
+        Note("no [VERTICAL] FNOMIN: no contact value is derived (the file has no Magic Formula "
+             "block)");
+        return;
+      }
+      for (Param q : {P::F_cz0, P::K_cx, P::sigma_cx, P::r_e0, P::K_cy, P::sigma_cy, P::r_l0, P::t_0}) {
+        Skip(q, "[VERTICAL] FNOMIN, the Magic Formula's nominal load");
+      }
       return;
     }
     fz0_ = Positive("VERTICAL", "FNOMIN");
@@ -37,11 +43,21 @@ class Derivation {
     load_ = p_[P::F_cz0];
     out_->load = load_;
     // Normalised load and pressure (4.E1, 4.E2a, 4.E2b).
-    fz0_scaled_ = fz0_ * Or("SCALING_COEFFICIENTS", "LFZO", 1);
+    fz0_scaled_ = fz0_ * (file_.Find("SCALING_COEFFICIENTS", "LFZO")
+                              ? Positive("SCALING_COEFFICIENTS", "LFZO") : 1);
     dfz_ = (load_ - fz0_scaled_) / fz0_scaled_;
-    const std::optional<double> p = Get("OPERATING_CONDITIONS", "INFLPRES");
-    const std::optional<double> p0 = Get("OPERATING_CONDITIONS", "NOMPRES");
-    if (mf6_ && p && p0 && *p0 > 0) dpi_ = (*p - *p0) / *p0;
+    const bool pressures = file_.Find("OPERATING_CONDITIONS", "INFLPRES") &&
+                           file_.Find("OPERATING_CONDITIONS", "NOMPRES");
+    if (mf6_ && pressures) {
+      const double p = Positive("OPERATING_CONDITIONS", "INFLPRES");
+      const double p0 = Positive("OPERATING_CONDITIONS", "NOMPRES");
+      dpi_ = (p - p0) / p0;
+    }
+    out_->summary = "contact values of MF " + out_->version + " at F_cz0 = " + ShortNumber(load_) +
+                    " N, zero slip, camber and speed, " +
+                    (!mf6_ ? std::string("without pressure terms (MF 5.x)")
+                           : pressures ? "at the file's inflation pressure (dp_i = " + ShortNumber(dpi_) + ")"
+                                       : std::string("at the nominal pressure (no INFLPRES and NOMPRES)"));
     Vertical();
     EffectiveRadius();
     SlipStiffnesses();
@@ -129,7 +145,18 @@ class Derivation {
     const double r0 = Positive("DIMENSION", "UNLOADED_RADIUS");
     const double q2 = Or("VERTICAL", "Q_FZ2", 0);
     const double pressure = mf6_ ? 1 + Or("VERTICAL", "PFZ1", 0) * dpi_ : 1;
-    const double q1_given = Or("VERTICAL", "Q_FZ1", 0);
+    if (!(pressure > 0)) {
+      throw Failure{file_.Find("VERTICAL", "PFZ1")->Where(),
+                    "with dp_i = " + ShortNumber(dpi_) + " it makes the vertical stiffness "
+                    "factor 1 + PFZ1 dp_i = " + ShortNumber(pressure) + ", not positive"};
+    }
+    double q1_given = Or("VERTICAL", "Q_FZ1", 0);
+    if (q1_given != 0 && mf6_) {
+      Note("[VERTICAL] Q_FZ1 is not used: MF 6.x derives q_Fz1 from VERTICAL_STIFFNESS (A3.4)");
+      q1_given = 0;
+    }
+    const TirEntry* culprit = file_.Find("VERTICAL", q1_given != 0 ? "Q_FZ1" : "Q_FZ2");
+    if (!culprit) culprit = file_.Find("VERTICAL", "VERTICAL_STIFFNESS");
     double q1 = cz0 * r0 / fz0_;
     std::string law = mf6_ ? "q_Fz1 = sqrt((VERTICAL_STIFFNESS R_0/FNOMIN)^2 - 4 Q_FZ2) (A3.4: "
                              "VERTICAL_STIFFNESS is the tangent stiffness at FNOMIN in MF 6.x)"
@@ -141,7 +168,7 @@ class Derivation {
     } else if (mf6_) {
       const double square = q1 * q1 - 4 * q2;
       if (!(square > 0)) {
-        throw Failure{file_.Find("VERTICAL", "VERTICAL_STIFFNESS")->Where(),
+        throw Failure{culprit->Where(),
                       "with Q_FZ2 = " + TirNumber(q2) + " the vertical law has no solution "
                       "((VERTICAL_STIFFNESS R_0/FNOMIN)^2 - 4 Q_FZ2 = " + ShortNumber(square) + ")"};
       }
@@ -151,7 +178,7 @@ class Derivation {
     const double c = load_ / (fz0_ * pressure);
     const double root = q1 * q1 + 4 * q2 * c;
     if (!(q1 > 0) || !(root > 0)) {
-      throw Failure{file_.Find("VERTICAL", "VERTICAL_STIFFNESS")->Where(),
+      throw Failure{culprit->Where(),
                     "the vertical law (q_Fz1 = " + TirNumber(q1) + ", Q_FZ2 = " + TirNumber(q2) +
                         ") gives no deflection at F_cz0 = " + TirNumber(load_) + " N"};
     }
@@ -208,6 +235,7 @@ class Derivation {
     if (!Skip(P::K_cy, Lacking({{"LATERAL_COEFFICIENTS", "PKY1"}, {"LATERAL_COEFFICIENTS", "PKY2"}}))) {
       const char* s = "LATERAL_COEFFICIENTS";
       const double curvature = mf6_ ? Or(s, "PKY4", 2) : 2;  // 5.x: sin(2 atan(.))
+      if (*Get(s, "PKY2") == 0) throw Failure{file_.Find(s, "PKY2")->Where(), "must not be 0"};
       const double k = *Get(s, "PKY1") * fz0_scaled_ * (1 + Or(s, "PPY1", 0) * dpi_) *
                        std::sin(curvature * std::atan(load_ / (*Get(s, "PKY2") *
                                                                (1 + Or(s, "PPY2", 0) * dpi_) *
@@ -244,8 +272,13 @@ class Derivation {
         Note(std::string(ParamName(sigma)) + " not derived: it needs " + ParamName(slip));
         return;
       }
-      const double c = Positive(s, key) * (1 + Or(s, k1, 0) * dfz_ + Or(s, k2, 0) * dfz_ * dfz_) *
+      const double c = *Get(s, key) * (1 + Or(s, k1, 0) * dfz_ + Or(s, k2, 0) * dfz_ * dfz_) *
                        (1 + Or(s, k3, 0) * dpi_);
+      if (!(c > 0)) {
+        Note(std::string(ParamName(sigma)) + " not derived: [" + s + "] " + key + " at F_cz0 (with " +
+             k1 + ", " + k2 + ", " + k3 + ") comes out " + ShortNumber(c) + " N/m, not positive");
+        return;
+      }
       const double value = p_[slip] * (1 / c - belt);
       if (value > 0) {
         Set(sigma, value, text);

@@ -26,6 +26,7 @@ struct TirDerived {
 struct TirContact {
   std::string version;  // "6.2", "6.1" or "5.x", from [MODEL] FITTYP
   double load = 0;      // F_cz0 the values hold at (N)
+  std::string summary;  // "contact values of MF 6.2 at F_cz0 = 4000 N, ..." ("" when none)
   std::vector<TirDerived> derived;  // in the order derived
   // What was not derived and why; what holds at the nominal load and speed only.
   std::vector<std::string> notes;
@@ -39,7 +40,8 @@ const std::vector<std::string>& TirSectionsRead();
 // read and `given` the values given by hand: a value given is not derived and
 // later values use it; the load is given F_cz0, else FNOMIN. A value whose
 // keys are absent, or which comes out non-positive, is left out with a note.
-// False, with `error` naming the key, where a key read is not a number or the
+// False, with `error` naming the key, where a key read is not a number, a
+// load, pressure, radius or stiffness the law needs is not positive, or the
 // vertical law has no solution.
 bool DeriveTirContact(const TirFile& file, const Parameters& belt,
                       const std::map<Param, double>& given, TirContact* contact,

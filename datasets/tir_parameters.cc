@@ -533,11 +533,8 @@ bool LoadParameters(const std::string& path, const std::map<Param, double>& set,
     notes->push_back(std::string(ParamName(d.parameter)) + " = " + ShortNumber(d.value) + " " +
                      Info(d.parameter).unit + " from " + d.from);
   }
-  if (!contact.version.empty() && !contact.derived.empty()) {
-    notes->insert(notes->begin() + file.notes.size(),
-                  "contact values of MF " + contact.version + " at F_cz0 = " +
-                      ShortNumber(contact.load) + " N, zero slip, camber and speed, the file's "
-                      "inflation pressure");
+  if (!contact.summary.empty() && !contact.derived.empty()) {
+    notes->insert(notes->begin() + file.notes.size(), contact.summary);
   }
   notes->insert(notes->end(), contact.notes.begin(), contact.notes.end());
   const auto rim = set.find(Param::I_ay);

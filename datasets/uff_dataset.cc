@@ -138,6 +138,12 @@ bool LabelByModel(const Parameters& p, const std::set<ModeLabel>& taken,
     MeasuredMode& m = (*modes)[unlabelled[r]];
     const Mode& model = *free[pick[r]];
     m.label = model.label;
+    for (size_t c = 0; c < free.size(); ++c) {  // a runner-up as good: say so
+      if (static_cast<int>(c) != pick[r] && score(r, c) > score(r, pick[r]) - 0.05) {
+        notes->push_back(names[unlabelled[r]] + ": " + LabelName(free[c]->label) +
+                         " scores nearly as well; give its label in the map if you know it");
+      }
+    }
     char line[200];
     std::snprintf(line, sizeof line, "%s, %.4g Hz, labelled %s by the model (%.4g Hz there, %s %.3f)",
                   names[unlabelled[r]].c_str(), m.frequency_hz, LabelName(model.label), model.frequency_hz,
@@ -205,7 +211,12 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
     const std::string problem = ModeFrequencyProblem(mode.frequency_hz);
     if (!problem.empty()) return Fail(error, Where(m) + " frequency", problem);
     const std::optional<double> zeta = m.DampingRatio();
-    if (zeta && *zeta > kMinDampingRatio && *zeta < kMaxDampingRatio) mode.damping_ratio = zeta;
+    if (zeta && *zeta > kMinDampingRatio && *zeta < kMaxDampingRatio) {
+      mode.damping_ratio = zeta;
+    } else if (zeta && *zeta != 0) {
+      out->notes.push_back(Where(m) + ": damping ratio " + std::to_string(*zeta) +
+                           " is outside (0, 1): left out");
+    }
     if (!Shape(m, map, units, &mode.shape, error)) return false;
     const auto label = map.labels.find(m.mode_number);
     if (label != map.labels.end()) {
@@ -230,6 +241,9 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
                                    "them in the map, or --parameters to label them by the model");
     }
     if (!LabelByModel(*p, taken, unlabelled, names, &d.modes, &out->notes, error)) return false;
+  }
+  if (!p && !map.known.empty()) {
+    out->notes.push_back("known: no --parameters, so no value is written known or initial");
   }
   if (p) {
     for (Param q : RigidRingModel().parameters()) {

@@ -162,13 +162,18 @@ struct Tno {
   double qdz1 = 0.08993, qdz2 = -0.005979, ppz1 = -0.4402;
   double cx0 = 381913.4, cy0 = 157632.5, pcfx1 = 0.18677, pcfy1 = 0.16365, pcfy3 = 0.24993;
   double nompres = 220000;
+  double lfzo = 1, pcfx2 = 0, pcfx3 = 0, pcfy2 = 0;  // as the file; a case changes them
 };
 
 // The contact values at load f and inflation pressure p, evaluated here from
 // the formulas of Pacejka (2012) written out again: the deflection by
 // bisection, the tangent stiffness from its polynomial.
+// The nominal load scaled by LFZO enters df_z (4.E2a), K_cy (4.E25) and the
+// trail (4.E42); the vertical law and the effective radius take FNOMIN itself
+// (A3.3-A3.6), as TyreDyn's radius and stiffness modules do.
 std::map<Param, double> Independent(const Tno& t, const Parameters& belt, double f, double p) {
-  const double dfz = f / t.fnomin - 1, dpi = p / t.nompres - 1;
+  const double fz0s = t.fnomin * t.lfzo;
+  const double dfz = f / fz0s - 1, dpi = p / t.nompres - 1;
   const double q1 = std::sqrt(std::pow(t.cz0 * t.r0 / t.fnomin, 2) - 4 * t.q_fz2);
   const double scale = t.fnomin * (1 + t.pfz1 * dpi);
   double lo = 0, hi = t.r0;  // F(rho) = scale (q1 rho/R0 + q2 (rho/R0)^2), increasing
@@ -186,10 +191,11 @@ std::map<Param, double> Independent(const Tno& t, const Parameters& belt, double
   v[P::r_e0] = t.r0 * t.q_re0 - t.fnomin / cz_pressure *
                                     (t.freff * f / t.fnomin + t.dreff * std::atan(t.breff * f / t.fnomin));
   v[P::K_cx] = f * (t.pkx1 + t.pkx2 * dfz) * std::exp(t.pkx3 * dfz) * (1 + t.ppx1 * dpi + t.ppx2 * dpi * dpi);
-  v[P::K_cy] = -t.pky1 * t.fnomin * (1 + t.ppy1 * dpi) *
-               std::sin(t.pky4 * std::atan(f / (t.pky2 * (1 + t.ppy2 * dpi) * t.fnomin)));
-  v[P::t_0] = f * t.r0 / t.fnomin * (t.qdz1 + t.qdz2 * dfz) * (1 - t.ppz1 * dpi);
-  const double cx = t.cx0 * (1 + t.pcfx1 * dfz), cy = t.cy0 * (1 + t.pcfy1 * dfz) * (1 + t.pcfy3 * dpi);
+  v[P::K_cy] = -t.pky1 * fz0s * (1 + t.ppy1 * dpi) *
+               std::sin(t.pky4 * std::atan(f / (t.pky2 * (1 + t.ppy2 * dpi) * fz0s)));
+  v[P::t_0] = f * t.r0 / fz0s * (t.qdz1 + t.qdz2 * dfz) * (1 - t.ppz1 * dpi);
+  const double cx = t.cx0 * (1 + t.pcfx1 * dfz + t.pcfx2 * dfz * dfz) * (1 + t.pcfx3 * dpi);
+  const double cy = t.cy0 * (1 + t.pcfy1 * dfz + t.pcfy2 * dfz * dfz) * (1 + t.pcfy3 * dpi);
   v[P::sigma_cx] = v[P::K_cx] * (1 / cx - 1 / belt[P::k_bx] -
                                  v[P::r_e0] * v[P::r_e0] / belt[P::k_btheta]);
   v[P::sigma_cy] = v[P::K_cy] * (1 / cy - 1 / belt[P::k_by] -
@@ -199,26 +205,42 @@ std::map<Param, double> Independent(const Tno& t, const Parameters& belt, double
 
 TEST(TirContactTest, TheContactValuesOfTheTnoTireEqualAnIndependentEvaluationOfTheFormulas) {
   const std::string tno = testing::ReadFile(Corpus("opentire_sandbox__TNO_car205_60R15"));
-  const Tno t;
-  for (const auto& [load, pressure] :
-       std::vector<std::pair<double, double>>{{4000, 220000}, {3000, 220000}, {5200, 250000}}) {
-    SCOPED_TRACE("F_cz0 " + std::to_string(load) + " N, " + std::to_string(pressure) + " Pa");
-    std::string text = tno;
-    const std::string line = "INFLPRES                 = 220000";
+  // The text with KEY's line (its value `from`) giving `to` instead.
+  const auto with = [](std::string text, const std::string& key, const std::string& from,
+                       const std::string& to) {
+    const std::string line = key + std::string(25 - key.size(), ' ') + "= " + from;
     const size_t at = text.find(line);
-    ASSERT_NE(at, std::string::npos);
-    text.replace(at, line.size(), "INFLPRES = " + std::to_string(static_cast<int>(pressure)));
+    EXPECT_NE(at, std::string::npos) << line;
+    return at == std::string::npos ? text : text.replace(at, line.size(), key + " = " + to);
+  };
+  struct Case {
+    double load, pressure;
+    bool scaled;  // LFZO 0.9 and the quadratic and pressure terms of C_x, C_y set
+  };
+  for (const Case& k : std::vector<Case>{{4000, 220000, false}, {3000, 220000, false},
+                                          {5200, 250000, false}, {3500, 250000, true}}) {
+    SCOPED_TRACE("F_cz0 " + std::to_string(k.load) + " N, " + std::to_string(k.pressure) + " Pa" +
+                 (k.scaled ? ", scaled" : ""));
+    Tno t;
+    std::string text = with(tno, "INFLPRES", "220000", std::to_string(static_cast<int>(k.pressure)));
+    if (k.scaled) {
+      t.lfzo = 0.9, t.pcfx2 = 0.1, t.pcfx3 = 0.2, t.pcfy2 = 0.05;
+      text = with(text, "LFZO", "1", "0.9");
+      text = with(text, "PCFX2", "0", "0.1");
+      text = with(text, "PCFX3", "0", "0.2");
+      text = with(text, "PCFY2", "0", "0.05");
+    }
     TirFile file;
     Parameters belt;
     LoadError e;
     ASSERT_TRUE(Read(text, &file, &belt, &e)) << e.OneLine();
     std::map<Param, double> given;
-    if (load != t.fnomin) given[P::F_cz0] = load;
+    if (k.load != t.fnomin) given[P::F_cz0] = k.load;
     TirContact c;
     ASSERT_TRUE(DeriveTirContact(file, belt, given, &c, &e)) << e.OneLine();
     EXPECT_EQ(c.version, "6.2");
-    EXPECT_EQ(c.load, load);
-    const std::map<Param, double> expected = Independent(t, belt, load, pressure);
+    EXPECT_EQ(c.load, k.load);
+    const std::map<Param, double> expected = Independent(t, belt, k.load, k.pressure);
     EXPECT_EQ(c.derived.size(), expected.size() - given.size()) << Joined(c.notes);
     for (const TirDerived& d : c.derived) {
       ASSERT_TRUE(expected.count(d.parameter)) << ParamName(d.parameter);
@@ -331,8 +353,14 @@ TEST(TirContactTest, BadMagicFormulaKeysAreRefusedNamingTheKey) {
   e = refused("PKX1                     = 21.69", "PKX1 = 'x'");
   EXPECT_EQ(e.field.rfind("[LONGITUDINAL_COEFFICIENTS] PKX1", 0), 0u) << e.OneLine();
   e = refused("Q_FZ2                    = 15.416", "Q_FZ2 = 1e9");
-  EXPECT_EQ(e.field.rfind("[VERTICAL] VERTICAL_STIFFNESS", 0), 0u) << e.OneLine();
+  EXPECT_EQ(e.field.rfind("[VERTICAL] Q_FZ2", 0), 0u) << e.OneLine();
   EXPECT_NE(e.message.find("no solution"), std::string::npos) << e.OneLine();
+  e = refused("INFLPRES                 = 220000", "INFLPRES = -220000");
+  EXPECT_EQ(e.field.rfind("[OPERATING_CONDITIONS] INFLPRES", 0), 0u) << e.OneLine();
+  e = refused("LFZO                     = 1", "LFZO = 0");
+  EXPECT_EQ(e.field.rfind("[SCALING_COEFFICIENTS] LFZO", 0), 0u) << e.OneLine();
+  e = refused("PKY2                     = 1.7044", "PKY2 = 0");
+  EXPECT_EQ(e.field.rfind("[LATERAL_COEFFICIENTS] PKY2", 0), 0u) << e.OneLine();
 }
 
 }  // namespace
