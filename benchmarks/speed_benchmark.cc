@@ -8,6 +8,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "apps/campaign.h"
+
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
@@ -168,6 +173,57 @@ void BM_Forces(benchmark::State& state) {
 BENCHMARK(BM_Forces)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+}  // namespace ringid
+
+namespace ringid {
+
+// `ringid merge` of a campaign of 10,000 identified datasets in 4 shard
+// summaries (each row with its 14 fitted values): reading, checking, writing
+// nothing (MergeShards alone).
+static void BM_CampaignMerge(benchmark::State& state) {
+  const int n = 10000, shards = 4;
+  const std::string dir = std::filesystem::temp_directory_path() / "ringid_bench_merge";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::vector<std::string> all;
+  for (int i = 0; i < n; ++i) all.push_back("data/tire" + std::to_string(i) + ".json");
+  const Parameters p = ExampleCarTire();
+  for (int k = 0; k < shards; ++k) {
+    CampaignReport r;
+    r.body.shard = std::to_string(k) + "/" + std::to_string(shards);
+    r.body.campaign_datasets = all;
+    r.body.options = {"method=lm", "starts=6"};
+    for (int i = k; i < n; i += shards) {
+      CampaignRow row;
+      row.dataset = all[i];
+      row.report_file = "out/tire" + std::to_string(i) + ".json";
+      row.status = Status::Success("converged");
+      row.converged = true;
+      row.cost = 10 + i % 7;
+      row.relative_error_in_plane_eq19 = row.relative_error_out_of_plane_eq20 = 1e-8;
+      row.seconds = 0.1;
+      std::map<Param, double> values;
+      for (Param q : {Param::k_bx, Param::k_btheta, Param::c_bx, Param::c_btheta, Param::K_cx,
+                      Param::sigma_cx, Param::k_cz, Param::k_by, Param::k_bgamma, Param::c_by,
+                      Param::c_bgamma, Param::K_cy, Param::sigma_cy, Param::t_0}) {
+        values[q] = p[q] * (1 + 1e-3 * (i % 11));
+      }
+      row.parameters = values;
+      r.body.datasets.push_back(row);
+    }
+    std::ofstream(dir + "/campaign." + std::to_string(k) + "-of-" + std::to_string(shards) +
+                  ".json") << ReportText(r);
+  }
+  for (auto _ : state) {
+    CampaignReport merged;
+    std::string error;
+    if (!MergeShards(dir, &merged, &error)) state.SkipWithError(error.c_str());
+    benchmark::DoNotOptimize(merged.body.datasets.size());
+  }
+  std::filesystem::remove_all(dir);
+}
+BENCHMARK(BM_CampaignMerge)->Unit(benchmark::kMillisecond);
+
 }  // namespace ringid
 
 BENCHMARK_MAIN();

@@ -1,6 +1,8 @@
 // The page of a campaign (a command over a directory of datasets): one row
 // per dataset; for diagnoses, the gap of each before and after.
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <filesystem>
 #include <sstream>
 
@@ -84,6 +86,72 @@ void GapFigure(const std::vector<CampaignRow>& datasets, Page* page) {
   page->AddFigure(std::move(f));
 }
 
+// The distribution of each fitted parameter over the datasets, one panel each.
+void ParameterHistograms(const std::vector<CampaignRow>& datasets, Page* page) {
+  std::map<Param, std::vector<double>> values;
+  for (const CampaignRow& d : datasets) {
+    for (const auto& [q, v] : d.parameters.value_or(std::map<Param, double>{})) {
+      if (std::isfinite(v)) values[q].push_back(v);
+    }
+  }
+  if (values.empty()) {
+    page->Note("No parameter histograms: no dataset was fitted.");
+    return;
+  }
+  const int panels = static_cast<int>(values.size()), columns = std::min(panels, 4);
+  const int rows = (panels + columns - 1) / columns;
+  Figure f("campaign-parameters", 280 * columns + 60, 220 * rows + 40);
+  std::ostringstream g;
+  g << "set style fill solid 0.85 noborder\nset grid ytics\nset key off\n"
+    << "set multiplot layout " << rows << "," << columns << "\n";
+  for (const auto& [q, v] : values) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    const int bins = std::clamp(static_cast<int>(std::sqrt(v.size())), 1, 20);
+    const double width = *hi > *lo ? (*hi - *lo) / bins : std::max(std::abs(*lo), 1e-300) * 0.1;
+    std::vector<int> count(bins, 0);
+    for (double x : v) ++count[std::min(bins - 1, static_cast<int>((x - *lo) / width))];
+    Series series;
+    for (int b = 0; b < bins; ++b) series.Row({*lo + (b + 0.5) * width, static_cast<double>(count[b])});
+    const std::string data = f.AddData(series);
+    g << "set title " << GnuplotString(std::string(ParamName(q)) + " (" + Info(q).unit + ")")
+      << " noenhanced\nset boxwidth " << width * 0.9 << "\nset format x '%.3g'\n"
+      << "set xtics rotate by -30\nset yrange [0:*]\nset xrange [" << *lo - width << ":"
+      << *lo + (bins + 1) * width << "]\n"
+      << "plot " << data << " using 1:2 with boxes lc rgb '" << kBlue << "'\n";
+  }
+  g << "unset multiplot\n";
+  f.script = g.str();
+  f.caption = "The fitted value of each free parameter over the datasets that converged (counts "
+              "per bin; a panel per parameter, in its unit).";
+  page->AddFigure(std::move(f));
+}
+
+// How many datasets each verdict has (none, an effect, or failed).
+void VerdictFigure(const std::vector<CampaignRow>& datasets, Page* page) {
+  std::map<std::string, int> counts;
+  for (const CampaignRow& d : datasets) {
+    ++counts[!d.status.ok() ? "failed" : d.verdict && *d.verdict ? EffectName(*d.verdict) : "none"];
+  }
+  std::vector<std::string> names;
+  Series series;
+  for (const auto& [name, n] : counts) {
+    series.Row({static_cast<double>(names.size()), static_cast<double>(n)});
+    names.push_back(name);
+  }
+  const int n = static_cast<int>(names.size());
+  Figure f("campaign-verdicts", std::clamp(300 + 90 * n, 600, 1600), 380);
+  const std::string data = f.AddData(series);
+  std::ostringstream g;
+  g << "set style fill solid 0.85 noborder\nset boxwidth 0.6\nset grid ytics\nset key off\n"
+    << "set xrange [-0.6:" << n - 0.4 << "]\nset yrange [0:*]\n"
+    << CategoryXTics(names, f.width - 150.0, -30) << "set ylabel 'datasets'\n"
+    << "plot " << data << " using 1:2 with boxes lc rgb '" << kOrange << "', " << data
+    << " using 1:2:(sprintf('%d', $2)) with labels offset 0, 0.7\n";
+  f.script = g.str();
+  f.caption = "The datasets by verdict: the effect that explains each one's gap, none, or failed.";
+  page->AddFigure(std::move(f));
+}
+
 }  // namespace
 
 void CampaignPage(const CampaignReport& report, Page* page) {
@@ -92,12 +160,17 @@ void CampaignPage(const CampaignReport& report, Page* page) {
                  {"shard", OptionalTextCell(campaign.shard)},
                  {"jobs", NumberCell(campaign.jobs, "%.0f")},
                  {"seconds", NumberCell(campaign.seconds)},
-                 {"datasets", NumberCell(static_cast<double>(campaign.datasets.size()), "%.0f")}});
+                 {"datasets", NumberCell(static_cast<double>(campaign.datasets.size()), "%.0f")},
+                 {"kept from an earlier run", NumberCell(campaign.resumed, "%.0f")},
+                 {"failed", NumberCell(campaign.failed, "%.0f")}});
   if (campaign.command == ReportKind::kDiagnose) {
     DiagnoseTable(campaign.datasets, page);
     GapFigure(campaign.datasets, page);
+    VerdictFigure(campaign.datasets, page);
   } else {
     IdentifyTable(campaign.datasets, page);
+    page->Heading("Figures");
+    ParameterHistograms(campaign.datasets, page);
   }
 }
 
