@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
-#include <regex>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -329,102 +328,6 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
               summary.body.failed, request.output_dir.c_str());
   if (!WriteFileAtomically(summary_path, ReportText(summary), error)) return kExitUsage;
   return all_ok ? kExitOk : kExitFailure;
-}
-
-bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error) {
-  const std::regex name("campaign\\.([0-9]+)-of-([0-9]+)\\.json");
-  std::map<int, std::string> paths;  // by shard index
-  std::error_code ec;
-  int count = 0;
-  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    std::smatch m;
-    const std::string file = it->path().filename().string();
-    if (!std::regex_match(file, m, name)) continue;
-    const int index = std::stoi(m[1]), of = std::stoi(m[2]);
-    if (count && of != count) {
-      *error = dir + ": " + file + " is a shard of " + std::to_string(of) + ", " +
-               paths.begin()->second + " of " + std::to_string(count) + ": not one campaign";
-      return false;
-    }
-    count = of;
-    paths[index] = it->path().string();
-  }
-  if (ec) {
-    *error = dir + ": cannot read directory: " + ec.message();
-    return false;
-  }
-  if (paths.empty()) {
-    *error = dir + ": no shard summary (campaign.I-of-N.json) to merge";
-    return false;
-  }
-  std::map<std::string, CampaignRow> rows;
-  CampaignBody& body = merged->body;
-  body = CampaignBody{};
-  for (const auto& [index, path] : paths) {
-    Json json;
-    CampaignReport shard;
-    if (!LoadReport(path, &json, error) || !ReadReport(json, &shard, error)) {
-      *error = path + ": " + *error;
-      return false;
-    }
-    const auto differs = [&](const std::string& what) {
-      *error = path + ": its " + what + " differ(s) from " + paths.begin()->second +
-               "'s: not a shard of the same campaign";
-      return false;
-    };
-    if (index == paths.begin()->first) {
-      body.command = shard.body.command;
-      body.campaign_datasets = shard.body.campaign_datasets;
-      body.options = shard.body.options;
-      body.jobs = shard.body.jobs;
-    } else if (shard.body.command != body.command) {
-      return differs("command");
-    } else if (shard.body.campaign_datasets != body.campaign_datasets) {
-      return differs("campaign_datasets");
-    } else if (shard.body.options != body.options) {
-      return differs("options");
-    }
-    if (shard.body.shard != std::to_string(index) + "/" + std::to_string(count)) {
-      *error = path + ": says it is shard " + shard.body.shard + ", its name " +
-               std::to_string(index) + "/" + std::to_string(count);
-      return false;
-    }
-    body.seconds += shard.body.seconds;
-    body.resumed += shard.body.resumed;
-    body.failed += shard.body.failed;
-    for (const CampaignRow& r : shard.body.datasets) {
-      if (!rows.emplace(r.dataset, r).second) {
-        *error = path + ": " + r.dataset + " is also in another shard";
-        return false;
-      }
-    }
-  }
-  std::string missing;
-  int n_missing = 0;
-  for (int i = 0; i < count; ++i) {
-    if (paths.count(i)) continue;
-    missing += (n_missing++ ? ", " : "") + ("campaign." + std::to_string(i) + "-of-" +
-                                             std::to_string(count) + ".json");
-  }
-  if (n_missing) {
-    *error = dir + ": " + std::to_string(n_missing) + " of " + std::to_string(count) +
-             " shard summaries missing: " + missing + " (run those shards, then merge)";
-    return false;
-  }
-  for (const std::string& d : body.campaign_datasets) {
-    const auto it = rows.find(d);
-    if (it == rows.end()) {
-      *error = dir + ": no shard has a row for " + d;
-      return false;
-    }
-    body.datasets.push_back(it->second);
-  }
-  if (rows.size() != body.datasets.size()) {
-    *error = dir + ": a shard has a row for a dataset not in the campaign's list";
-    return false;
-  }
-  body.shard = "merged";
-  return true;
 }
 
 }  // namespace ringid

@@ -13,6 +13,7 @@
 #include "estimation/diagnose.h"
 #include "estimation/identify.h"
 #include "model/rigid_ring_model.h"
+#include "report/campaign_merge.h"
 #include "report/report.h"
 
 namespace ringid {
@@ -81,12 +82,6 @@ struct CampaignRequest {
 // kept (resumed). Otherwise 0 when every analysis succeeded, else 1.
 int RunCampaign(const CampaignRequest& request, const ModalModel& model,
                 const CampaignWork& work, std::string* error);
-
-// `ringid merge`: the shard summaries campaign.I-of-N.json in `dir`, checked
-// to be the shards of one campaign (same datasets, options, command and N;
-// none twice, none missing: named), as one summary in the whole list's order.
-// False with one line.
-bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error);
 
 }  // namespace ringid
 

@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "apps/campaign.h"
 
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
 #include "model/rigid_ring_model.h"
+#include "report/campaign_merge.h"
 #include "validation/speed_cases.h"
 
 namespace ringid {

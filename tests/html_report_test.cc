@@ -678,12 +678,20 @@ TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSp
   EXPECT_NE(m.html.find("Critical speeds"), std::string::npos);
 }
 
-TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGaps) {
+TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGapsAndTheVerdicts) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Campaign();
-  ExpectWellFormed(m.html, 1);
+  ExpectWellFormed(m.html, 2);
   EXPECT_NE(Figures(m.html).find(">case000<"), std::string::npos);
   EXPECT_NE(m.html.find(m.report["datasets"][0]["verdict"].get<std::string>()), std::string::npos);
+  // The verdicts figure counts each verdict: its bars are labelled by name.
+  std::map<std::string, int> counts;
+  for (const json& row : m.report["datasets"]) {
+    ++counts[row.contains("verdict") && !row["verdict"].is_null() ? row["verdict"].get<std::string>() : "none"];
+  }
+  for (const auto& [verdict, n] : counts) {
+    EXPECT_NE(Figures(m.html).find(">" + Shown(verdict) + "<"), std::string::npos) << verdict;
+  }
 }
 
 TEST(HtmlReportTest, BenchPaperDrawsTable3) {

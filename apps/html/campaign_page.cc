@@ -144,7 +144,7 @@ void VerdictFigure(const std::vector<CampaignRow>& datasets, Page* page) {
   std::ostringstream g;
   g << "set style fill solid 0.85 noborder\nset boxwidth 0.6\nset grid ytics\nset key off\n"
     << "set xrange [-0.6:" << n - 0.4 << "]\nset yrange [0:*]\n"
-    << CategoryXTics(names, f.width - 150.0, -30) << "set ylabel 'datasets'\n"
+    << CategoryXTics(Pretty(names), f.width - 150.0, -30) << "set ylabel 'datasets'\n"
     << "plot " << data << " using 1:2 with boxes lc rgb '" << kOrange << "', " << data
     << " using 1:2:(sprintf('%d', $2)) with labels offset 0, 0.7\n";
   f.script = g.str();

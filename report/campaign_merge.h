@@ -1,0 +1,19 @@
+// `ringid merge`: the shard summaries of one campaign as one summary.
+#ifndef RINGID_REPORT_CAMPAIGN_MERGE_H_
+#define RINGID_REPORT_CAMPAIGN_MERGE_H_
+
+#include <string>
+
+#include "report/report.h"
+
+namespace ringid {
+
+// The shard summaries campaign.I-of-N.json in `dir`, checked to be the
+// shards of one campaign (same datasets, options, command and N; no dataset
+// twice, no shard missing: named), as one summary in the whole list's order
+// (shard "merged"; its provenance left for the caller). False with one line.
+bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error);
+
+}  // namespace ringid
+
+#endif  // RINGID_REPORT_CAMPAIGN_MERGE_H_
