@@ -563,8 +563,8 @@ bool LoadParameterSet(const std::string& path, Parameters* p,
                       [&](const json& j) { CheckParameterSet(j, p, undetermined); });
 }
 
-bool ReadInputFile(const std::string& path, std::string* text,
-                   LoadError* error) {
+bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
+                   long max_bytes) {
   error->file = path;
   error->field = "";
   std::ifstream in(path, std::ios::binary);
@@ -579,8 +579,8 @@ bool ReadInputFile(const std::string& path, std::string* text,
     return false;
   }
   *text = buffer.str();
-  if (static_cast<long>(text->size()) > kMaxFileBytes) {
-    error->message = "larger than " + std::to_string(kMaxFileBytes) + " bytes";
+  if (static_cast<long>(text->size()) > max_bytes) {
+    error->message = "larger than " + std::to_string(max_bytes) + " bytes";
     return false;
   }
   return true;

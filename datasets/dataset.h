@@ -104,8 +104,9 @@ struct LoadError {
   std::string OneLine() const;
 };
 
-// Reads a whole input file (at most kMaxFileBytes). False with `error` set.
-bool ReadInputFile(const std::string& path, std::string* text, LoadError* error);
+// Reads a whole input file (at most `max_bytes`). False with `error` set.
+bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
+                   long max_bytes = kMaxFileBytes);
 // Parses an input file's text as JSON, refusing duplicate keys and nesting
 // deeper than kMaxJsonDepth; a syntax error names where it is.
 bool ParseJsonInput(const std::string& text, nlohmann::ordered_json* out, LoadError* error);

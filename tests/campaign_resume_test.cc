@@ -162,6 +162,32 @@ TEST(CampaignResumeTest, KeepGoingMakesABadDatasetOneFailedRowAndWithoutItNothin
   EXPECT_EQ(summary["datasets"][1]["status"], "success");
 }
 
+// A campaign of thousands of datasets has a summary past the 4 MiB an input
+// file may be; `ringid report` still renders it.
+TEST(CampaignResumeTest, ASummaryOfThousandsOfRowsRendersAsAPage) {
+  CampaignReport r;
+  r.body.shard = "merged";
+  for (int i = 0; i < 7000; ++i) {
+    CampaignRow row;
+    row.dataset = "data/tire" + std::to_string(i) + ".json";
+    row.report_file = "out/tire" + std::to_string(i) + ".json";
+    row.status = Status::Success("converged");
+    row.converged = true;
+    row.cost = 10 + i % 7;
+    std::map<Param, double> values;
+    for (int k = 0; k < 14; ++k) values[ParamAt(k + 6)] = 1e5 * (1 + 1e-3 * ((i * k) % 17));
+    row.parameters = values;
+    r.body.campaign_datasets.push_back(row.dataset);
+    r.body.datasets.push_back(row);
+  }
+  const std::string json = Scratch("big_campaign.json"), html = Scratch("big_campaign.html");
+  std::ofstream(json) << ReportText(r);
+  ASSERT_GT(fs::file_size(json), 4u << 20);
+  const RunResult out = Ringid("report --input=" + json + " --output=" + html);
+  ASSERT_EQ(out.status, 0) << out.err;
+  EXPECT_NE(ReadFile(html).find("data/tire6999.json"), std::string::npos);
+}
+
 TEST(CampaignResumeTest, ASlurmJobArrayMapsOntoShardsAndAnythingElseIsSaid) {
   const auto shard_of = [](std::map<std::string, std::string> env, Shard* s, std::string* e) {
     return SlurmShard(
