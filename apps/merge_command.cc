@@ -20,10 +20,12 @@ int MergeCommand(int argc, char** argv) {
   std::string error;
   if (!MergeShards(FLAGS_output_dir, &merged, &error)) return Usage(error);
   std::vector<std::pair<std::string, std::string>> shards;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::filesystem::path& entry = it->path();
+    const std::string name = entry.filename().string();
     if (name.rfind("campaign.", 0) == 0 && name.find("-of-") != std::string::npos) {
-      shards.emplace_back("shard", entry.path().string());
+      shards.emplace_back("shard", entry.string());
     }
   }
   merged.provenance = MakeProvenance(argc, argv, shards, std::nullopt);

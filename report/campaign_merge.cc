@@ -35,7 +35,7 @@ bool ReadSummary(const std::string& path, CampaignReport* report, std::string* e
 }  // namespace
 
 bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error) {
-  const std::regex name("campaign\\.([0-9]+)-of-([0-9]+)\\.json");
+  const std::regex name("campaign\\.([0-9]{1,6})-of-([0-9]{1,6})\\.json");
   std::map<int, std::string> paths;  // by shard index
   std::error_code ec;
   int count = 0;
@@ -44,6 +44,10 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
     const std::string file = it->path().filename().string();
     if (!std::regex_match(file, m, name)) continue;
     const int index = std::stoi(m[1]), of = std::stoi(m[2]);
+    if (index >= of) {
+      *error = dir + ": " + file + " names no shard (I/N needs 0 <= I < N)";
+      return false;
+    }
     if (count && of != count) {
       *error = dir + ": " + file + " is a shard of " + std::to_string(of) + ", " +
                paths.begin()->second + " of " + std::to_string(count) + ": not one campaign";
