@@ -78,6 +78,32 @@ DEFINE_string(format, "", "what to write: the rigid-ring part of an MF-Swift .ti
 
 namespace ringid {
 
+const std::vector<std::string>& FitFlags() {
+  static const std::vector<std::string> flags = {
+      "dataset", "output", "method", "starts", "seed", "weighting", "relative_sigma",
+      "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix", "threads"};
+  return flags;
+}
+
+const std::vector<std::string>& PredictFlags() {
+  static const std::vector<std::string> flags = {
+      "parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"};
+  return flags;
+}
+
+const std::vector<std::string>& SimulateFlags() {
+  static const std::vector<std::string> flags = {
+      "parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
+      "damping_noise", "shape_noise", "prior_spread", "fix", "seed", "speeds", "loads",
+      "lug_forces", "response_noise"};
+  return flags;
+}
+
+const std::vector<std::string>& ForcesFlags() {
+  static const std::vector<std::string> flags = {"parameters", "dataset", "effects", "output"};
+  return flags;
+}
+
 int Usage(const std::string& line) {
   std::fprintf(stderr, "ringid: %s\n", line.c_str());
   return kExitUsage;

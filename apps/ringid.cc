@@ -348,10 +348,7 @@ int ExportCommand(int, char**) {
   return rc;
 }
 
-// The flags every fitting command takes, and a campaign's.
-const std::vector<std::string> kFitFlags = {
-    "dataset", "output", "method", "starts", "seed", "weighting", "relative_sigma",
-    "shapes", "damping", "shape_convention", "derivatives", "effects", "bounds", "fix", "threads"};
+// A campaign's flags.
 const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard"};
 
 int SchemaCommand(int, char**) {
@@ -376,38 +373,34 @@ const std::vector<Command>& Commands() {
       {"predict", "--parameters=FILE | --dataset=FILE",
        "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
        "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
-       {"parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"},
-       Predict},
+       PredictFlags(), Predict},
       {"identify", "--dataset=FILE",
        "fit parameters to a dataset, with covariance and identifiability;\n"
        "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"
        "one report per dataset, a summary table and DIR/campaign.json\n"
        "(campaign.I-of-N.json for a --shard)",
-       Joined(Joined(kFitFlags, {"save_parameters"}), kCampaignFlags), IdentifyCommand},
+       Joined(Joined(FitFlags(), {"save_parameters"}), kCampaignFlags), IdentifyCommand},
       {"identifiability", "--dataset=FILE",
        "what the data determine at the fitted point: rank, classes, Wald and\n"
        "profile intervals, free combinations, collinear pairs, identifiable\n"
        "subset, experiment advice",
-       kFitFlags, IdentifiabilityCommand},
+       FitFlags(), IdentifiabilityCommand},
       {"compare", "--dataset=FILE",
        "Levenberg-Marquardt and the Downhill Simplex from the same --starts:\n"
        "success rate, final costs, evaluations, time per fit",
-       kFitFlags, CompareCommand},
+       FitFlags(), CompareCommand},
       {"simulate", "--parameters=FILE --output=DATASET --truth=FILE",
        "a dataset measured from a parameter set, optionally with effects (each\n"
        "sized by --set or --shift), and a separate truth file; one condition per\n"
        "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
-       {"parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
-        "damping_noise", "shape_noise", "prior_spread", "fix", "seed", "speeds", "loads",
-        "lug_forces", "response_noise"},
-       SimulateCommand},
+       SimulateFlags(), SimulateCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
        "the baseline and the others are tried on top; with --output_dir, a\n"
        "campaign as for identify",
-       Joined(Joined(kFitFlags, {"level"}), kCampaignFlags), DiagnoseCommand},
+       Joined(Joined(FitFlags(), {"level"}), kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
        "the accuracy, conditioning and speed suites, on the paper's data installed\n"
        "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"
@@ -430,7 +423,7 @@ const std::vector<Command>& Commands() {
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"
        "report (its covariance gives std_total) or a parameter set: docs/forces.md",
-       {"parameters", "dataset", "effects", "output"}, ForcesCommand},
+       ForcesFlags(), ForcesCommand},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
       {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},
