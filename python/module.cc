@@ -1,0 +1,427 @@
+// The Python module `ringid` (issue 25): the command line's operations
+// in-process, on its typed inputs and reports. Keyword arguments are the
+// flags of apps/flags.cc, with their defaults and descriptions; errors are
+// ringid.Error with the command line's one line.
+#include <complex>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glog/logging.h>
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "apps/flags.h"
+#include "apps/forces_command.h"
+#include "apps/predict_command.h"
+#include "estimation/compare.h"
+#include "estimation/diagnose.h"
+#include "estimation/identifiability.h"
+#include "estimation/identify.h"
+#include "python/convert.h"
+#include "python/problem.h"
+#include "python/results.h"
+
+namespace ringid::python {
+namespace {
+
+using IdentifyHeld = Held<IdentifyReport>;
+
+// Signals that came during a call without the GIL (Ctrl-C) raise now.
+void CheckSignals() {
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+std::shared_ptr<const LoadedDataset> DatasetArg(py::handle dataset) {
+  if (py::isinstance<LoadedDataset>(dataset)) return dataset.cast<std::shared_ptr<LoadedDataset>>();
+  return LoadDatasetFrom(dataset);
+}
+
+// The fit options of the flags in scope and the dataset with --fix applied,
+// as ReadFitInputs reads them.
+struct FitInputs {
+  IdentifyOptions options;
+  std::vector<const Effect*> effects;
+  Dataset dataset;
+  std::string source;
+};
+FitInputs ReadFit(py::handle dataset) {
+  FitInputs in;
+  const auto loaded = DatasetArg(dataset);
+  in.source = loaded->Name();
+  FLAGS_dataset = in.source;
+  std::string error;
+  if (!ReadFitOptions(&in.options, &in.effects, &error)) throw Error::Usage(error);
+  in.dataset = loaded->dataset;
+  if (!ApplyFix(&in.dataset, &error)) throw Error::Usage(error);
+  FLAGS_dataset = loaded->source;  // the provenance's input: none for a dict
+  return in;
+}
+
+template <class Result>
+void CheckInput(const FitInputs& in, const Result& r) {
+  if (r.status.invalid_input()) {
+    throw Error{in.source + ": " + r.status.message, in.source, "", r.status.message};
+  }
+}
+
+std::shared_ptr<IdentifyHeld> IdentifyPy(py::handle dataset, const py::kwargs& kw) {
+  FlagScope scope("identify", Without(FitFlags(), {"dataset", "output"}), kw);
+  FitInputs in = ReadFit(dataset);
+  auto held = std::make_shared<IdentifyHeld>();
+  IdentifyResult& r = held->report.body.result;
+  {
+    py::gil_scoped_release release;
+    const RigidRingModel model(in.effects);
+    Identify(model, in.dataset, in.options, &r);
+  }
+  CheckSignals();
+  CheckInput(in, r);
+  held->report.provenance = scope.Run(FLAGS_seed);
+  held->report.body.dataset = in.dataset.name;
+  return held;
+}
+
+std::shared_ptr<Held<IdentifiabilityReport>> IdentifiabilityPy(py::handle dataset,
+                                                               const py::kwargs& kw) {
+  FlagScope scope("identifiability", Without(FitFlags(), {"dataset", "output"}), kw);
+  FitInputs in = ReadFit(dataset);
+  auto held = std::make_shared<Held<IdentifiabilityReport>>();
+  IdentifiabilityOptions o;
+  o.fit = in.options;
+  {
+    py::gil_scoped_release release;
+    const RigidRingModel model(in.effects);
+    AnalyzeIdentifiability(model, in.dataset, o, &held->report.body.result);
+  }
+  CheckSignals();
+  CheckInput(in, held->report.body.result);
+  held->report.provenance = scope.Run(FLAGS_seed);
+  held->report.body.dataset = in.dataset.name;
+  return held;
+}
+
+std::shared_ptr<Held<CompareReport>> ComparePy(py::handle dataset, const py::kwargs& kw) {
+  FlagScope scope("compare", Without(FitFlags(), {"dataset", "output"}), kw);
+  FitInputs in = ReadFit(dataset);
+  auto held = std::make_shared<Held<CompareReport>>();
+  CompareOptions o;
+  o.fit = in.options;
+  {
+    py::gil_scoped_release release;
+    const RigidRingModel model(in.effects);
+    CompareMethods(model, in.dataset, o, &held->report.body.result);
+  }
+  CheckSignals();
+  CheckInput(in, held->report.body.result);
+  held->report.provenance = scope.Run(FLAGS_seed);
+  held->report.body.dataset = in.dataset.name;
+  return held;
+}
+
+std::shared_ptr<Held<DiagnoseReport>> DiagnosePy(py::handle dataset, const py::kwargs& kw) {
+  FlagScope scope("diagnose", Without(Joined(FitFlags(), {"level"}), {"dataset", "output"}), kw);
+  if (!(FLAGS_level > 0 && FLAGS_level < 1)) throw Error::Usage("--level: must lie in (0, 1)");
+  FitInputs in = ReadFit(dataset);
+  auto held = std::make_shared<Held<DiagnoseReport>>();
+  DiagnoseOptions o;
+  o.fit = in.options;
+  o.effect_significance = FLAGS_level;
+  {
+    py::gil_scoped_release release;
+    const RigidRingModel baseline(in.effects);
+    Diagnose(baseline, in.dataset, o, &held->report.body.result);
+  }
+  CheckSignals();
+  CheckInput(in, held->report.body.result);
+  held->report.provenance = scope.Run(FLAGS_seed);
+  held->report.body.dataset = in.dataset.name;
+  return held;
+}
+
+std::vector<const Effect*> EffectsOfFlags() {
+  std::vector<const Effect*> effects;
+  std::string error;
+  if (!ParseEffects(&effects, &error)) throw Error::Usage(error);
+  return effects;
+}
+
+std::map<Param, double> SetOfFlags() {
+  std::map<Param, double> set;
+  std::string error;
+  if (!ParseSet(&set, &error)) throw Error::Usage(error);
+  return set;
+}
+
+std::shared_ptr<Held<PredictReport>> PredictPy(py::handle parameters, py::handle dataset,
+                                               const py::kwargs& kw) {
+  FlagScope scope("predict", Without(PredictFlags(), {"parameters", "dataset", "output"}), kw);
+  const std::vector<const Effect*> effects = EffectsOfFlags();
+  if (parameters.is_none() == dataset.is_none()) {
+    throw Error::Usage("predict needs exactly one of parameters= or dataset=");
+  }
+  const std::map<Param, double> set = SetOfFlags();
+  std::shared_ptr<const LoadedParameters> p;
+  std::shared_ptr<const LoadedDataset> d;
+  if (!parameters.is_none()) {
+    if (py::isinstance<LoadedParameters>(parameters)) {  // loaded before: --set over it
+      auto over = std::make_shared<LoadedParameters>(*parameters.cast<std::shared_ptr<LoadedParameters>>());
+      for (const auto& [q, v] : set) over->values[q] = v;
+      p = over;
+    } else {
+      p = LoadParametersFrom(parameters, set);
+    }
+    FLAGS_parameters = p->source;
+  } else {
+    d = DatasetArg(dataset);
+    FLAGS_dataset = d->source;
+  }
+  auto held = std::make_shared<Held<PredictReport>>();
+  std::string solve_error, error;
+  if (!PredictBodyOf(p ? p->values : Parameters{}, d ? &d->dataset : nullptr, set, effects,
+                     p ? p->Name() : d->Name(), p ? p->notes : std::vector<std::string>{},
+                     &held->report.body, &solve_error, &error)) {
+    throw Error::Usage(error);
+  }
+  held->report.provenance = scope.Run(std::nullopt);
+  return held;
+}
+
+std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle dataset,
+                                             const py::kwargs& kw) {
+  FlagScope scope("forces", Without(ForcesFlags(), {"parameters", "dataset", "output"}), kw);
+  const std::vector<const Effect*> effects = EffectsOfFlags();
+  ForceParameters fp;
+  std::string source = "<identify result>";
+  if (py::isinstance<IdentifyHeld>(parameters)) {
+    const IdentifyResult& r = parameters.cast<std::shared_ptr<IdentifyHeld>>()->report.body.result;
+    if (!r.status.ok()) {
+      throw Error{source + ": status: the identification did not succeed", source, "status",
+                  "the identification did not succeed; its values are no estimate"};
+    }
+    fp = ForceParameters::From(r);
+  } else if (py::isinstance<LoadedParameters>(parameters)) {
+    const auto p = parameters.cast<std::shared_ptr<LoadedParameters>>();
+    source = p->Name();
+    fp.shared = p->values;
+    fp.source = kParameterSetForces;
+  } else {
+    const auto path = PathOf(parameters);
+    if (!path) throw Error::Usage("forces: parameters= a path, an IdentifyResult or a ParameterSet");
+    source = *path;
+    LoadError load;
+    if (!ReadForceParameters(*path, &fp, &load)) throw Error::Of(load);
+    FLAGS_parameters = *path;
+  }
+  std::shared_ptr<const LoadedResponses> data =
+      py::isinstance<LoadedResponses>(dataset) ? dataset.cast<std::shared_ptr<LoadedResponses>>()
+                                               : LoadResponsesFrom(dataset);
+  FLAGS_dataset = data->source;
+  auto held = std::make_shared<Held<ForcesReport>>();
+  std::string error;
+  bool ok;
+  {
+    py::gil_scoped_release release;
+    ok = ForcesOf(fp, data->data, effects, source, data->Name(), &held->report.body.result, &error);
+  }
+  if (!ok) throw Error::Usage(error);
+  CheckSignals();
+  held->report.provenance = scope.Run(std::nullopt);
+  held->report.body.dataset = data->data.name;
+  return held;
+}
+
+py::array_t<double> ModeColumn(const IdentifyResult& r, double ModeFit::*field) {
+  py::array_t<double> out(static_cast<py::ssize_t>(r.modes.size()));
+  for (size_t i = 0; i < r.modes.size(); ++i) out.mutable_at(i) = r.modes[i].*field;
+  return out;
+}
+
+void BindIdentify(py::module_& m) {
+  BindResult<IdentifyReport>(m, "IdentifyResult",
+                             "What ringid.identify returns: the identify report of the command line.")
+      .def_property_readonly("x", [](const IdentifyHeld& h) { return h.report.body.result.x; },
+                             "The fitted coordinates (log for positive parameters), as covariance.names.")
+      .def_property_readonly("coordinate_names",
+                             [](const IdentifyHeld& h) { return h.report.body.result.coordinate_names; },
+                             "The coordinates' names, in the order of x and of the matrices.")
+      .def_property_readonly("covariance_matrix",
+                             [](const IdentifyHeld& h) { return h.report.body.result.uncertainty.covariance; },
+                             "The coordinates' covariance (numpy), the report's covariance.matrix.")
+      .def_property_readonly("jacobian",
+                             [](const IdentifyHeld& h) { return h.report.body.result.uncertainty.jacobian; },
+                             "The weighted residuals' Jacobian at the fit (numpy, residuals x coordinates).")
+      .def_property_readonly("singular_values",
+                             [](const IdentifyHeld& h) { return h.report.body.result.uncertainty.singular_values; },
+                             "The Jacobian's singular values, descending (numpy).")
+      .def_property_readonly("null_space",
+                             [](const IdentifyHeld& h) { return h.report.body.result.uncertainty.null_space; },
+                             "Columns: coordinate directions the data leave free (numpy).")
+      .def_property_readonly("measured_hz",
+                             [](const IdentifyHeld& h) { return ModeColumn(h.report.body.result, &ModeFit::measured_hz); },
+                             "The measured frequencies of the modes fitted (numpy), as modes.")
+      .def_property_readonly("model_hz",
+                             [](const IdentifyHeld& h) { return ModeColumn(h.report.body.result, &ModeFit::model_hz); },
+                             "The fitted model's frequencies of those modes (numpy), as modes.");
+}
+
+void BindPredict(py::module_& m) {
+  using H = Held<PredictReport>;
+  BindResult<PredictReport>(m, "PredictResult",
+                            "What ringid.predict returns: the predict report of the command line.")
+      .def_property_readonly("frequencies", [](const H& h) {
+        std::vector<double> f;
+        for (const PredictedMode& mode : h.report.body.modes) f.push_back(mode.model_hz);
+        return py::array_t<double>(f.size(), f.data());
+      }, "Each mode's damped frequency in Hz (numpy), as modes.")
+      .def_property_readonly("damping_ratios", [](const H& h) {
+        std::vector<double> z;
+        for (const PredictedMode& mode : h.report.body.modes) z.push_back(mode.damping_ratio);
+        return py::array_t<double>(z.size(), z.data());
+      }, "Each mode's damping ratio (numpy), as modes.")
+      .def_property_readonly("dofs", [](const H& h) {
+        std::vector<std::string> names;
+        for (const std::string& name : NamesOf<Dof>()) names.push_back(name);
+        return names;
+      }, "The degrees of freedom, the columns of shapes.")
+      .def_property_readonly("shapes", [](const H& h) {
+        const auto names = NamesOf<Dof>();
+        py::array_t<std::complex<double>> s({h.report.body.modes.size(), names.size()});
+        auto a = s.mutable_unchecked<2>();
+        for (size_t i = 0; i < h.report.body.modes.size(); ++i) {
+          for (size_t j = 0; j < names.size(); ++j) {
+            const auto& shape = h.report.body.modes[i].shape;
+            const auto it = shape.find(*FromString<Dof>(names[j]));
+            a(i, j) = it == shape.end() ? std::complex<double>() : it->second;
+          }
+        }
+        return s;
+      }, "The complex mode shapes (numpy, modes x dofs; 0 where a mode has no component).");
+}
+
+void BindInputs(py::module_& m) {
+  py::class_<LoadedDataset, std::shared_ptr<LoadedDataset>>(
+      m, "Dataset", "A modal dataset as ringid reads it (ringid.load_dataset).")
+      .def_property_readonly("name", [](const LoadedDataset& d) { return d.dataset.name; })
+      .def_property_readonly("description", [](const LoadedDataset& d) { return d.dataset.description; })
+      .def_property_readonly("source", &LoadedDataset::Name, "The file it came from, or <dict>.")
+      .def("to_dict", [](const LoadedDataset& d) { return JsonLoads(DatasetToJson(d.dataset)); },
+           "The dataset as ringid writes it (the format it was read in, checked).")
+      .def("__repr__", [](const LoadedDataset& d) {
+        return "<ringid.Dataset '" + d.dataset.name + "' from " + d.Name() + ">";
+      });
+  py::class_<LoadedParameters, std::shared_ptr<LoadedParameters>>(
+      m, "ParameterSet", "A parameter set (ringid-parameters/1, an identify report or a .tir).")
+      .def_property_readonly("values", [](const LoadedParameters& p) {
+        py::dict out;
+        for (const std::string& name : NamesOf<Param>()) {
+          const Param q = *ParseParam(name);
+          if (p.values.IsSet(q)) out[name.c_str()] = p.values[q];
+        }
+        return out;
+      }, "The values set, by parameter name (SI units, docs/conventions.md).")
+      .def_property_readonly("notes", [](const LoadedParameters& p) { return p.notes; },
+                             "Where a .tir's values came from.")
+      .def_property_readonly("source", &LoadedParameters::Name)
+      .def("__getitem__", [](const LoadedParameters& p, const std::string& name) {
+        const auto q = ParseParam(name);
+        if (!q || !p.values.IsSet(*q)) throw py::key_error(name);
+        return p.values[*q];
+      })
+      .def("__repr__", [](const LoadedParameters& p) { return "<ringid.ParameterSet from " + p.Name() + ">"; });
+  py::class_<LoadedResponses, std::shared_ptr<LoadedResponses>>(
+      m, "ResponseDataset", "The axle's response at the lug orders (ringid-lug-response/1).")
+      .def_property_readonly("name", [](const LoadedResponses& d) { return d.data.name; })
+      .def_property_readonly("source", &LoadedResponses::Name)
+      .def("to_dict", [](const LoadedResponses& d) { return JsonLoads(ResponseDatasetToJson(d.data)); });
+}
+
+std::string Doc(const std::string& signature, const std::string& what,
+                const std::vector<std::string>& flags) {
+  return signature + "\n\n" + what + "\n\nKeyword arguments (the command line's flags):\n" +
+         FlagsDoc(flags);
+}
+
+void BindOperations(py::module_& m) {
+  const std::vector<std::string> fit = Without(FitFlags(), {"dataset", "output"});
+  const std::string dataset_arg =
+      "dataset: a path, a dict (the file's JSON) or a ringid.Dataset; raises ringid.Error on "
+      "bad input, as `ringid` exits 2.";
+  m.def("load_dataset", &LoadDatasetFrom, py::arg("source"),
+        "load_dataset(source) -> Dataset\n\nA modal dataset from a path or a dict, checked as "
+        "the command line checks --dataset; ringid.Error names the file and field.");
+  m.def("load_parameters", [](py::handle source, py::object set) {
+    FlagScope scope("load_parameters", {"set"}, set.is_none() ? py::kwargs() : py::kwargs(py::dict(py::arg("set") = set)));
+    return LoadParametersFrom(source, SetOfFlags());
+  }, py::arg("source"), py::arg("set") = py::none(),
+        "load_parameters(source, set=None) -> ParameterSet\n\nA parameter set from a path "
+        "(ringid-parameters/1, an identify report or a .tir) or a dict, with set={NAME: VALUE} "
+        "(or 'NAME=VALUE,...') over it, as --parameters and --set.");
+  m.def("load_responses", &LoadResponsesFrom, py::arg("source"),
+        "load_responses(source) -> ResponseDataset\n\nA response dataset "
+        "(ringid-lug-response/1) from a path or a dict, for ringid.forces.");
+  m.def("identify", &IdentifyPy, py::arg("dataset"),
+        Doc("identify(dataset, **options) -> IdentifyResult",
+            "Fits the parameters to a dataset, with covariance and identifiability: "
+            "`ringid identify`. " + dataset_arg, fit).c_str());
+  m.def("identifiability", &IdentifiabilityPy, py::arg("dataset"),
+        Doc("identifiability(dataset, **options) -> IdentifiabilityResult",
+            "What the data determine at the fitted point: `ringid identifiability`. " + dataset_arg,
+            fit).c_str());
+  m.def("compare", &ComparePy, py::arg("dataset"),
+        Doc("compare(dataset, **options) -> CompareResult",
+            "Levenberg-Marquardt and the Downhill Simplex from the same starts: `ringid compare`. " +
+                dataset_arg, fit).c_str());
+  m.def("diagnose", &DiagnosePy, py::arg("dataset"),
+        Doc("diagnose(dataset, **options) -> DiagnoseResult",
+            "The gap between the baseline and the data, and the effect that explains it: "
+            "`ringid diagnose`. " + dataset_arg, Joined(fit, {"level"})).c_str());
+  m.def("predict", &PredictPy, py::arg("parameters") = py::none(), py::arg("dataset") = py::none(),
+        Doc("predict(parameters=None, dataset=None, **options) -> PredictResult",
+            "The modes of a parameter set (path, dict or ParameterSet) or of a dataset's initial "
+            "values, standing and at speeds: `ringid predict`.",
+            Without(PredictFlags(), {"parameters", "dataset", "output"})).c_str());
+  m.def("forces", &ForcesPy, py::arg("parameters"), py::arg("dataset"),
+        Doc("forces(parameters, dataset, **options) -> ForcesResult",
+            "The lug forces from the axle's response: `ringid forces`. parameters: an identify "
+            "report's or parameter set's path, an IdentifyResult or a ParameterSet; dataset: a "
+            "response dataset (path, dict or ResponseDataset).",
+            Without(ForcesFlags(), {"parameters", "dataset", "output"})).c_str());
+}
+
+}  // namespace
+}  // namespace ringid::python
+
+PYBIND11_MODULE(ringid, m) {
+  using namespace ringid;          // NOLINT
+  using namespace ringid::python;  // NOLINT
+  m.doc() =
+      "ringid: rigid-ring tire parameters from modal data, in-process.\n\n"
+      "The operations of the command line `ringid` on the same inputs, with its flags as "
+      "keyword arguments (same names and defaults); each result's to_dict() is the JSON report "
+      "`ringid COMMAND --output=...` writes. Bad input raises ringid.Error (a ValueError) with "
+      "the line the command line prints.";
+  m.attr("__version__") = RINGID_VERSION;
+  FLAGS_minloglevel = 3;  // as the command line: failed evaluations are in the report
+  RegisterError(m);
+  BindInputs(m);
+  BindIdentify(m);
+  BindPredict(m);
+  BindResult<IdentifiabilityReport>(m, "IdentifiabilityResult",
+                                    "What ringid.identifiability returns: its report.")
+      .def_property_readonly("singular_values", [](const Held<IdentifiabilityReport>& h) {
+        return h.report.body.result.singular_values;
+      }, "The Jacobian's singular values, descending (numpy).")
+      .def_property_readonly("correlation", [](const Held<IdentifiabilityReport>& h) {
+        return h.report.body.result.correlation;
+      }, "The coordinates' correlation matrix (numpy; empty without a covariance).");
+  BindResult<CompareReport>(m, "CompareResult", "What ringid.compare returns: its report.");
+  BindResult<DiagnoseReport>(m, "DiagnoseResult", "What ringid.diagnose returns: its report.");
+  BindResult<ForcesReport>(m, "ForcesResult", "What ringid.forces returns: its report.");
+  BindOperations(m);
+  BindProblem(m);
+}
