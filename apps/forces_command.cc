@@ -131,6 +131,7 @@ bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data,
              ": missing: " + parameters + " fitted " + ParamName(missing[0]) +
              " per condition (" + fitted + "); name the condition '" + c.name +
              "' as one of those, or give its value in known";
+    return false;
   }
   EstimateForces(model, fp, data, ForcesOptions{}, r);
   return true;

@@ -18,6 +18,8 @@
 #include "apps/flags.h"
 #include "apps/forces_command.h"
 #include "apps/predict_command.h"
+#include "apps/reports.h"
+#include "apps/simulate_command.h"
 #include "estimation/compare.h"
 #include "estimation/diagnose.h"
 #include "estimation/identifiability.h"
@@ -235,6 +237,60 @@ std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle d
   return held;
 }
 
+// simulate's result: the dataset and truth the command line would write.
+struct SimulateHeld {
+  Simulated simulated;
+  std::string output, truth;  // the files they would be written to
+};
+
+std::shared_ptr<SimulateHeld> SimulatePy(py::handle parameters, const py::kwargs& kw) {
+  FlagScope scope("simulate", Without(SimulateFlags(), {"parameters", "lug_forces", "response_noise"}), kw);
+  std::optional<std::string> path = PathOf(parameters);
+  if (py::isinstance<LoadedParameters>(parameters)) {
+    path = parameters.cast<std::shared_ptr<LoadedParameters>>()->source;
+  }
+  if (!path || path->empty()) {
+    throw Error::Usage("simulate: parameters= a parameter set's path (or a ParameterSet read from one)");
+  }
+  FLAGS_parameters = *path;
+  if (FLAGS_output.empty()) FLAGS_output = "simulated.json";
+  if (FLAGS_truth.empty()) FLAGS_truth = "simulated_truth.json";
+  auto held = std::make_shared<SimulateHeld>();
+  held->output = FLAGS_output;
+  held->truth = FLAGS_truth;
+  std::string error;
+  bool failed = false;
+  if (!SimulateFromFlags(false, &held->simulated, &error, &failed)) {
+    throw Error::Usage(failed ? "simulate: " + error : error);
+  }
+  return held;
+}
+
+void BindSimulate(py::module_& m) {
+  py::class_<SimulateHeld, std::shared_ptr<SimulateHeld>>(
+      m, "SimulateResult", "What ringid.simulate returns: the dataset and its truth, not written.")
+      .def_property_readonly("dataset", [](const SimulateHeld& h) {
+        auto d = std::make_shared<LoadedDataset>();
+        d->dataset = h.simulated.dataset;
+        return d;
+      }, "The simulated dataset, a ringid.Dataset for identify and the others.")
+      .def_property_readonly("truth", [](const SimulateHeld& h) { return JsonLoads(TruthText(h.simulated.truth)); },
+                             "The truth file's content (every value the simulation used), a dict.")
+      .def("to_dict", [](const SimulateHeld& h) {
+        py::dict out;
+        out["dataset"] = JsonLoads(DatasetToJson(h.simulated.dataset));
+        out["truth"] = JsonLoads(TruthText(h.simulated.truth));
+        return out;
+      }, "{'dataset': the dataset file's JSON, 'truth': the truth file's}, as `ringid simulate` writes them.")
+      .def("write", [](const SimulateHeld& h) {
+        std::string error;
+        if (!WriteFilesAtomically({{h.output, DatasetToJson(h.simulated.dataset)},
+                                   {h.truth, TruthText(h.simulated.truth)}}, &error)) {
+          throw Error::Usage(error);
+        }
+      }, "Writes the dataset to output= and the truth to truth=, both or neither.");
+}
+
 py::array_t<double> ModeColumn(const IdentifyResult& r, double ModeFit::*field) {
   py::array_t<double> out(static_cast<py::ssize_t>(r.modes.size()));
   for (size_t i = 0; i < r.modes.size(); ++i) out.mutable_at(i) = r.modes[i].*field;
@@ -385,6 +441,12 @@ void BindOperations(py::module_& m) {
             "The modes of a parameter set (path, dict or ParameterSet) or of a dataset's initial "
             "values, standing and at speeds: `ringid predict`.",
             Without(PredictFlags(), {"parameters", "dataset", "output"})).c_str());
+  m.def("simulate", &SimulatePy, py::arg("parameters"),
+        Doc("simulate(parameters, **options) -> SimulateResult",
+            "A dataset measured from a parameter set (its path), optionally with effects: "
+            "`ringid simulate`. output= and truth= name the files it describes and write() "
+            "writes (simulated.json and simulated_truth.json when not given).",
+            Without(SimulateFlags(), {"parameters", "lug_forces", "response_noise"})).c_str());
   m.def("forces", &ForcesPy, py::arg("parameters"), py::arg("dataset"),
         Doc("forces(parameters, dataset, **options) -> ForcesResult",
             "The lug forces from the axle's response: `ringid forces`. parameters: an identify "
@@ -422,6 +484,7 @@ PYBIND11_MODULE(ringid, m) {
   BindResult<CompareReport>(m, "CompareResult", "What ringid.compare returns: its report.");
   BindResult<DiagnoseReport>(m, "DiagnoseResult", "What ringid.diagnose returns: its report.");
   BindResult<ForcesReport>(m, "ForcesResult", "What ringid.forces returns: its report.");
+  BindSimulate(m);
   BindOperations(m);
   BindProblem(m);
 }

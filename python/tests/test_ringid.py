@@ -7,6 +7,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -157,6 +158,22 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         self.assertSameReport(from_result, from_file, tolerance=0)
 
 
+    def test_simulate_equals_the_command_line(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            output, truth = os.path.join(scratch, "sim.json"), os.path.join(scratch, "truth.json")
+            flags = {"seed": 3, "speeds": [0, 10], "effects": "hub_compliance", "shift": 0.04, "set": {"m_a": 10.0}}
+            done = subprocess.run(
+                [BINARY, "simulate", "--parameters=" + PARAMETERS, "--output=" + output,
+                 "--truth=" + truth, "--seed=3", "--speeds=0,10", "--effects=hub_compliance",
+                 "--shift=0.04", "--set=m_a=10.0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(output) as f, open(truth) as g:
+                cli = {"dataset": json.load(f), "truth": json.load(g)}
+            r = ringid.simulate(PARAMETERS, output=output, truth=truth, **flags)
+            self.assertEqual(r.to_dict(), cli)
+            self.assertEqual(r.dataset.name, "sim")
+
+
 class InputsAndResults(ReportTestCase):
     def test_a_dataset_from_a_dict_fits_as_from_its_file(self):
         with open(TABLE1) as f:
@@ -220,6 +237,23 @@ class InputsAndResults(ReportTestCase):
     def test_an_unknown_keyword_is_a_type_error(self):
         with self.assertRaises(TypeError):
             ringid.identify(TABLE1, start=1)
+
+
+class Installed(unittest.TestCase):
+    @unittest.skipUnless(os.environ.get("RINGID_BUILD_DIR"), "run by ctest, which names the build")
+    def test_cmake_install_puts_the_module_where_python_finds_it_under_the_prefix(self):
+        with tempfile.TemporaryDirectory() as prefix:
+            subprocess.run([os.environ["RINGID_CMAKE"], "--install", os.environ["RINGID_BUILD_DIR"],
+                            "--prefix", prefix], check=True, stdout=subprocess.DEVNULL)
+            site = os.path.join(prefix, os.environ["RINGID_PYTHON_INSTALL_DIR"])
+            env = dict(os.environ, PYTHONPATH=site)
+            done = subprocess.run(
+                [sys.executable, "-c", "import ringid; print(ringid.__file__); "
+                 "print(ringid.predict(parameters=%r).frequencies[0])" % PARAMETERS],
+                cwd=prefix, env=env, stdout=subprocess.PIPE, text=True, check=True)
+            where, first = done.stdout.split()
+            self.assertTrue(where.startswith(site), where)
+            self.assertEqual(float(first), ringid.predict(parameters=PARAMETERS).frequencies[0])
 
 
 class ErrorsAreExceptions(unittest.TestCase):
