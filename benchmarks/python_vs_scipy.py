@@ -52,7 +52,7 @@ def main():
     dataset = ringid.load_dataset(args.dataset)
 
     fit = ringid.identify(dataset, starts=1, derivatives="analytic")
-    rows = [("ringid.identify (analytic, 1 start)", fit.evaluations, 2 * fit.cost,
+    rows = [("ringid.identify (analytic, 1 start)", fit.evaluations, 2 * fit.cost, "-",
              fit.status == "success" and fit.converged,
              median_seconds(lambda: ringid.identify(dataset, starts=1, derivatives="analytic"),
                             args.runs))]
@@ -71,21 +71,25 @@ def main():
             evaluations = out.nfev + out.njev * (1 if jac == "ringid" else 2 * len(out.x))
             runs = args.runs if chi_square <= CONVERGED_CHI_SQUARE or method == "dogbox" else 3
             rows.append(("least_squares %s, jac %s" % (method, jac), evaluations, chi_square,
+                         str(out.status),
                          chi_square <= CONVERGED_CHI_SQUARE, median_seconds(run, runs)))
 
-    base = rows[0][4]
+    base = rows[0][5]
     print("dataset %s, median of %d runs, %d cores, load average %s, numpy %s"
           % (os.path.relpath(args.dataset), args.runs, os.cpu_count(),
              " ".join(open("/proc/loadavg").read().split()[:3]), np.__version__))
-    head = "%-40s %12s %12s %10s %12s %10s" % ("run", "evaluations", "chi-square", "converged",
-                                               "seconds", "x ringid")
+    head = "%-36s %12s %11s %7s %10s %10s %9s" % (
+        "run", "evaluations", "chi-square", "status", "converged", "seconds", "x ringid")
     print(head)
     print("-" * len(head))
-    for name, evaluations, chi_square, converged, seconds in rows:
-        print("%-40s %12d %12.2e %10s %12.6f %10.1f" % (
-            name, evaluations, chi_square, "yes" if converged else "NO", seconds, seconds / base))
+    for name, evaluations, chi_square, status, converged, seconds in rows:
+        print("%-36s %12d %11.2e %7s %10s %10.6f %9.1f" % (
+            name, evaluations, chi_square, status, "yes" if converged else "NO", seconds,
+            seconds / base))
     print("evaluations: ringid's model evaluations; SciPy's residual calls, each Jacobian one more\n"
           "             (jac ringid) or 2 per coordinate (3-point).")
+    print("status: SciPy's (0: evaluation limit, 1-4: gtol, ftol, xtol, both).")
+    print("converged: chi-square <= %g (an exact fit; ringid's reaches 1e-16)." % CONVERGED_CHI_SQUARE)
     print("x ringid: that run's time over ringid.identify's (above 1: slower than ringid).")
 
 

@@ -362,8 +362,10 @@ void BindPredict(py::module_& m) {
 void BindInputs(py::module_& m) {
   py::class_<LoadedDataset, std::shared_ptr<LoadedDataset>>(
       m, "Dataset", "A modal dataset as ringid reads it (ringid.load_dataset).")
-      .def_property_readonly("name", [](const LoadedDataset& d) { return d.dataset.name; })
-      .def_property_readonly("description", [](const LoadedDataset& d) { return d.dataset.description; })
+      .def_property_readonly("name", [](const LoadedDataset& d) { return d.dataset.name; },
+                             "The dataset's name (its reports say it).")
+      .def_property_readonly("description", [](const LoadedDataset& d) { return d.dataset.description; },
+                             "What the dataset says it is.")
       .def_property_readonly("source", &LoadedDataset::Name, "The file it came from, or <dict>.")
       .def("to_dict", [](const LoadedDataset& d) { return JsonLoads(DatasetToJson(d.dataset)); },
            "The dataset as ringid writes it (the format it was read in, checked).")
@@ -382,7 +384,7 @@ void BindInputs(py::module_& m) {
       }, "The values set, by parameter name (SI units, docs/conventions.md).")
       .def_property_readonly("notes", [](const LoadedParameters& p) { return p.notes; },
                              "Where a .tir's values came from.")
-      .def_property_readonly("source", &LoadedParameters::Name)
+      .def_property_readonly("source", &LoadedParameters::Name, "The file it came from, or <dict>.")
       .def("__getitem__", [](const LoadedParameters& p, const std::string& name) {
         const auto q = ParseParam(name);
         if (!q || !p.values.IsSet(*q)) throw py::key_error(name);
@@ -391,9 +393,11 @@ void BindInputs(py::module_& m) {
       .def("__repr__", [](const LoadedParameters& p) { return "<ringid.ParameterSet from " + p.Name() + ">"; });
   py::class_<LoadedResponses, std::shared_ptr<LoadedResponses>>(
       m, "ResponseDataset", "The axle's response at the lug orders (ringid-lug-response/1).")
-      .def_property_readonly("name", [](const LoadedResponses& d) { return d.data.name; })
-      .def_property_readonly("source", &LoadedResponses::Name)
-      .def("to_dict", [](const LoadedResponses& d) { return JsonLoads(ResponseDatasetToJson(d.data)); });
+      .def_property_readonly("name", [](const LoadedResponses& d) { return d.data.name; },
+                             "The response dataset's name.")
+      .def_property_readonly("source", &LoadedResponses::Name, "The file it came from, or <dict>.")
+      .def("to_dict", [](const LoadedResponses& d) { return JsonLoads(ResponseDatasetToJson(d.data)); },
+           "The response dataset as ringid writes it.");
 }
 
 std::string Doc(const std::string& signature, const std::string& what,

@@ -111,7 +111,8 @@ void BindProblem(py::module_& m) {
         for (int i = 0; i < p.problem->setup().size(); ++i) names.push_back(p.problem->setup().name(i));
         return names;
       }, "The coordinates' names.")
-      .def_property_readonly("num_residuals", [](const PyProblem& p) { return p.residuals().num_residuals(); })
+      .def_property_readonly("num_residuals", [](const PyProblem& p) { return p.residuals().num_residuals(); },
+                             "The number of weighted residuals.")
       .def_property_readonly("evaluations", [](const PyProblem& p) { return p.residuals().evaluations(); },
                              "Model solutions so far.")
       .def("residuals", &PyProblem::Residuals, py::arg("x"),

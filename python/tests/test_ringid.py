@@ -256,6 +256,25 @@ class Installed(unittest.TestCase):
             self.assertEqual(float(first), ringid.predict(parameters=PARAMETERS).frequencies[0])
 
 
+class Documented(unittest.TestCase):
+    def test_every_function_type_and_property_has_a_docstring(self):
+        for name in [n for n in dir(ringid) if not n.startswith("_")]:
+            item = getattr(ringid, name)
+            self.assertTrue((item.__doc__ or "").strip(), name)
+            if isinstance(item, type) and name != "Error":
+                for member, value in vars(item).items():
+                    if isinstance(value, property) or (not member.startswith("_") and callable(value)):
+                        self.assertTrue((value.__doc__ or "").strip(), name + "." + member)
+
+    def test_the_example_identifies_table1(self):
+        example = os.path.join(SOURCE, "python", "examples", "identify_table1.py")
+        with tempfile.TemporaryDirectory() as scratch:
+            done = subprocess.run([sys.executable, example, os.path.join(scratch, "modes.png")],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertIn("ringid identify (lm): converged", done.stdout)
+
+
 class ErrorsAreExceptions(unittest.TestCase):
     def test_error_is_a_value_error(self):
         self.assertTrue(issubclass(ringid.Error, ValueError))
