@@ -171,11 +171,9 @@ std::shared_ptr<const LoadedDataset> LoadDatasetFrom(py::handle source) {
   bool ok;
   if (const auto path = PathOf(source)) {
     in->source = *path;
-    py::gil_scoped_release release;
     ok = LoadDataset(*path, &in->dataset, &error);
   } else {
     const std::string text = DictText(source, "dataset");
-    py::gil_scoped_release release;
     ok = ParseDataset(text, "<dict>", &in->dataset, &error);
   }
   if (!ok) throw Error::Of(error);

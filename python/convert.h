@@ -36,8 +36,8 @@ struct Error {
 void RegisterError(py::module_& m);
 
 // While alive: the flags at their defaults, then `kwargs` over them (only
-// names of `allowed`); restores every flag when it ends. argv() is the
-// equivalent command line, for the provenance.
+// names of `allowed`); restores every flag when it ends. Hold the GIL for
+// all its life: flags are global, and another thread's call sets them too.
 class FlagScope {
  public:
   FlagScope(const std::string& command, const std::vector<std::string>& allowed,

@@ -43,106 +43,89 @@ std::shared_ptr<const LoadedDataset> DatasetArg(py::handle dataset) {
   return LoadDatasetFrom(dataset);
 }
 
-// The fit options of the flags in scope and the dataset with --fix applied,
-// as ReadFitInputs reads them.
+// What a fitting command reads from its flags, read and the flags restored
+// under the GIL (another thread's call may set them while a fit runs): the
+// options, the dataset with --fix applied, --level, and the provenance.
 struct FitInputs {
   IdentifyOptions options;
   std::vector<const Effect*> effects;
   Dataset dataset;
   std::string source;
+  double level = 0;
+  Provenance provenance;
 };
-FitInputs ReadFit(py::handle dataset) {
-  FitInputs in;
+FitInputs ReadFit(const char* command, const std::vector<std::string>& extra, py::handle dataset,
+                  const py::kwargs& kw) {
   const auto loaded = DatasetArg(dataset);
+  FlagScope scope(command, Without(Joined(FitFlags(), extra), {"dataset", "output"}), kw);
+  FitInputs in;
   in.source = loaded->Name();
   FLAGS_dataset = in.source;
   std::string error;
   if (!ReadFitOptions(&in.options, &in.effects, &error)) throw Error::Usage(error);
   in.dataset = loaded->dataset;
   if (!ApplyFix(&in.dataset, &error)) throw Error::Usage(error);
+  in.level = FLAGS_level;
   FLAGS_dataset = loaded->source;  // the provenance's input: none for a dict
+  in.provenance = scope.Run(FLAGS_seed);
   return in;
 }
 
-template <class Result>
-void CheckInput(const FitInputs& in, const Result& r) {
-  if (r.status.invalid_input()) {
-    throw Error{in.source + ": " + r.status.message, in.source, "", r.status.message};
-  }
-}
-
-std::shared_ptr<IdentifyHeld> IdentifyPy(py::handle dataset, const py::kwargs& kw) {
-  FlagScope scope("identify", Without(FitFlags(), {"dataset", "output"}), kw);
-  FitInputs in = ReadFit(dataset);
-  auto held = std::make_shared<IdentifyHeld>();
-  IdentifyResult& r = held->report.body.result;
+// Runs `analyze` on the model and dataset without the GIL; the report of
+// type R around its result, or Error on invalid input.
+template <class R, class Analyze>
+std::shared_ptr<Held<R>> RunFit(const FitInputs& in, const Analyze& analyze) {
+  auto held = std::make_shared<Held<R>>();
+  auto& r = held->report.body.result;
   {
     py::gil_scoped_release release;
     const RigidRingModel model(in.effects);
-    Identify(model, in.dataset, in.options, &r);
+    analyze(model, &r);
   }
   CheckSignals();
-  CheckInput(in, r);
-  held->report.provenance = scope.Run(FLAGS_seed);
+  if (r.status.invalid_input()) {
+    throw Error{in.source + ": " + r.status.message, in.source, "", r.status.message};
+  }
+  held->report.provenance = in.provenance;
   held->report.body.dataset = in.dataset.name;
   return held;
+}
+
+std::shared_ptr<IdentifyHeld> IdentifyPy(py::handle dataset, const py::kwargs& kw) {
+  const FitInputs in = ReadFit("identify", {}, dataset, kw);
+  return RunFit<IdentifyReport>(in, [&](const RigidRingModel& model, IdentifyResult* r) {
+    Identify(model, in.dataset, in.options, r);
+  });
 }
 
 std::shared_ptr<Held<IdentifiabilityReport>> IdentifiabilityPy(py::handle dataset,
                                                                const py::kwargs& kw) {
-  FlagScope scope("identifiability", Without(FitFlags(), {"dataset", "output"}), kw);
-  FitInputs in = ReadFit(dataset);
-  auto held = std::make_shared<Held<IdentifiabilityReport>>();
+  const FitInputs in = ReadFit("identifiability", {}, dataset, kw);
   IdentifiabilityOptions o;
   o.fit = in.options;
-  {
-    py::gil_scoped_release release;
-    const RigidRingModel model(in.effects);
-    AnalyzeIdentifiability(model, in.dataset, o, &held->report.body.result);
-  }
-  CheckSignals();
-  CheckInput(in, held->report.body.result);
-  held->report.provenance = scope.Run(FLAGS_seed);
-  held->report.body.dataset = in.dataset.name;
-  return held;
+  return RunFit<IdentifiabilityReport>(in, [&](const RigidRingModel& model, IdentifiabilityResult* r) {
+    AnalyzeIdentifiability(model, in.dataset, o, r);
+  });
 }
 
 std::shared_ptr<Held<CompareReport>> ComparePy(py::handle dataset, const py::kwargs& kw) {
-  FlagScope scope("compare", Without(FitFlags(), {"dataset", "output"}), kw);
-  FitInputs in = ReadFit(dataset);
-  auto held = std::make_shared<Held<CompareReport>>();
+  const FitInputs in = ReadFit("compare", {}, dataset, kw);
   CompareOptions o;
   o.fit = in.options;
-  {
-    py::gil_scoped_release release;
-    const RigidRingModel model(in.effects);
-    CompareMethods(model, in.dataset, o, &held->report.body.result);
-  }
-  CheckSignals();
-  CheckInput(in, held->report.body.result);
-  held->report.provenance = scope.Run(FLAGS_seed);
-  held->report.body.dataset = in.dataset.name;
-  return held;
+  return RunFit<CompareReport>(in, [&](const RigidRingModel& model, ComparisonResult* r) {
+    CompareMethods(model, in.dataset, o, r);
+  });
 }
 
 std::shared_ptr<Held<DiagnoseReport>> DiagnosePy(py::handle dataset, const py::kwargs& kw) {
-  FlagScope scope("diagnose", Without(Joined(FitFlags(), {"level"}), {"dataset", "output"}), kw);
-  if (!(FLAGS_level > 0 && FLAGS_level < 1)) throw Error::Usage("--level: must lie in (0, 1)");
-  FitInputs in = ReadFit(dataset);
-  auto held = std::make_shared<Held<DiagnoseReport>>();
+  const FitInputs in = ReadFit("diagnose", {"level"}, dataset, kw);
+  if (!(in.level > 0 && in.level < 1)) throw Error::Usage("--level: must lie in (0, 1)");
   DiagnoseOptions o;
   o.fit = in.options;
-  o.effect_significance = FLAGS_level;
-  {
-    py::gil_scoped_release release;
-    const RigidRingModel baseline(in.effects);
-    Diagnose(baseline, in.dataset, o, &held->report.body.result);
-  }
-  CheckSignals();
-  CheckInput(in, held->report.body.result);
-  held->report.provenance = scope.Run(FLAGS_seed);
-  held->report.body.dataset = in.dataset.name;
-  return held;
+  o.effect_significance = in.level;
+  return RunFit<DiagnoseReport>(in, [&](const RigidRingModel& baseline, DiagnosisResult* r) {
+    Diagnose(baseline, in.dataset, o, r);
+  });
 }
 
 std::vector<const Effect*> EffectsOfFlags() {
@@ -195,7 +178,9 @@ std::shared_ptr<Held<PredictReport>> PredictPy(py::handle parameters, py::handle
 
 std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle dataset,
                                              const py::kwargs& kw) {
-  FlagScope scope("forces", Without(ForcesFlags(), {"parameters", "dataset", "output"}), kw);
+  // The flags are restored before the GIL is released (see ReadFit).
+  std::optional<FlagScope> scope;
+  scope.emplace("forces", Without(ForcesFlags(), {"parameters", "dataset", "output"}), kw);
   const std::vector<const Effect*> effects = EffectsOfFlags();
   ForceParameters fp;
   std::string source = "<identify result>";
@@ -224,6 +209,8 @@ std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle d
                                                : LoadResponsesFrom(dataset);
   FLAGS_dataset = data->source;
   auto held = std::make_shared<Held<ForcesReport>>();
+  held->report.provenance = scope->Run(std::nullopt);
+  scope.reset();
   std::string error;
   bool ok;
   {
@@ -232,7 +219,6 @@ std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle d
   }
   if (!ok) throw Error::Usage(error);
   CheckSignals();
-  held->report.provenance = scope.Run(std::nullopt);
   held->report.body.dataset = data->data.name;
   return held;
 }

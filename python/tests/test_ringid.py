@@ -234,6 +234,24 @@ class InputsAndResults(ReportTestCase):
         self.assertIn("level=", ringid.diagnose.__doc__)
         self.assertIn("lugs_per_revolution=0", ringid.predict.__doc__)
 
+    def test_fits_in_threads_equal_fits_in_turn_and_leave_the_defaults(self):
+        import threading
+        options = [{"starts": 1}, {"starts": 2, "seed": 7}, {"starts": 1, "weighting": "relative"},
+                   {"starts": 1, "derivatives": "analytic"}]
+        alone = [without_run(ringid.identify(TABLE1, **o).to_dict()) for o in options]
+        together = [None] * len(options)
+
+        def run(i):
+            together[i] = without_run(ringid.identify(TABLE1, **options[i]).to_dict())
+        threads = [threading.Thread(target=run, args=(i,)) for i in range(len(options))]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertEqual(together, alone)
+        self.assertEqual(ringid.identify(TABLE1, threads=1).provenance["command_line"],
+                         ["ringid.identify", "--threads=1"])
+
     def test_an_unknown_keyword_is_a_type_error(self):
         with self.assertRaises(TypeError):
             ringid.identify(TABLE1, start=1)
@@ -299,7 +317,7 @@ class ErrorsAreExceptions(unittest.TestCase):
         self.assertEqual(str(caught.exception),
                          cli_error("predict", "--parameters=" + PARAMETERS, "--speeds=-1"))
 
-    def test_every_malformed_dataset_raises_naming_its_field(self):
+    def test_every_malformed_dataset_raises_the_command_line_line_naming_its_field(self):
         cases = malformed_datasets()
         self.assertGreater(len(cases), 50)
         with tempfile.TemporaryDirectory() as scratch:
@@ -313,6 +331,8 @@ class ErrorsAreExceptions(unittest.TestCase):
                     self.assertEqual(caught.exception.file, path)
                     if field:
                         self.assertIn(field, str(caught.exception))
+                    self.assertEqual(str(caught.exception),
+                                     cli_error("identify", "--dataset=" + path, "--starts=1"))
 
     def test_every_malformed_dict_raises(self):
         for what, text, _ in malformed_datasets():
