@@ -2,6 +2,7 @@
 // in-process, on its typed inputs and reports. Keyword arguments are the
 // flags of apps/flags.cc, with their defaults and descriptions; errors are
 // ringid.Error with the command line's one line.
+#include <csignal>
 #include <complex>
 #include <map>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "estimation/diagnose.h"
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
+#include "estimation/interrupt.h"
 #include "python/convert.h"
 #include "python/problem.h"
 #include "python/results.h"
@@ -33,10 +35,42 @@ namespace {
 
 using IdentifyHeld = Held<IdentifyReport>;
 
-// Signals that came during a call without the GIL (Ctrl-C) raise now.
-void CheckSignals() {
-  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-}
+// While alive in the main thread: Ctrl-C stops the fits (estimation/
+// interrupt.h) in place of Python's handler, which cannot run without the
+// GIL; Raise() then raises KeyboardInterrupt. Signals that came otherwise
+// raise as Python says.
+class Interruptible {
+ public:
+  Interruptible() : installed_(InMainThread()) {
+    if (!installed_) return;
+    ClearInterrupt();
+    struct sigaction on_int = {};
+    on_int.sa_handler = [](int) { RequestInterrupt(); };
+    sigemptyset(&on_int.sa_mask);
+    sigaction(SIGINT, &on_int, &previous_);
+  }
+  ~Interruptible() {
+    if (installed_) sigaction(SIGINT, &previous_, nullptr);
+  }
+  Interruptible(const Interruptible&) = delete;
+  Interruptible& operator=(const Interruptible&) = delete;
+  void Raise() const {
+    if (installed_ && InterruptRequested()) {
+      ClearInterrupt();
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+      throw py::error_already_set();
+    }
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+  static bool InMainThread() {
+    const py::module_ threading = py::module_::import("threading");
+    return threading.attr("current_thread")().is(threading.attr("main_thread")());
+  }
+
+ private:
+  bool installed_;
+  struct sigaction previous_ = {};
+};
 
 std::shared_ptr<const LoadedDataset> DatasetArg(py::handle dataset) {
   if (py::isinstance<LoadedDataset>(dataset)) return dataset.cast<std::shared_ptr<LoadedDataset>>();
@@ -77,12 +111,13 @@ template <class R, class Analyze>
 std::shared_ptr<Held<R>> RunFit(const FitInputs& in, const Analyze& analyze) {
   auto held = std::make_shared<Held<R>>();
   auto& r = held->report.body.result;
+  const Interruptible interruptible;
   {
     py::gil_scoped_release release;
     const RigidRingModel model(in.effects);
     analyze(model, &r);
   }
-  CheckSignals();
+  interruptible.Raise();
   if (r.status.invalid_input()) {
     throw Error{in.source + ": " + r.status.message, in.source, "", r.status.message};
   }
@@ -213,12 +248,13 @@ std::shared_ptr<Held<ForcesReport>> ForcesPy(py::handle parameters, py::handle d
   scope.reset();
   std::string error;
   bool ok;
+  const Interruptible interruptible;
   {
     py::gil_scoped_release release;
     ok = ForcesOf(fp, data->data, effects, source, data->Name(), &held->report.body.result, &error);
   }
+  interruptible.Raise();
   if (!ok) throw Error::Usage(error);
-  CheckSignals();
   held->report.body.dataset = data->data.name;
   return held;
 }

@@ -274,6 +274,27 @@ class Installed(unittest.TestCase):
             self.assertEqual(float(first), ringid.predict(parameters=PARAMETERS).frequencies[0])
 
 
+class Interrupted(unittest.TestCase):
+    def test_ctrl_c_stops_a_long_diagnosis_with_keyboard_interrupt(self):
+        import signal
+        import time
+        code = ("import sys, time, ringid\n"
+                "print('ready', flush=True)\n"
+                "t = time.perf_counter()\n"
+                "try:\n"
+                "    ringid.diagnose(%r, threads=1)\n"
+                "except KeyboardInterrupt:\n"
+                "    print('interrupted after %%.2f s' %% (time.perf_counter() - t), flush=True)\n"
+                "    sys.exit(3)\n" % ROLLING)
+        child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+        self.assertEqual(child.stdout.readline().strip(), "ready")
+        time.sleep(1.0)
+        child.send_signal(signal.SIGINT)
+        out, _ = child.communicate(timeout=60)
+        self.assertEqual(child.returncode, 3, out)
+        self.assertLess(float(out.split()[2]), 5.0, out)  # uninterrupted it takes several times that
+
+
 class Documented(unittest.TestCase):
     def test_every_function_type_and_property_has_a_docstring(self):
         for name in [n for n in dir(ringid) if not n.startswith("_")]:
