@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "apps/command_line.h"
 #include "apps/flags.h"
 #include "datasets/tir_parameters.h"
 
@@ -98,11 +99,8 @@ FlagScope::FlagScope(const std::string& command, const std::vector<std::string>&
                            }() + ")");
     }
     const std::string text = FlagText(name, value);
-    if (gflags::SetCommandLineOption(name.c_str(), text.c_str()).empty()) {
-      gflags::CommandLineFlagInfo info;
-      gflags::GetCommandLineFlagInfo(name.c_str(), &info);
-      throw Error::Usage("--" + name + ": bad value '" + text + "' (" + info.type + ")");
-    }
+    std::string error;
+    if (!SetFlagValue(name, text, &error)) throw Error::Usage(error);
     argv_.push_back("--" + name + "=" + text);
   }
 }

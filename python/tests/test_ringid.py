@@ -338,6 +338,32 @@ class ErrorsAreExceptions(unittest.TestCase):
         self.assertEqual(str(caught.exception),
                          cli_error("predict", "--parameters=" + PARAMETERS, "--speeds=-1"))
 
+    def test_every_bad_option_raises_the_command_line_line(self):
+        cases = [("identify", {"starts": -5}), ("identify", {"starts": "many"}),
+                 ("identify", {"relative_sigma": -1.0}), ("identify", {"relative_sigma": math.nan}),
+                 ("identify", {"threads": -1}), ("identify", {"bounds": "k_bx"}),
+                 ("identify", {"fix": "nope"}), ("identify", {"effects": "nope"}),
+                 ("identify", {"method": ""}), ("diagnose", {"level": 2.0}),
+                 ("identifiability", {"shape_convention": "mine"})]
+        for command, options in cases:
+            flags = ["--%s=%s" % (k, repr(v) if isinstance(v, float) else v)
+                     for k, v in options.items()]
+            with self.subTest(command=command, options=options):
+                with self.assertRaises(ringid.Error) as caught:
+                    getattr(ringid, command)(TABLE1, **options)
+                self.assertEqual(str(caught.exception),
+                                 cli_error(command, "--dataset=" + TABLE1, *flags))
+        for options, flags in [({"speeds": [1, 1]}, ["--speeds=1,1"]),
+                               ({"lugs_per_revolution": -1, "speeds": [5]},
+                                ["--lugs_per_revolution=-1", "--speeds=5"]),
+                               ({"set": {"m_b": -1}}, ["--set=m_b=-1"]),
+                               ({"effects": "hub_compliance"}, ["--effects=hub_compliance"])]:
+            with self.subTest(options=options):
+                with self.assertRaises(ringid.Error) as caught:
+                    ringid.predict(parameters=PARAMETERS, **options)
+                self.assertEqual(str(caught.exception),
+                                 cli_error("predict", "--parameters=" + PARAMETERS, *flags))
+
     def test_every_malformed_dataset_raises_the_command_line_line_naming_its_field(self):
         cases = malformed_datasets()
         self.assertGreater(len(cases), 50)
