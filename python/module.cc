@@ -319,6 +319,17 @@ py::array_t<double> ModeColumn(const IdentifyResult& r, double ModeFit::*field) 
   return out;
 }
 
+// What --save_parameters writes for this fit: named after the dataset, from
+// the file it was read from.
+ParameterSet SavedParameters(const IdentifyHeld& h) {
+  std::string from = "<dict>";
+  for (const InputFile& f : h.report.provenance.inputs) {
+    if (f.role == "dataset") from = f.path;
+  }
+  return IdentifiedParameterSet(h.report.body.result, h.report.body.dataset,
+                                "identified by ringid from " + from);
+}
+
 void BindIdentify(py::module_& m) {
   BindResult<IdentifyReport>(m, "IdentifyResult",
                              "What ringid.identify returns: the identify report of the command line.")
@@ -344,7 +355,23 @@ void BindIdentify(py::module_& m) {
                              "The measured frequencies of the modes fitted (numpy), as modes.")
       .def_property_readonly("model_hz",
                              [](const IdentifyHeld& h) { return ModeColumn(h.report.body.result, &ModeFit::model_hz); },
-                             "The fitted model's frequencies of those modes (numpy), as modes.");
+                             "The fitted model's frequencies of those modes (numpy), as modes.")
+      .def("parameter_set", [](const IdentifyHeld& h) {
+        auto p = std::make_shared<LoadedParameters>();
+        for (const auto& [q, v] : SavedParameters(h).parameters) p->values[q] = v.value;
+        return p;
+      }, "The fitted values as a ringid.ParameterSet, for predict, simulate and forces.")
+      .def("save_parameters", [](const IdentifyHeld& h, py::handle path) {
+        const auto file = PathOf(path);
+        if (!file) throw Error::Usage("save_parameters: a path (str or os.PathLike)");
+        if (!h.report.body.result.status.ok()) {
+          throw Error::Usage("save_parameters: the identification did not succeed");
+        }
+        std::string error;
+        if (!WriteFileAtomically(*file, ParameterSetText(SavedParameters(h)), &error)) {
+          throw Error::Usage(error);
+        }
+      }, py::arg("path"), "Writes the fitted parameter set (ringid-parameters/1) to path, as --save_parameters.");
 }
 
 void BindPredict(py::module_& m) {

@@ -20,9 +20,7 @@ def main():
     fit = ringid.identify(TABLE1, derivatives="analytic")
     print(fit.text)
     # The fitted values as a parameter set, and their modes with shapes.
-    values = {name: e["value"] for name, e in fit.parameters.items()}
-    modes = ringid.predict(parameters={"format": "ringid-parameters/1", "name": "table1_fit",
-                                       "parameters": {k: {"value": v} for k, v in values.items()}})
+    modes = ringid.predict(parameters=fit.parameter_set())
     labels = [m["label"] for m in modes.modes]
     for label, hz, zeta in zip(labels, modes.frequencies, modes.damping_ratios):
         print("%-22s %8.3f Hz  zeta %.3f" % (label, hz, zeta))

@@ -98,6 +98,17 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         self.assertSameReport(r.to_dict(), cli_report(
             "identify", "--dataset=" + TABLE1, "--starts=1", "--derivatives=analytic"))
 
+    def test_saved_parameters_equal_the_command_line_ones(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            cli, module = os.path.join(scratch, "cli.json"), os.path.join(scratch, "module.json")
+            subprocess.run([BINARY, "identify", "--dataset=" + TABLE1, "--starts=1",
+                            "--save_parameters=" + cli], stdout=subprocess.DEVNULL, check=True)
+            fit = ringid.identify(TABLE1, starts=1)
+            fit.save_parameters(module)
+            with open(cli) as f, open(module) as g:
+                self.assertEqual(g.read(), f.read())
+        self.assertEqual(fit.parameter_set()["k_bx"], fit.parameters["k_bx"]["value"])
+
     def test_identify_rolling_equals_the_command_line(self):
         self.assertSameReport(ringid.identify(ROLLING, starts=2).to_dict(),
                               cli_report("identify", "--dataset=" + ROLLING, "--starts=2"))
