@@ -2,6 +2,7 @@
 // in-process, on its typed inputs and reports. Keyword arguments are the
 // flags of apps/flags.cc, with their defaults and descriptions; errors are
 // ringid.Error with the command line's one line.
+#include <cmath>
 #include <csignal>
 #include <complex>
 #include <map>
@@ -383,6 +384,11 @@ void BindPredict(py::module_& m) {
         for (const PredictedMode& mode : h.report.body.modes) f.push_back(mode.model_hz);
         return py::array_t<double>(f.size(), f.data());
       }, "Each mode's damped frequency in Hz (numpy), as modes.")
+      .def_property_readonly("labels", [](const H& h) {
+        std::vector<std::string> labels;
+        for (const PredictedMode& mode : h.report.body.modes) labels.push_back(ToString(mode.label));
+        return labels;
+      }, "Each mode's label, as modes.")
       .def_property_readonly("damping_ratios", [](const H& h) {
         std::vector<double> z;
         for (const PredictedMode& mode : h.report.body.modes) z.push_back(mode.damping_ratio);
@@ -423,6 +429,17 @@ void BindInputs(py::module_& m) {
       });
   py::class_<LoadedParameters, std::shared_ptr<LoadedParameters>>(
       m, "ParameterSet", "A parameter set (ringid-parameters/1, an identify report or a .tir).")
+      .def(py::init([](const std::map<std::string, double>& values) {
+        auto p = std::make_shared<LoadedParameters>();
+        for (const auto& [name, v] : values) {
+          const auto q = ParseParam(name);
+          if (!q) throw Error::Usage("parameters: " + UnknownName("parameter", name, NamesOf<Param>()));
+          const std::string problem = std::isfinite(v) ? ParameterValueProblem(*q, v) : "not finite";
+          if (!problem.empty()) throw Error::Usage("parameters: " + name + ": " + problem);
+          p->values[*q] = v;
+        }
+        return p;
+      }), py::arg("values"), "ParameterSet(values): the values {NAME: VALUE} in SI units, checked as a file's.")
       .def_property_readonly("values", [](const LoadedParameters& p) {
         py::dict out;
         for (const std::string& name : NamesOf<Param>()) {

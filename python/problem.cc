@@ -111,6 +111,11 @@ void BindProblem(py::module_& m) {
         for (int i = 0; i < p.problem->setup().size(); ++i) names.push_back(p.problem->setup().name(i));
         return names;
       }, "The coordinates' names.")
+      .def_property_readonly("log_coordinates", [](const PyProblem& p) {
+        std::vector<bool> logs;
+        for (int i = 0; i < p.problem->setup().size(); ++i) logs.push_back(p.problem->setup().is_log(i));
+        return logs;
+      }, "Whether each coordinate is its parameter's log (positive parameters) or its value.")
       .def_property_readonly("num_residuals", [](const PyProblem& p) { return p.residuals().num_residuals(); },
                              "The number of weighted residuals.")
       .def_property_readonly("evaluations", [](const PyProblem& p) { return p.residuals().evaluations(); },

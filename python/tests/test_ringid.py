@@ -198,6 +198,18 @@ class InputsAndResults(ReportTestCase):
         self.assertSameReport(ringid.identify(d, starts=1).to_dict(),
                               ringid.identify(TABLE1, starts=1).to_dict(), tolerance=0)
 
+    def test_a_parameter_set_in_memory_predicts_as_its_file(self):
+        from_file = ringid.load_parameters(PARAMETERS)
+        in_memory = ringid.ParameterSet(from_file.values)
+        np.testing.assert_array_equal(ringid.predict(parameters=in_memory).frequencies,
+                                      ringid.predict(parameters=PARAMETERS).frequencies)
+        self.assertEqual(ringid.predict(parameters=in_memory).labels,
+                         [m["label"] for m in ringid.predict(parameters=PARAMETERS).modes])
+        with self.assertRaises(ringid.Error):
+            ringid.ParameterSet({"m_bb": 1.0})
+        with self.assertRaises(ringid.Error):
+            ringid.ParameterSet({"m_b": math.inf})
+
     def test_attributes_are_the_report_fields(self):
         r = ringid.identify(TABLE1, starts=1)
         d = r.to_dict()
