@@ -121,9 +121,10 @@ bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
   reports->clear();
   for (const std::string& f : files) {
     const std::string stem = fs::path(f).stem().string();
-    if (stem == "campaign" || seen.count(stem)) {
+    const bool summary = stem == "campaign" || stem.rfind("campaign.", 0) == 0;
+    if (summary || seen.count(stem)) {
       *error = f + ": its report " + stem + ".json would overwrite " +
-               (stem == "campaign" ? "the campaign summary" : "that of " + seen[stem]);
+               (summary ? "a campaign summary" : "that of " + seen[stem]);
       return false;
     }
     seen[stem] = f;
@@ -175,8 +176,9 @@ bool KeptRow(ReportKind command, const std::string& path, const std::string& dat
   Json json;
   std::string why;
   if (!LoadReport(path, &json, &why)) return false;
+  static const std::string version = MakeProvenance(0, nullptr, {}, std::nullopt).ringid_version;
   const auto same_source = [&](const Provenance& p) {
-    if (!p.options || *p.options != options) return false;
+    if (!p.options || *p.options != options || p.ringid_version != version) return false;
     for (const InputFile& f : p.inputs) {
       if (f.role == "dataset") return !f.sha256.empty() && f.sha256 == FileSha256(dataset);
     }
@@ -230,7 +232,12 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
   if (!ParseShard(request.shard, &shard, error)) return kExitUsage;
   std::vector<std::string> all, files, reports;
   if (!ListDatasets(request.datasets, shard, &all, &files, error)) return kExitUsage;
-  if (!ReportNames(files, request.output_dir, &reports, error)) return kExitUsage;
+  // Named over the whole list: shards write into one directory.
+  std::vector<std::string> all_reports;
+  if (!ReportNames(all, request.output_dir, &all_reports, error)) return kExitUsage;
+  for (size_t i = shard.index; i < all_reports.size(); i += shard.count) {
+    reports.push_back(all_reports[i]);
+  }
   for (size_t i = 0; i < reports.size(); ++i) {  // --output_dir=the datasets' own directory
     for (const std::string& f : files) {
       if (SameFile(reports[i], f)) {
@@ -257,6 +264,7 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
       why = load.OneLine();
       items[i].row.field = load.field;
     } else if (request.prepare && !request.prepare(&datasets[i], &why)) {
+      why = files[i] + ": " + why;
       items[i].row.field = "";
     } else if (!Problem::Create(model, datasets[i], ResidualOptions(), &status)) {
       why = files[i] + ": " + status.message;

@@ -110,12 +110,17 @@ bool SetFlags(int argc, char** argv, const Command& command,
       }
       value = argv[++i];
     }
-    if (gflags::SetCommandLineOption(name.c_str(), value->c_str()).empty()) {
-      *error = "--" + name + ": bad value '" + *value + "' (" + Expected(info.type) + " expected)";
-      return false;
-    }
+    if (!SetFlagValue(name, *value, error)) return false;
   }
   return true;
+}
+
+bool SetFlagValue(const std::string& name, const std::string& value, std::string* error) {
+  if (!gflags::SetCommandLineOption(name.c_str(), value.c_str()).empty()) return true;
+  gflags::CommandLineFlagInfo info;
+  gflags::GetCommandLineFlagInfo(name.c_str(), &info);
+  *error = "--" + name + ": bad value '" + value + "' (" + Expected(info.type) + " expected)";
+  return false;
 }
 
 }  // namespace ringid

@@ -31,6 +31,8 @@ struct Command {
 // value, a stray argument.
 bool SetFlags(int argc, char** argv, const Command& command,
               const std::vector<Command>& all, std::string* error);
+// --NAME=VALUE of a flag gflags knows; false with the line naming it.
+bool SetFlagValue(const std::string& name, const std::string& value, std::string* error);
 
 // Whether argv[2..] asks for help: --help or -h.
 bool WantsHelp(int argc, char** argv);

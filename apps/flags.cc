@@ -80,6 +80,38 @@ DEFINE_string(format, "", "what to write: the rigid-ring part of an MF-Swift .ti
 
 namespace ringid {
 
+const std::vector<std::string>& ResultFlags() {
+  static const std::vector<std::string> flags = {
+      "method", "starts", "seed", "weighting", "relative_sigma", "shapes", "damping",
+      "shape_convention", "derivatives", "effects", "bounds", "fix"};
+  return flags;
+}
+
+const std::vector<std::string>& FitFlags() {
+  static const std::vector<std::string> flags =
+      Joined(Joined({"dataset", "output"}, ResultFlags()), {"threads"});
+  return flags;
+}
+
+const std::vector<std::string>& PredictFlags() {
+  static const std::vector<std::string> flags = {
+      "parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"};
+  return flags;
+}
+
+const std::vector<std::string>& SimulateFlags() {
+  static const std::vector<std::string> flags = {
+      "parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
+      "damping_noise", "shape_noise", "prior_spread", "fix", "seed", "speeds", "loads",
+      "lug_forces", "response_noise"};
+  return flags;
+}
+
+const std::vector<std::string>& ForcesFlags() {
+  static const std::vector<std::string> flags = {"parameters", "dataset", "effects", "output"};
+  return flags;
+}
+
 int Usage(const std::string& line) {
   std::fprintf(stderr, "ringid: %s\n", line.c_str());
   return kExitUsage;
@@ -123,13 +155,6 @@ Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
   p.derivatives = FromString<Derivatives>(FLAGS_derivatives).value_or(Derivatives::kNumeric);
   if (!FLAGS_output_dir.empty()) p.options = CampaignOptions();
   return p;
-}
-
-const std::vector<std::string>& ResultFlags() {
-  static const std::vector<std::string> flags = {
-      "method", "starts", "seed", "weighting", "relative_sigma", "shapes", "damping",
-      "shape_convention", "derivatives", "effects", "bounds", "fix"};
-  return flags;
 }
 
 std::vector<std::string> CampaignOptions() {
@@ -342,6 +367,9 @@ int Campaign(int argc, char** argv, ReportKind command, const ModalModel& model,
              const CampaignWork& work) {
   if (!FLAGS_output.empty()) return Usage("--output: a campaign writes to --output_dir");
   CampaignRequest request{command, FLAGS_dataset, FLAGS_output_dir, FLAGS_shard, FLAGS_jobs};
+  std::vector<Param> fixed;  // a mistake in --fix is the command's, not each dataset's
+  std::string bad;
+  if (!ParseFix(&fixed, &bad)) return Usage(bad);
   request.options = CampaignOptions();
   request.force = FLAGS_force;
   request.keep_going = FLAGS_keep_going;

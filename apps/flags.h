@@ -69,6 +69,14 @@ DECLARE_string(format);
 
 namespace ringid {
 
+// The flags a command takes (the table of commands in apps/ringid.cc and the
+// Python module's keyword arguments): every fitting command's, predict's,
+// simulate's and forces'.
+const std::vector<std::string>& FitFlags();
+const std::vector<std::string>& PredictFlags();
+const std::vector<std::string>& SimulateFlags();
+const std::vector<std::string>& ForcesFlags();
+
 // "ringid: LINE" on standard error; kExitUsage.
 int Usage(const std::string& line);
 // `text` written to `path` whole or not at all; kExitOk, else Usage.

@@ -14,10 +14,7 @@
 #include "report/report.h"
 
 namespace ringid {
-namespace {
 
-// An identify report gives its values per condition and its covariance; a
-// parameter set or a .tir its values alone.
 bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError* error) {
   std::string text;
   Json json;
@@ -41,11 +38,9 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
   }
   *fp = ForceParameters{};
   if (!LoadParameters(path, {}, &fp->shared, error)) return false;
-  fp->source = "parameter set (values alone: std_total is std_measurement)";
+  fp->source = kParameterSetForces;
   return true;
 }
-
-}  // namespace
 
 int SimulateResponsesCommand(int argc, char** argv) {
   std::string error;
@@ -101,6 +96,47 @@ int SimulateResponsesCommand(int argc, char** argv) {
   return kExitOk;
 }
 
+bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data,
+              const std::vector<const Effect*>& effects, const std::string& parameters,
+              const std::string& dataset, ForcesResult* r, std::string* error) {
+  const RigidRingModel model(effects);
+  // The forces need the model that was fitted: an effect the parameters move
+  // off its baseline (0; m_a, the hub's mass, has none) asks for that effect.
+  for (const Effect* e : EffectCatalogue()) {
+    if (std::find(effects.begin(), effects.end(), e) != effects.end()) continue;
+    for (Param q : e->parameters()) {
+      if (Info(q).domain == Domain::kPositive || !std::isfinite(fp.shared[q]) || fp.shared[q] == 0) {
+        continue;
+      }
+      *error = parameters + ": parameters." + ParamName(q) + ": a parameter of " + e->name() +
+               ", which the model lacks; give --effects=" + e->name() +
+               " (the forces use the model that was fitted)";
+      return false;
+    }
+  }
+  for (size_t i = 0; i < data.conditions.size(); ++i) {
+    const ResponseCondition& c = data.conditions[i];
+    const std::vector<Param> missing = Missing(model, fp.In(c));
+    if (missing.empty()) continue;
+    // A value the fit has per condition, in none of this name.
+    std::string fitted;
+    for (const auto& [name, values] : fp.by_condition) {
+      if (values.IsSet(missing[0])) fitted += (fitted.empty() ? "" : ", ") + name;
+    }
+    if (fitted.empty()) {
+      *error = MissingParameters(parameters, missing);
+      return false;
+    }
+    *error = dataset + ": conditions[" + std::to_string(i) + "].known." + ParamName(missing[0]) +
+             ": missing: " + parameters + " fitted " + ParamName(missing[0]) +
+             " per condition (" + fitted + "); name the condition '" + c.name +
+             "' as one of those, or give its value in known";
+    return false;
+  }
+  EstimateForces(model, fp, data, ForcesOptions{}, r);
+  return true;
+}
+
 int ForcesCommand(int argc, char** argv) {
   std::string error;
   std::vector<const Effect*> effects;
@@ -115,37 +151,8 @@ int ForcesCommand(int argc, char** argv) {
   if (!ReadForceParameters(FLAGS_parameters, &fp, &load)) return Usage(load.OneLine());
   ResponseDataset data;
   if (!LoadResponseDataset(FLAGS_dataset, &data, &load)) return Usage(load.OneLine());
-  const RigidRingModel model(effects);
-  // The forces need the model that was fitted: an effect the parameters move
-  // off its baseline (0; m_a, the hub's mass, has none) asks for that effect.
-  for (const Effect* e : EffectCatalogue()) {
-    if (std::find(effects.begin(), effects.end(), e) != effects.end()) continue;
-    for (Param q : e->parameters()) {
-      if (Info(q).domain == Domain::kPositive || !std::isfinite(fp.shared[q]) || fp.shared[q] == 0) {
-        continue;
-      }
-      return Usage(FLAGS_parameters + ": parameters." + ParamName(q) + ": a parameter of " +
-                   e->name() + ", which the model lacks; give --effects=" + e->name() +
-                   " (the forces use the model that was fitted)");
-    }
-  }
-  for (size_t i = 0; i < data.conditions.size(); ++i) {
-    const ResponseCondition& c = data.conditions[i];
-    const std::vector<Param> missing = Missing(model, fp.In(c));
-    if (missing.empty()) continue;
-    // A value the fit has per condition, in none of this name.
-    std::string fitted;
-    for (const auto& [name, values] : fp.by_condition) {
-      if (values.IsSet(missing[0])) fitted += (fitted.empty() ? "" : ", ") + name;
-    }
-    if (fitted.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
-    return Usage(FLAGS_dataset + ": conditions[" + std::to_string(i) + "].known." +
-                 ParamName(missing[0]) + ": missing: " + FLAGS_parameters + " fitted " +
-                 ParamName(missing[0]) + " per condition (" + fitted + "); name the condition '" +
-                 c.name + "' as one of those, or give its value in known");
-  }
   ForcesResult r;
-  EstimateForces(model, fp, data, ForcesOptions{}, &r);
+  if (!ForcesOf(fp, data, effects, FLAGS_parameters, FLAGS_dataset, &r, &error)) return Usage(error);
   return Finish<ForcesReport>(argc, argv, data, r);
 }
 

@@ -18,31 +18,28 @@ int MergeCommand(int argc, char** argv) {
   const std::filesystem::path dir(FLAGS_output_dir);
   CampaignReport merged;
   std::string error;
-  if (!MergeShards(FLAGS_output_dir, &merged, &error)) return Usage(error);
+  std::vector<std::string> paths;
+  if (!MergeShards(FLAGS_output_dir, &merged, &error, &paths)) return Usage(error);
   std::vector<std::pair<std::string, std::string>> shards;
-  std::error_code ec;
-  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::filesystem::path& entry = it->path();
-    const std::string name = entry.filename().string();
-    if (name.rfind("campaign.", 0) == 0 && name.find("-of-") != std::string::npos) {
-      shards.emplace_back("shard", entry.string());
-    }
-  }
+  for (const std::string& p : paths) shards.emplace_back("shard", p);
   merged.provenance = MakeProvenance(argc, argv, shards, std::nullopt);
   const std::string text = ReportText(merged);
-  Json json = Json::parse(text);
   std::string html;
   std::vector<HtmlFigure> figures;
-  if (!RenderHtmlReport(json, (dir / "campaign.json").string(), &html, &error, &figures)) {
-    std::fprintf(stderr, "ringid: merge: %s\n", error.c_str());
-    return kExitFailure;
+  std::vector<std::pair<std::string, std::string>> files = {{(dir / "campaign.json").string(), text}};
+  // The summary is written whatever the page: a login node may lack gnuplot.
+  if (RenderHtmlReport(Json::parse(text), files[0].first, &html, &error, &figures)) {
+    files.emplace_back((dir / "campaign.html").string(), html);
+  } else {
+    std::fprintf(stderr, "ringid: merge: no page (%s); render it later with ringid report\n",
+                 error.c_str());
   }
-  const std::string summary = (dir / "campaign.json").string(), page = (dir / "campaign.html").string();
-  if (!WriteFilesAtomically({{summary, text}, {page, html}}, &error)) return Usage(error);
+  if (!WriteFilesAtomically(files, &error)) return Usage(error);
   std::printf("%s\n%zu dataset(s) from %zu shard(s), %d kept from earlier runs, %d failed; "
-              "wrote %s and %s\n",
+              "wrote %s%s\n",
               CampaignTable(merged.body).c_str(), merged.body.datasets.size(), shards.size(),
-              merged.body.resumed, merged.body.failed, summary.c_str(), page.c_str());
+              merged.body.resumed, merged.body.failed, files[0].first.c_str(),
+              files.size() > 1 ? (" and " + files[1].first).c_str() : "");
   return kExitOk;
 }
 

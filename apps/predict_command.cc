@@ -63,6 +63,31 @@ std::vector<SpeedModes> ByCondition(const RigidRingModel& model, const Dataset& 
 
 }  // namespace
 
+bool PredictBodyOf(const Parameters& parameters, const Dataset* d,
+                   const std::map<Param, double>& set, const std::vector<const Effect*>& effects,
+                   const std::string& source, const std::vector<std::string>& notes,
+                   PredictBody* body, std::string* solve_error, std::string* error) {
+  Parameters p = parameters;
+  if (d) {
+    p = InitialParameters(*d);
+    for (const auto& [q, v] : set) p[q] = v;
+  }
+  const RigidRingModel model(effects);
+  const std::vector<Param> missing = Missing(model, p);
+  if (!missing.empty()) {
+    *error = MissingParameters(source, missing, notes);
+    return false;
+  }
+  const ModalSolution s = model.Solve(p);
+  *body = PredictBody::From(s);
+  if (!notes.empty()) body->parameter_notes = notes;
+  if (d && d->conditions.size() > 1) body->conditions = ByCondition(model, *d, set);
+  if (!AtSpeeds(model, p, body, error)) return false;
+  solve_error->clear();
+  if (!s.ok) *solve_error = s.error.empty() ? std::string("the model cannot be solved") : s.error;
+  return true;
+}
+
 int Predict(int argc, char** argv) {
   std::string error;
   std::vector<const Effect*> effects;
@@ -79,27 +104,23 @@ int Predict(int argc, char** argv) {
   Dataset d;
   if (!FLAGS_parameters.empty()) {  // a .tir by its extension
     if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes)) return Usage(load.OneLine());
-  } else {
-    if (!LoadDataset(FLAGS_dataset, &d, &load)) return Usage(load.OneLine());
-    p = InitialParameters(d);
-    for (const auto& [q, v] : set) p[q] = v;
+  } else if (!LoadDataset(FLAGS_dataset, &d, &load)) {
+    return Usage(load.OneLine());
   }
-  const RigidRingModel model(effects);
   const std::string& source = FLAGS_parameters.empty() ? FLAGS_dataset : FLAGS_parameters;
-  const std::vector<Param> missing = Missing(model, p);
-  if (!missing.empty()) return Usage(MissingParameters(source, missing, notes));
-  const ModalSolution s = model.Solve(p);
-  PredictBody body = PredictBody::From(s);
-  if (!notes.empty()) body.parameter_notes = notes;
-  if (d.conditions.size() > 1) body.conditions = ByCondition(model, d, set);
-  if (!AtSpeeds(model, p, &body, &error)) return Usage(error);
-  if (!s.ok) std::fprintf(stderr, "ringid: predict: %s\n", s.error.c_str());
+  PredictBody body;
+  std::string solve_error;
+  if (!PredictBodyOf(p, FLAGS_parameters.empty() ? &d : nullptr, set, effects, source, notes,
+                     &body, &solve_error, &error)) {
+    return Usage(error);
+  }
+  if (!solve_error.empty()) std::fprintf(stderr, "ringid: predict: %s\n", solve_error.c_str());
   else std::printf("%s", body.FullReport().c_str());
   if (!FLAGS_output.empty()) {
     const int rc = Write(FLAGS_output, ReportText(PredictReport{ThisRun(argc, argv, std::nullopt), body}));
     if (rc != kExitOk) return rc;
   }
-  return s.ok ? kExitOk : kExitFailure;
+  return solve_error.empty() ? kExitOk : kExitFailure;
 }
 
 }  // namespace ringid

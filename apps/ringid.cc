@@ -30,6 +30,7 @@
 #include "apps/reports.h"
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
+#include "apps/simulate_command.h"
 #include "report/report.h"
 #include "validation/suites.h"
 #include "datasets/dataset.h"
@@ -115,69 +116,16 @@ int CompareCommand(int argc, char** argv) {
 int SimulateCommand(int argc, char** argv) {
   if (!FLAGS_lug_forces.empty()) return SimulateResponsesCommand(argc, argv);
   std::string error;
-  std::vector<double> speeds, loads;
-  if (!ParseNumberList("speeds", FLAGS_speeds, false, "m/s", &speeds, &error)) return Usage(error);
-  if (!gflags::GetCommandLineFlagInfoOrDie("loads").is_default &&
-      !ParseNumberList("loads", FLAGS_loads, true, "N", &loads, &error)) {
-    return Usage(error);
-  }
-  std::vector<const Effect*> effects;
-  if (!ParseEffects(&effects, &error)) return Usage(error);
-  if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
-    return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
-  }
-  for (double v : {FLAGS_frequency_noise, FLAGS_damping_noise, FLAGS_shape_noise, FLAGS_prior_spread}) {
-    if (!(v >= 0) || !std::isfinite(v)) return Usage("noise levels and --prior_spread must be finite and not negative");
-  }
-  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, Inputs(), &error)) {
-    return Usage(error);
-  }
-  Parameters truth;
-  LoadError load;
-  if (!LoadParameterSet(FLAGS_parameters, &truth, &load)) return Usage(load.OneLine());
-  std::map<Param, double> set;
-  if (!ParseSet(&set, &error) || !CheckEffectSizes(effects, set, truth, &error)) {
-    return Usage(error);
-  }
-  for (const auto& [p, v] : set) truth[p] = v;
-  if (FLAGS_shift != 0) truth[effects[0]->size()] = 0;  // set below
-  const RigidRingModel model(effects);
-  const std::vector<Param> missing = Missing(model, truth);
-  if (!missing.empty()) return Usage(MissingParameters(FLAGS_parameters, missing));
-  if (FLAGS_shift != 0) {
-    const Param p = effects[0]->size();
-    truth[p] = ValueForShift(truth, *effects[0], p, FLAGS_shift);
-    if (!(LargestShift(truth, *effects[0], p, truth[p]) < 2 * FLAGS_shift)) {
-      std::fprintf(stderr, "ringid: simulate: %s cannot shift a frequency by %g\n",
-                   effects[0]->name(), FLAGS_shift);
-      return kExitFailure;
-    }
-  }
-  std::mt19937_64 rng(static_cast<unsigned>(FLAGS_seed));
-  Dataset d = PlanSimulation(truth, FLAGS_prior_spread, speeds, loads, &rng);
-  std::vector<Param> fixed;  // written known, at the truth
-  if (!ParseFix(&fixed, &error)) return Usage(error);
-  for (Param q : fixed) {
-    if (Info(q).group == Group::kEffect ||
-        std::find(d.per_condition.begin(), d.per_condition.end(), q) != d.per_condition.end()) {
-      return Usage("--fix: simulate writes " + std::string(ParamName(q)) + " known already");
-    }
-    d.known[q] = truth[q];
-    d.initial.erase(q);
-    d.ties.erase(q);
-  }
-  d.name = std::filesystem::path(FLAGS_output).stem().string();
-  d.description = "simulated by ringid from " + FLAGS_parameters + "; the truth is in a separate file";
-  SimulateOptions so;
-  so.frequency_noise = FLAGS_frequency_noise;
-  so.damping_noise = FLAGS_damping_noise;
-  so.shape_noise = FLAGS_shape_noise;
-  if (!Simulate(model, truth, so, &rng, &d, &error)) {
+  Simulated s;
+  bool failed = false;
+  if (!SimulateFromFlags(true, &s, &error, &failed)) {
+    if (!failed) return Usage(error);
     std::fprintf(stderr, "ringid: simulate: %s\n", error.c_str());
     return kExitFailure;
   }
+  const Dataset& d = s.dataset;
   if (!WriteFilesAtomically({{FLAGS_output, DatasetToJson(d)},
-                             {FLAGS_truth, TruthText(MakeTruth(model, truth, d, FLAGS_output))}},
+                             {FLAGS_truth, TruthText(s.truth)}},
                             &error)) {
     return Usage(error);
   }
@@ -186,7 +134,7 @@ int SimulateCommand(int argc, char** argv) {
                                 : std::to_string(d.modes.size()) + " modes in " +
                                       std::to_string(d.conditions.size()) + " conditions";
   std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),
-              FLAGS_truth.c_str(), EffectList(effects).c_str());
+              FLAGS_truth.c_str(), EffectList(s.effects).c_str());
   return kExitOk;
 }
 
@@ -332,9 +280,7 @@ int ExportCommand(int, char**) {
   return rc;
 }
 
-// The flags every fitting command takes, and a campaign's.
-const std::vector<std::string> kFitFlags = Joined(Joined({"dataset", "output"}, ResultFlags()),
-                                                   {"threads"});
+// A campaign's flags.
 const std::vector<std::string> kCampaignFlags = {"output_dir", "jobs", "shard", "force",
                                                  "keep_going"};
 
@@ -360,38 +306,34 @@ const std::vector<Command>& Commands() {
       {"predict", "--parameters=FILE | --dataset=FILE",
        "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
        "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
-       {"parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"},
-       Predict},
+       PredictFlags(), Predict},
       {"identify", "--dataset=FILE",
        "fit parameters to a dataset, with covariance and identifiability;\n"
        "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"
        "one report per dataset, a summary table and DIR/campaign.json\n"
        "(campaign.I-of-N.json for a --shard)",
-       Joined(Joined(kFitFlags, {"save_parameters"}), kCampaignFlags), IdentifyCommand},
+       Joined(Joined(FitFlags(), {"save_parameters"}), kCampaignFlags), IdentifyCommand},
       {"identifiability", "--dataset=FILE",
        "what the data determine at the fitted point: rank, classes, Wald and\n"
        "profile intervals, free combinations, collinear pairs, identifiable\n"
        "subset, experiment advice",
-       kFitFlags, IdentifiabilityCommand},
+       FitFlags(), IdentifiabilityCommand},
       {"compare", "--dataset=FILE",
        "Levenberg-Marquardt and the Downhill Simplex from the same --starts:\n"
        "success rate, final costs, evaluations, time per fit",
-       kFitFlags, CompareCommand},
+       FitFlags(), CompareCommand},
       {"simulate", "--parameters=FILE --output=DATASET --truth=FILE",
        "a dataset measured from a parameter set, optionally with effects (each\n"
        "sized by --set or --shift), and a separate truth file; one condition per\n"
        "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
-       {"parameters", "output", "truth", "effects", "set", "shift", "frequency_noise",
-        "damping_noise", "shape_noise", "prior_spread", "fix", "seed", "speeds", "loads",
-        "lug_forces", "response_noise"},
-       SimulateCommand},
+       SimulateFlags(), SimulateCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
        "the baseline and the others are tried on top; with --output_dir, a\n"
        "campaign as for identify",
-       Joined(Joined(kFitFlags, {"level"}), kCampaignFlags), DiagnoseCommand},
+       Joined(Joined(FitFlags(), {"level"}), kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
        "the accuracy, conditioning and speed suites, on the paper's data installed\n"
        "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"
@@ -418,7 +360,7 @@ const std::vector<Command>& Commands() {
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"
        "report (its covariance gives std_total) or a parameter set: docs/forces.md",
-       {"parameters", "dataset", "effects", "output"}, ForcesCommand},
+       ForcesFlags(), ForcesCommand},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
       {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},

@@ -28,7 +28,7 @@ before=$(reports)
 $ringid diagnose --dataset="$dir/datasets" --output_dir="$dir/sharded" $flags --shard=2/4 \
   > /dev/null 2>&1 &
 pid=$!
-while [ "$(reports)" -lt $((before + n / 8)) ]; do sleep 0.1; done
+while [ "$(reports)" -lt $((before + n / 8)) ] && kill -0 $pid 2> /dev/null; do sleep 0.1; done
 kill -TERM $pid
 wait $pid || true
 finished=$(($(reports) - before))

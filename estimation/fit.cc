@@ -7,6 +7,7 @@
 #include <Eigen/QR>
 #include <ceres/ceres.h>
 
+#include "estimation/interrupt.h"
 #include "estimation/uncertainty.h"
 
 namespace ringid {
@@ -15,14 +16,15 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Records the cost after each Levenberg-Marquardt iteration.
+// Records the cost after each Levenberg-Marquardt iteration; aborts the fit
+// on an interrupt (estimation/interrupt.h).
 class HistoryCallback : public ceres::IterationCallback {
  public:
   HistoryCallback(const ModalResiduals& residuals, LocalFit* fit)
       : residuals_(residuals), before_(residuals.evaluations()), fit_(fit) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     fit_->history.emplace_back(residuals_.evaluations() - before_, s.cost);
-    return ceres::SOLVER_CONTINUE;
+    return InterruptRequested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
   }
 
  private:

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <vector>
 
+#include "estimation/interrupt.h"
+
 namespace ringid {
 
 bool SimplexOptions::IsValid(std::string* why) const {
@@ -56,6 +58,10 @@ SimplexResult MinimizeNelderMead(
     }
     if (result.evaluations >= o.max_evaluations) {
       result.message = "evaluation budget exhausted";
+      break;
+    }
+    if (InterruptRequested()) {
+      result.message = "interrupted";
       break;
     }
     Eigen::VectorXd centroid = Eigen::VectorXd::Zero(n);

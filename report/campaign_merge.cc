@@ -34,7 +34,8 @@ bool ReadSummary(const std::string& path, CampaignReport* report, std::string* e
 
 }  // namespace
 
-bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error) {
+bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error,
+                 std::vector<std::string>* shard_paths) {
   const std::regex name("campaign\\.([0-9]{1,6})-of-([0-9]{1,6})\\.json");
   std::map<int, std::string> paths;  // by shard index
   std::error_code ec;
@@ -54,6 +55,11 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
       return false;
     }
     count = of;
+    if (paths.count(index)) {
+      *error = dir + ": " + file + " and " + paths[index] + " are both shard " +
+               std::to_string(index);
+      return false;
+    }
     paths[index] = it->path().string();
   }
   if (ec) {
@@ -93,9 +99,9 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
       return false;
     }
     body.seconds += shard.body.seconds;
-    body.resumed += shard.body.resumed;
-    body.failed += shard.body.failed;
     for (const CampaignRow& r : shard.body.datasets) {
+      body.resumed += r.resumed.value_or(false) ? 1 : 0;
+      body.failed += r.status.ok() ? 0 : 1;
       if (!rows.emplace(r.dataset, r).second) {
         *error = path + ": " + r.dataset + " is also in another shard";
         return false;
@@ -127,6 +133,10 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
     return false;
   }
   body.shard = "merged";
+  if (shard_paths) {
+    shard_paths->clear();
+    for (const auto& [index, path] : paths) shard_paths->push_back(path);
+  }
   return true;
 }
 

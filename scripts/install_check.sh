@@ -35,4 +35,10 @@ done
 # with it (PREFIX/share/ringid).
 "$prefix/bin/ringid" help > /dev/null
 (cd "$work" && "$prefix/bin/ringid" bench --suite=paper > /dev/null)
+# The Python module, where Debian's python3 looks under the prefix, when it was built.
+module=$(find "$prefix" -name 'ringid.cpython-*.so' -path '*dist-packages*' | head -1)
+if [ -n "$module" ]; then
+  PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c \
+    "import ringid; ringid.identify('datasets/paper/table1.json', starts=1)"
+fi
 echo "install check: examples and README snippet built against $prefix and ran"

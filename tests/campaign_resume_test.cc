@@ -114,8 +114,10 @@ TEST(CampaignResumeTest, AKilledShardRefitsOnlyWhatItHadNotFinishedAndTheMergeIs
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(Load(out + "/campaign.0-of-4.json")["resumed"].get<int>(), 10);
   r = Ringid(fit + "--output_dir=" + out + " --shard=0/4 --force");
+  ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(Load(out + "/campaign.0-of-4.json")["resumed"].get<int>(), 0);
   r = Ringid(fit + "--output_dir=" + out + " --shard=0/4 --relative_sigma=0.02");
+  ASSERT_EQ(r.status, 0) << r.err;
   r = Ringid("merge --output_dir=" + out);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("its options differ(s)"), std::string::npos) << r.err;
@@ -139,6 +141,26 @@ TEST(CampaignResumeTest, AReportOfOtherBytesOrOptionsIsFittedAgain) {
   EXPECT_EQ(Load(out + "/campaign.json")["resumed"].get<int>(), 2);
 }
 
+// Shards write into one directory: a report name two datasets of the whole
+// list share, or one a summary has, is refused in every shard.
+TEST(CampaignResumeTest, ReportNamesAreCheckedOverTheWholeListNotTheShard) {
+  const std::string dir = MakeDatasets("names", 2);
+  fs::create_directories(dir + "/other");
+  fs::copy_file(dir + "/data/tire00.json", dir + "/other/tire00.json");
+  const std::string list = dir + "/data/tire00.json," + dir + "/other/tire00.json";
+  for (const char* shard : {"0/2", "1/2"}) {
+    const RunResult r = Ringid("identify --dataset=" + list + " --output_dir=" + dir +
+                               "/out --shard=" + shard);
+    EXPECT_EQ(r.status, 2) << shard;
+    EXPECT_NE(r.err.find("would overwrite that of"), std::string::npos) << r.err;
+  }
+  fs::copy_file(dir + "/data/tire01.json", dir + "/other/campaign.1-of-2.json");
+  const RunResult r = Ringid("identify --dataset=" + dir + "/other --output_dir=" + dir + "/out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("would overwrite a campaign summary"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
 TEST(CampaignResumeTest, KeepGoingMakesABadDatasetOneFailedRowAndWithoutItNothingIsWritten) {
   const std::string dir = MakeDatasets("keep_going", 2);
   std::ofstream(dir + "/data/bad.json")
@@ -160,6 +182,11 @@ TEST(CampaignResumeTest, KeepGoingMakesABadDatasetOneFailedRowAndWithoutItNothin
   EXPECT_NE(bad["message"].get<std::string>().find("must be a number"), std::string::npos);
   EXPECT_FALSE(fs::exists(out + "/bad.json"));
   EXPECT_EQ(summary["datasets"][1]["status"], "success");
+  // A mistake in a flag is the command's: exit 2 even with --keep_going.
+  fs::remove_all(out);
+  r = Ringid("identify --dataset=" + dir + "/data --output_dir=" + out + " --keep_going --fix=nonsense");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 // A campaign of thousands of datasets has a summary past the 4 MiB an input

@@ -24,6 +24,8 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     // validation/: the speed cases shared with `ringid bench --suite=speed`.
     {"benchmarks", {"model", "datasets", "estimation", "report", "validation"}},
     {"examples", {"model", "datasets", "estimation", "report"}},
+    // The Python module: the command line's flags and commands, in-process.
+    {"python", {"model", "datasets", "estimation", "report", "validation", "apps"}},
 };
 
 TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {

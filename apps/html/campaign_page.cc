@@ -106,10 +106,17 @@ void ParameterHistograms(const std::vector<CampaignRow>& datasets, Page* page) {
     << "set multiplot layout " << rows << "," << columns << "\n";
   for (const auto& [q, v] : values) {
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    const int bins = std::clamp(static_cast<int>(std::sqrt(v.size())), 1, 20);
-    const double width = *hi > *lo ? (*hi - *lo) / bins : std::max(std::abs(*lo), 1e-300) * 0.1;
+    int bins = std::clamp(static_cast<int>(std::sqrt(v.size())), 1, 20);
+    double width = (*hi - *lo) / bins;
+    if (!(width > 0) || !std::isfinite(width) || !std::isfinite(*lo + (bins + 1) * width)) {
+      bins = 1;  // one value, or a range no double spacing can split
+      width = std::isfinite(*lo) && *lo != 0 ? std::abs(*lo) * 0.1 : 1;
+    }
     std::vector<int> count(bins, 0);
-    for (double x : v) ++count[std::min(bins - 1, static_cast<int>((x - *lo) / width))];
+    for (double x : v) {
+      const double at = (x - *lo) / width;
+      ++count[std::isfinite(at) ? std::clamp(static_cast<int>(std::min(at, 1e9)), 0, bins - 1) : 0];
+    }
     Series series;
     for (int b = 0; b < bins; ++b) series.Row({*lo + (b + 0.5) * width, static_cast<double>(count[b])});
     const std::string data = f.AddData(series);
@@ -121,8 +128,9 @@ void ParameterHistograms(const std::vector<CampaignRow>& datasets, Page* page) {
   }
   g << "unset multiplot\n";
   f.script = g.str();
-  f.caption = "The fitted value of each free parameter over the datasets that converged (counts "
-              "per bin; a panel per parameter, in its unit).";
+  f.caption = "The fitted value of each free parameter over the datasets fitted (counts per "
+              "bin; a panel per parameter, in its unit; a per-condition one at its first "
+              "condition).";
   page->AddFigure(std::move(f));
 }
 
