@@ -17,7 +17,12 @@ runs around it. A third residual is written in Python, as a user would without
 ringid.Problem: the parameters from the coordinates (the dataset's known values,
 exp of each log coordinate, its ties), ringid.predict of them, and the
 weighted differences of the measured frequencies by label -- checked equal to
-Problem.residuals at the start before anything is timed. A SciPy fit converged when it reaches 2 cost <= 1e-10 (Table 1
+Problem.residuals at the start before anything is timed. The fourth is issue 13's
+comparison, which issue 25's target is stated against: SciPy fitting the
+model written in NumPy (scipy_identify.py, a transcription of ringid's model,
+pairing and weights, with ringid's central-difference rule), no ringid code
+inside the fit; its residuals are checked against Problem.residuals at the
+start too. A SciPy fit converged when it reaches 2 cost <= 1e-10 (Table 1
 has 7 frequencies for 16 free parameters: every exact fit has cost 0, and
 ringid's reaches 1e-16).
 
@@ -29,6 +34,7 @@ import json
 import math
 import os
 import statistics
+import sys
 import time
 
 import numpy as np
@@ -37,6 +43,8 @@ from scipy.optimize import least_squares
 import ringid
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import scipy_identify  # noqa: E402  (the NumPy model, issue 13)
 CONVERGED_CHI_SQUARE = 1e-10
 
 
@@ -112,6 +120,25 @@ def main():
                          str(out.status),
                          chi_square <= CONVERGED_CHI_SQUARE, median_seconds(run, runs)))
 
+    # Issue 13's comparison: SciPy on the model written in NumPy.
+    numpy_ds = scipy_identify.load_dataset(args.dataset)
+    if numpy_ds["free"] != list(problem.names):
+        raise SystemExit("python_vs_scipy: scipy_identify.py frees %s, ringid %s"
+                         % (numpy_ds["free"], list(problem.names)))
+    gap = np.max(np.abs(scipy_identify.Residuals(numpy_ds)(problem.start)
+                        - problem.residuals(problem.start)))
+    if not gap <= 1e-6:  # the eigen-solvers differ by some 1e-10 relative
+        raise SystemExit("python_vs_scipy: the NumPy residual differs from ringid's by %g" % gap)
+    for method in ("trf", "dogbox"):
+        options = argparse.Namespace(jac="ringid", method=method, x_scale=1.0,
+                                     max_nfev=scipy_identify.MAX_ITERATIONS)
+        out, residuals, _, _ = scipy_identify.fit(numpy_ds, options)
+        chi_square = 2 * problem.cost(out.x)
+        runs = args.runs if method == "dogbox" else 3
+        rows.append(("least_squares %s, NumPy model (issue 13)" % method, residuals.solutions,
+                     chi_square, str(out.status), chi_square <= CONVERGED_CHI_SQUARE,
+                     median_seconds(lambda: scipy_identify.fit(numpy_ds, options), runs)))
+
     base = rows[0][5]
     print("dataset %s, median of %d runs, %d cores, load average %s, numpy %s"
           % (os.path.relpath(args.dataset), args.runs, os.cpu_count(),
@@ -125,6 +152,8 @@ def main():
             name, evaluations, chi_square, status, "yes" if converged else "NO", seconds,
             seconds / base))
     print("Python residual: the residuals written in Python over ringid.predict (see above).")
+    print("NumPy model: benchmarks/scipy_identify.py, ringid's model transcribed to NumPy, with\n"
+          "             ringid's central differences; chi-square at its end by ringid's model.")
     print("evaluations: ringid's model evaluations; SciPy's residual calls, each Jacobian one more\n"
           "             (jac ringid) or 2 per coordinate (3-point).")
     print("status: SciPy's (0: evaluation limit, 1-4: gtol, ftol, xtol, both).")

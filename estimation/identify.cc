@@ -80,14 +80,13 @@ ParameterEstimate Estimate(const ParameterSetup& setup, const ModalResiduals& re
 }
 
 // Free parameters the data, not the model, tell from a known one only
-// because it is fixed. Freed, known q's weighted-residual column j (central
-// differences in its coordinate) is partly absorbed by the free coordinates,
+// because it is fixed. Freed, known q's weighted-residual column j (exact
+// derivatives in its coordinate) is partly absorbed by the free coordinates,
 // b = C J^T j (C the covariance, J the Jacobian of `u`), and s = |j - J b|^2
 // is all the data say of q; coordinate i's variance becomes C_ii + b_i^2 / s
 // (the Schur complement). A coordinate classed yes that this leaves wider
 // than practical_relative_std rests on q where it also moves materially
-// with q (kKnownDependenceShare). Two residual evaluations per known
-// parameter of the dataset.
+// with q (kKnownDependenceShare). One Jacobian of the freed problem.
 // A parameter rests on a known one in the data only where an error in the
 // known value moves it by at least this share and at most its inverse
 // (relative to relative): below, freeing it costs too little to name; above,
@@ -109,7 +108,9 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
     freed.known.erase(q);
   }
   Status status;
-  const auto problem = Problem::Create(model, freed, o.residuals, &status);
+  ResidualOptions exact = o.residuals;
+  exact.derivatives = Derivatives::kAnalytic;
+  const auto problem = Problem::Create(model, freed, exact, &status);
   if (!problem) return;
   const ParameterSetup& fs = problem->setup();
   const ModalResiduals& r = problem->residuals();
@@ -120,24 +121,20 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
     const int at = setup.CoordinateOf(fs.free()[i], std::max(fs.condition_of(i), 0));
     if (at >= 0) xf[i] = x[at];
   }
+  Eigen::MatrixXd freed_jacobian;
+  if (!internal::EvaluateJacobian(r, xf, &freed_jacobian)) return;
   const Parameters p = setup.Decode(x.data(), 0);
-  const double h = 1e-5;  // coordinate step: log for positive parameters
-  Eigen::VectorXd plus(J.rows()), minus(J.rows());
   for (Param q : known) {
     const int k = fs.CoordinateOf(q, 0);
     if (k < 0 || fs.condition_of(k) >= 0) continue;
-    // Freed, q is structurally free with those (FindKnownDependence): the
+    // Freed, q is structurally free with those (FindStructuralFreedom): the
     // exact claim, and j lies in J's range but for rounding, where b / s
     // would be noise.
     const bool structural = std::any_of(u->known_dependence.begin(), u->known_dependence.end(),
                                         [&](const KnownDependence& d) { return d.known == q; });
     if (structural) continue;
-    Eigen::VectorXd xp = xf, xm = xf;
-    xp[k] += h;
-    xm[k] -= h;
-    if (!r.Evaluate(xp.data(), plus.data()) || !r.Evaluate(xm.data(), minus.data())) continue;
-    const Eigen::VectorXd j = (plus - minus) / (2 * h);
-    if (!j.allFinite() || j.squaredNorm() == 0) continue;
+    const Eigen::VectorXd j = freed_jacobian.col(k);
+    if (j.squaredNorm() == 0) continue;
     const Eigen::VectorXd b = u->covariance * (J.transpose() * j);
     const double s = (j - J * b).squaredNorm();
     for (int i = 0; i < setup.size(); ++i) {

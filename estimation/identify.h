@@ -53,7 +53,7 @@ inline constexpr double kPriorConflictZ = 3.0;
 
 // A known (fixed) parameter that a free one's class rests on: freed, it
 // would take that class with it, as a standing test measures only
-// K_cx/sigma_cx (estimation/structure.h, FindKnownDependence), or would
+// K_cx/sigma_cx (estimation/structure.h, FindStructuralFreedom), or would
 // leave it practically_no (AddPracticalDependence, estimation/identify.cc).
 struct KnownCondition {
   Param known = Param::m_b;

@@ -73,9 +73,8 @@ std::string Relation(const ParameterSetup& setup, const Parameters& p, const Eig
 // The rows of the structural test: each condition's entries and lag poles,
 // then the priors, by columns: the free coordinates, then `extra` parameters
 // as if free (log for positive ones, the parameters tied to one following
-// it), then one common factor per condition. Not normalised; false where a
-// derivative is not finite (an extreme point decides nothing).
-bool StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
+// it), then one common factor per condition. Not normalised, not checked.
+void StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
                     const std::vector<Param>& extra, Eigen::MatrixXd* g) {
   const ParameterSetup& setup = residuals.setup();
   const Dataset& dataset = residuals.dataset();
@@ -119,34 +118,7 @@ bool StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
     rows.push_back(row);
   }
   g->resize(rows.size(), cols);
-  for (size_t r = 0; r < rows.size(); ++r) {
-    if (!rows[r].allFinite()) return false;
-    g->row(r) = rows[r];
-  }
-  return true;
-}
-
-// The null space of g's columns `keep` (in that order), on rows normalised:
-// free directions have singular values at rounding level, below
-// kStructuralRank of the largest, and every other one is far above.
-Eigen::MatrixXd NullSpace(const Eigen::MatrixXd& g, const std::vector<int>& keep) {
-  Eigen::MatrixXd a(g.rows(), keep.size());
-  int kept = 0;
-  for (int r = 0; r < g.rows(); ++r) {
-    Eigen::RowVectorXd row(keep.size());
-    for (size_t j = 0; j < keep.size(); ++j) row[j] = g(r, keep[j]);
-    const double norm = row.norm();
-    if (norm > 0) a.row(kept++) = row / norm;
-  }
-  a.conservativeResize(kept, Eigen::NoChange);
-  const int cols = static_cast<int>(keep.size());
-  if (kept == 0) return Eigen::MatrixXd::Identity(cols, cols);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
-  const Eigen::VectorXd& sv = svd.singularValues();
-  const double smax = sv.size() ? sv[0] : 0;
-  int rank = 0;
-  for (int j = 0; j < sv.size(); ++j) rank += sv[j] > kStructuralRank * smax;
-  return svd.matrixV().rightCols(cols - rank);
+  for (size_t r = 0; r < rows.size(); ++r) g->row(r) = rows[r];
 }
 
 // Columns 0..n-1, then `also`, then the common factors of g (last `conditions`).
@@ -195,16 +167,83 @@ std::string StructuralFreedom::InvarianceOf(int i) const {
   return out;
 }
 
+namespace {
+
+// For every known parameter, as if freed: one decomposition serves them all.
+// q gains a free direction exactly when its column a lies in the range of
+// b, w = b^+ a, b w = a; the direction is (-w, 1) (w is orthogonal to b's
+// own null space), and freeing q adds the singular value
+// |b w - a| / sqrt(1 + |w|^2), structural below kStructuralRank.
+std::vector<KnownDependence> KnownDependenceOf(const ParameterSetup& setup, const Parameters& p,
+                                               const std::vector<Param>& known,
+                                               const Eigen::MatrixXd& b, const Eigen::MatrixXd& a,
+                                               const Eigen::JacobiSVD<Eigen::MatrixXd>& svd,
+                                               int rank) {
+  std::vector<KnownDependence> out;
+  const int n = setup.size();
+  const Eigen::VectorXd sv = svd.singularValues().head(rank);
+  const double smax = rank ? sv[0] : 0;
+  const Eigen::MatrixXd along = svd.matrixU().leftCols(rank).transpose() * a;
+  for (size_t j = 0; j < known.size(); ++j) {
+    if (!a.col(j).allFinite() || a.col(j).squaredNorm() == 0) continue;
+    const Eigen::VectorXd w = svd.matrixV().leftCols(rank) * along.col(j).cwiseQuotient(sv);
+    const double gained = (b * w - a.col(j)).norm() / std::sqrt(1 + w.squaredNorm());
+    if (!(gained <= kStructuralRank * std::max(smax, a.col(j).norm()))) continue;
+    const double vq = 1 / (1 + w.squaredNorm());  // q's part of (-w, 1), normalised
+    if (!(vq > 1e-6)) continue;  // freeing q adds no direction worth naming
+    for (int i = 0; i < n; ++i) {
+      if (std::abs(w[i]) <= 1e-6) continue;
+      KnownDependence d;
+      d.coordinate = i;
+      d.known = known[j];
+      d.known_value = p[known[j]];
+      d.measured = MeasuredCombination(setup, p, i, known[j], -w[i] * vq, vq, 1e-6);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const Eigen::VectorXd& x) {
   const ParameterSetup& setup = residuals.setup();
   const int n = setup.size(), conditions = setup.num_conditions();
   StructuralFreedom out;
   out.directions.resize(n, 0);
   if (n == 0) return out;
+  std::vector<Param> known;  // as if free, for known_dependence
+  for (Param q : residuals.model().parameters()) {
+    bool fixed = !setup.ties().count(q);
+    for (int c = 0; c < conditions; ++c) fixed = fixed && setup.CoordinateOf(q, c) < 0;
+    if (fixed) known.push_back(q);
+  }
+  const int k = static_cast<int>(known.size());
   Eigen::MatrixXd g;
-  if (!StructuralRows(residuals, x, {}, &g)) return out;
-  const Eigen::MatrixXd null = NullSpace(g, Columns(n, {}, conditions, n + conditions));
-  out.directions = Orthonormal(null.topRows(n), 1e-8);
+  StructuralRows(residuals, x, known, &g);
+  // b: the free coordinates and common factors, rows normalised (a known
+  // column keeps its row's scale; rows b does not enter keep their own).
+  const std::vector<int> keep = Columns(n, {}, conditions, n + k + conditions);
+  Eigen::MatrixXd b(g.rows(), keep.size()), a(g.rows(), k);
+  for (int r = 0; r < g.rows(); ++r) {
+    for (size_t j = 0; j < keep.size(); ++j) b(r, j) = g(r, keep[j]);
+    a.row(r) = g.row(r).segment(n, k);
+    const double norm = b.row(r).norm() > 0 ? b.row(r).norm() : a.row(r).norm();
+    if (norm > 0) {
+      b.row(r) /= norm;
+      a.row(r) /= norm;
+    }
+  }
+  if (!b.allFinite()) return out;  // an extreme point decides nothing
+  const int cols = static_cast<int>(keep.size());
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(b, Eigen::ComputeThinU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  const double smax = sv.size() ? sv[0] : 0;
+  int rank = 0;
+  for (int j = 0; j < sv.size(); ++j) rank += sv[j] > kStructuralRank * smax;
+  const Parameters p = setup.Decode(x.data(), 0);  // values, for sums and differences
+  out.known_dependence = KnownDependenceOf(setup, p, known, b, a, svd, rank);
+  out.directions = Orthonormal(svd.matrixV().rightCols(cols - rank).topRows(n), 1e-8);
   if (out.directions.cols() == 0) return out;
   // A readable basis: reduced row echelon form of the directions, pivoting on
   // the largest entry.
@@ -218,50 +257,22 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
       if (o != r) e.row(o) -= e(o, col) * e.row(r);
     }
   }
-  const Parameters p = setup.Decode(x.data(), 0);  // values, for sums and differences
+  // In the order of their first coordinates, whichever basis the SVD gave.
+  std::vector<std::pair<int, Eigen::VectorXd>> rows;
   for (int r = 0; r < e.rows(); ++r) {
     Eigen::VectorXd v = e.row(r).transpose();
-    for (int i = 0; i < n; ++i) {
+    int first = n;
+    for (int i = n - 1; i >= 0; --i) {
       if (std::abs(v[i]) < 1e-10) v[i] = 0;
+      if (v[i] != 0) first = i;
     }
+    rows.emplace_back(first, v);
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [first, v] : rows) {
     out.readable.push_back(v);
     out.invariances.push_back(Relation(setup, p, v));
-  }
-  return out;
-}
-
-std::vector<KnownDependence> FindKnownDependence(const ModalResiduals& residuals,
-                                                 const Eigen::VectorXd& x) {
-  const ParameterSetup& setup = residuals.setup();
-  const int n = setup.size(), conditions = setup.num_conditions();
-  std::vector<KnownDependence> out;
-  if (n == 0) return out;
-  std::vector<Param> known;
-  for (Param q : residuals.model().parameters()) {
-    bool fixed = !setup.ties().count(q);
-    for (int c = 0; c < conditions; ++c) fixed = fixed && setup.CoordinateOf(q, c) < 0;
-    if (fixed) known.push_back(q);
-  }
-  const int k = static_cast<int>(known.size()), total = n + k + conditions;
-  Eigen::MatrixXd g;
-  if (k == 0 || !StructuralRows(residuals, x, known, &g)) return out;
-  const Parameters p = setup.Decode(x.data(), 0);
-  for (int j = 0; j < k; ++j) {
-    // Freed, q's unit vector projected on the null space: the free direction
-    // that moves q most, orthogonal to every one that leaves q alone.
-    const Eigen::MatrixXd null = NullSpace(g, Columns(n, {n + j}, conditions, total));
-    if (null.cols() == 0) continue;  // the data fix every direction
-    const Eigen::VectorXd v = null * null.row(n).transpose();
-    if (!(v[n] > 1e-6)) continue;  // |component|^2: freeing q adds no direction
-    for (int i = 0; i < n; ++i) {
-      if (std::abs(v[i]) <= 1e-6 * v[n]) continue;
-      KnownDependence d;
-      d.coordinate = i;
-      d.known = known[j];
-      d.known_value = p[known[j]];
-      d.measured = MeasuredCombination(setup, p, i, known[j], v[i], v[n], 1e-6);
-      out.push_back(d);
-    }
   }
   return out;
 }

@@ -22,6 +22,11 @@ struct StructuralFreedom {
   // words ("only K_cx / sigma_cx enters the model").
   std::vector<Eigen::VectorXd> readable;
   std::vector<std::string> invariances;
+  // Every known parameter the model reads (ties to it follow it), as if
+  // freed by the same test: the free coordinates with a component in a
+  // direction it gains that moves the known one, that direction's part along
+  // the coordinates' own free directions removed.
+  std::vector<KnownDependence> known_dependence;
   // The invariances coordinate i takes part in, joined; empty if none.
   std::string InvarianceOf(int i) const;
 };
@@ -30,7 +35,8 @@ struct StructuralFreedom {
 // up to one factor per condition (which changes no mode), and every lag pole
 // unchanged. Rank is decided on row-normalised exact derivatives, where free
 // directions have singular values at rounding level (below 1e-9 of the
-// largest) and every other one is far above.
+// largest) and every other one is far above. One set of exact derivatives
+// and one small SVD for all of it.
 StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals,
                                         const Eigen::VectorXd& x);
 
@@ -40,14 +46,6 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals,
 // relative `tolerance`.
 std::string MeasuredCombination(const ParameterSetup& setup, const Parameters& p, int i, Param q,
                                 double vi, double vq, double tolerance);
-
-// At x, for every known parameter the model reads (ties to it follow it),
-// freed one at a time by the test of FindStructuralFreedom: the free
-// coordinates with a component in a direction it gains that moves the known
-// one, that direction's part along the coordinates' own free directions
-// removed. Cheap: the exact derivatives once, one small SVD per known one.
-std::vector<KnownDependence> FindKnownDependence(const ModalResiduals& residuals,
-                                                 const Eigen::VectorXd& x);
 
 }  // namespace ringid::internal
 

@@ -42,6 +42,31 @@ bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
   return true;
 }
 
+namespace {
+
+// The Jacobian already evaluated at x, for Ceres' covariance, which reads
+// it there only: no second evaluation of the model.
+class EvaluatedCost final : public ceres::CostFunction {
+ public:
+  explicit EvaluatedCost(const Eigen::MatrixXd& jacobian) : jacobian_(jacobian) {
+    set_num_residuals(static_cast<int>(jacobian.rows()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(jacobian.cols()));
+  }
+  bool Evaluate(double const* const*, double* r, double** jacobians) const override {
+    Eigen::Map<Eigen::VectorXd>(r, jacobian_.rows()).setZero();  // unused by the covariance
+    if (jacobians && jacobians[0]) {
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          jacobians[0], jacobian_.rows(), jacobian_.cols()) = jacobian_;
+    }
+    return true;
+  }
+
+ private:
+  Eigen::MatrixXd jacobian_;
+};
+
+}  // namespace
+
 Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                                const ParameterSetup& setup,
                                const Eigen::VectorXd& x_in,
@@ -63,9 +88,8 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     u.error = u.covariance_error = "the Jacobian could not be evaluated at the fitted point";
     return u;
   }
-  ceres::CostFunction* cost = NewResidualCost(residuals);
   ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, x.data());
+  problem.AddResidualBlock(new EvaluatedCost(J), nullptr, x.data());
   u.ok = true;
   // Finite differences leave noise along directions the model cannot see;
   // those are decided exactly and projected out.
@@ -74,7 +98,7 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
   u.structural_directions = S;
   u.structural_readable = freedom.readable;
   u.structural_invariances = freedom.invariances;
-  u.known_dependence = FindKnownDependence(residuals, x);
+  u.known_dependence = freedom.known_dependence;
   u.jacobian = S.cols() ? Eigen::MatrixXd(J - (J * S) * S.transpose()) : J;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(u.jacobian, Eigen::ComputeFullV);
   u.singular_values = svd.singularValues();

@@ -54,7 +54,7 @@ struct Uncertainty {
   std::vector<Eigen::VectorXd> structural_readable;  // the same span, one invariance each
   std::vector<std::string> structural_invariances;
   // Free coordinates the model separates from a known parameter only
-  // because that one is fixed (FindKnownDependence).
+  // because that one is fixed (FindStructuralFreedom).
   std::vector<KnownDependence> known_dependence;
 
   // The report's part; classes and std go with each parameter.
