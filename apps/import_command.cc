@@ -8,6 +8,7 @@
 #include "apps/reports.h"
 #include "datasets/tir_parameters.h"
 #include "datasets/uff_dataset.h"
+#include "estimation/label_by_fit.h"
 
 namespace ringid {
 namespace {
@@ -74,7 +75,10 @@ int ImportCommand(int argc, char** argv) {
   }
   for (const std::string& note : notes) std::printf("parameters: %s\n", note.c_str());
   UffImport in;
-  if (!UffToDataset(file, map, FLAGS_parameters.empty() ? nullptr : &p, &in, &load)) {
+  IdentifyOptions fit;  // to label by the fitted model (estimation/label_by_fit.h)
+  fit.residuals.derivatives = Derivatives::kAnalytic;
+  if (!(FLAGS_parameters.empty() ? UffToDataset(file, map, nullptr, &in, &load)
+                                 : UffToDatasetLabelledByFit(file, map, p, fit, &in, &load))) {
     return Usage(load.OneLine());
   }
   // The dataset written must read back: the loader's rules are the test.

@@ -21,6 +21,7 @@
 #include "datasets/synthetic.h"
 #include "datasets/uff.h"
 #include "datasets/uff_dataset.h"
+#include "estimation/label_by_fit.h"
 #include "model/rigid_ring_model.h"
 #include "tests/test_support.h"
 
@@ -195,6 +196,47 @@ TEST(UffImportTest, TheModelLabelsTheModesTheMapDoesNotAsTheTruth) {
       R"(, "labels": [{"mode": 2, "label": ")" + std::string(LabelName(truth[1])) + "\"}]");
   ASSERT_TRUE(UffToDataset(file, Map(with_label), &p, &in, &e)) << e.OneLine();
   for (size_t i = 0; i < truth.size(); ++i) EXPECT_EQ(in.dataset.modes[i].label, truth[i]);
+}
+
+// The names an import writes do not depend on the guess. Twelve guesses,
+// each stiffness, damper and contact value of the truth scaled by 3^U(-1,1):
+// at the guess the model names some modes differently (a camber mode
+// "lateral", an in-plane rotation "longitudinal"); labelled by the fitted
+// model every guess gives the truth's names.
+TEST(UffImportTest, TheNamesAreTheTruthsFromScatteredGuessesOnceFitted) {
+  const Parameters truth = ExampleCarTire();
+  const ModalSolution s = RigidRingModel().Solve(truth);
+  ASSERT_TRUE(s.ok);
+  std::vector<ModeLabel> names;
+  UffFile file;
+  LoadError e;
+  ASSERT_TRUE(ParseUff(LabFile(s, &names), "lab.uff", &file, &e)) << e.OneLine();
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(-1, 1);
+  IdentifyOptions o;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  int wrong_at_guess = 0;
+  for (int g = 0; g < 12; ++g) {
+    Parameters guess = truth;
+    for (Param q : RigidRingModel().parameters()) {
+      const std::string name = ParamName(q);
+      const bool scaled = name.rfind("k_", 0) == 0 || name.rfind("c_", 0) == 0 ||
+                          name.rfind("K_c", 0) == 0 || name.rfind("sigma_c", 0) == 0;
+      if (scaled) guess[q] = truth[q] * std::pow(3.0, u(rng));
+    }
+    UffImport at_guess, fitted;
+    ASSERT_TRUE(UffToDataset(file, Map(kLabMap), &guess, &at_guess, &e)) << e.OneLine();
+    ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(kLabMap), guess, o, &fitted, &e))
+        << e.OneLine();
+    for (size_t i = 0; i < names.size(); ++i) {
+      wrong_at_guess += at_guess.dataset.modes[i].label != names[i];
+      EXPECT_EQ(fitted.dataset.modes[i].label, names[i]) << "guess " << g << ", mode " << i;
+    }
+    // The values written are still the guess's.
+    EXPECT_EQ(fitted.dataset.initial.at(Param::k_bx), guess[Param::k_bx]);
+    EXPECT_EQ(fitted.dataset.known.at(Param::m_b), truth[Param::m_b]);
+  }
+  EXPECT_GT(wrong_at_guess, 0);  // without the fit the names do depend on the guess
 }
 
 // datasets/examples/car_tire_lab.uff is LabFile of the example car tire, and

@@ -1,0 +1,24 @@
+// Mode labels that do not depend on the guess: a UFF import labelled by the
+// model at the user's parameters, fitted, and labelled again by the fitted
+// model until the labels hold.
+#ifndef RINGID_ESTIMATION_LABEL_BY_FIT_H_
+#define RINGID_ESTIMATION_LABEL_BY_FIT_H_
+
+#include "datasets/uff.h"
+#include "datasets/uff_dataset.h"
+#include "estimation/identify.h"
+
+namespace ringid {
+
+// UffToDataset at `guess`; where the model labelled modes (the map did not),
+// the dataset is identified under `o` (measured shapes decide the pairing,
+// contract §2, so the fit does not rest on the labels) and labelled again at
+// the fitted parameters, at most three rounds, until no label changes. The
+// known and initial values stay the guess's. A fit that fails leaves the
+// guess's labels, with a note. False, with `error`, as UffToDataset.
+bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Parameters& guess,
+                               const IdentifyOptions& o, UffImport* out, LoadError* error);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_LABEL_BY_FIT_H_
