@@ -13,21 +13,24 @@ bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Par
   if (!UffToDataset(file, map, &guess, out, error)) return false;
   if (out->dataset.modes.size() == map.labels.size()) return true;  // the map named them all
   const Dataset at_guess = out->dataset;
+  std::vector<std::string> said;  // every round's, kept past the rounds' own notes
   bool settled = false;
   for (int round = 1; round <= 3 && !settled; ++round) {
+    const std::string names = round == 1 ? "the model's at --parameters"
+                                         : "round " + std::to_string(round - 1) + "'s";
     IdentifyResult fit;
     Identify(RigidRingModel(), out->dataset, o, &fit);
-    if (!fit.status.ok()) {
-      out->notes.push_back("labels: by the model at --parameters; the fit to label them by the "
-                           "fitted model failed: " + fit.status.message);
-      return true;
-    }
     UffImport again;
     LoadError why;
+    if (!fit.status.ok()) {
+      said.push_back("labels: the fit of round " + std::to_string(round) + " failed (" +
+                     fit.status.message + "); the names are " + names);
+      break;
+    }
     if (!UffToDataset(file, map, &fit.parameters, &again, &why)) {
-      out->notes.push_back("labels: by the model at --parameters; at the fitted parameters: " +
-                           why.OneLine());
-      return true;
+      said.push_back("labels: at round " + std::to_string(round) + "'s fitted parameters, " +
+                     why.OneLine() + "; the names are " + names);
+      break;
     }
     settled = true;
     for (size_t i = 0; i < again.dataset.modes.size(); ++i) {
@@ -37,19 +40,25 @@ bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Par
     again.dataset.initial = at_guess.initial;
     *out = std::move(again);
     char line[200];
-    std::snprintf(line, sizeof line, "labels: by the model at the fitted parameters (identify from "
-                  "--parameters, cost %.3g; round %d%s)", fit.cost, round,
-                  settled ? ", labels unchanged" : "");
-    out->notes.push_back(line);
+    std::snprintf(line, sizeof line, "labels: round %d, by the model at the parameters fitted "
+                  "from --parameters (cost %.3g)%s", round, fit.cost,
+                  settled ? ": no name changed" : "");
+    said.push_back(line);
+    if (!settled && round == 3) said.push_back("labels: still changing after 3 rounds; give them in the map");
   }
-  if (!settled) out->notes.push_back("labels: still changing after 3 rounds; give them in the map");
-  for (size_t i = 0; i < at_guess.modes.size(); ++i) {
+  out->notes.insert(out->notes.end(), said.begin(), said.end());
+  // By the UFF mode number, as the map's labels name modes.
+  std::vector<int> numbers;
+  for (const UffModalData& m : file.modal_data) {
+    if (m.IsNormalMode() || m.IsComplexMode()) numbers.push_back(m.mode_number);
+  }
+  for (size_t i = 0; i < at_guess.modes.size() && i < numbers.size(); ++i) {
     const ModeLabel before = at_guess.modes[i].label, now = out->dataset.modes[i].label;
     if (before == now) continue;
     char line[200];
-    std::snprintf(line, sizeof line, "labels: mode %zu (%.4g Hz) is %s by the fitted model, %s "
-                  "by the model at --parameters", i + 1, at_guess.modes[i].frequency_hz,
-                  LabelName(now), LabelName(before));
+    std::snprintf(line, sizeof line, "labels: mode %d (%.4g Hz) is %s, %s by the model at "
+                  "--parameters", numbers[i], at_guess.modes[i].frequency_hz, LabelName(now),
+                  LabelName(before));
     out->notes.push_back(line);
   }
   return true;

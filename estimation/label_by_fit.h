@@ -12,10 +12,11 @@ namespace ringid {
 
 // UffToDataset at `guess`; where the model labelled modes (the map did not),
 // the dataset is identified under `o` (measured shapes decide the pairing,
-// contract §2, so the fit does not rest on the labels) and labelled again at
-// the fitted parameters, at most three rounds, until no label changes. The
-// known and initial values stay the guess's. A fit that fails leaves the
-// guess's labels, with a note. False, with `error`, as UffToDataset.
+// contract §2; the starts and modes without a mapped shape go by label, so
+// a round can fit differently) and labelled again at the fitted parameters,
+// at most three rounds, until no label changes. The known and initial values
+// stay the guess's. A fit that fails keeps the names of the round before,
+// with a note. False, with `error`, as UffToDataset.
 bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Parameters& guess,
                                const IdentifyOptions& o, UffImport* out, LoadError* error);
 

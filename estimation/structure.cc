@@ -170,12 +170,14 @@ std::string StructuralFreedom::InvarianceOf(int i) const {
 namespace {
 
 // For every known parameter, as if freed: one decomposition serves them all.
+// `outside`: entering rows b does not, so never in b's range.
 // q gains a free direction exactly when its column a lies in the range of
 // b, w = b^+ a, b w = a; the direction is (-w, 1) (w is orthogonal to b's
 // own null space), and freeing q adds the singular value
 // |b w - a| / sqrt(1 + |w|^2), structural below kStructuralRank.
 std::vector<KnownDependence> KnownDependenceOf(const ParameterSetup& setup, const Parameters& p,
                                                const std::vector<Param>& known,
+                                               const std::vector<bool>& outside,
                                                const Eigen::MatrixXd& b, const Eigen::MatrixXd& a,
                                                const Eigen::JacobiSVD<Eigen::MatrixXd>& svd,
                                                int rank) {
@@ -185,7 +187,7 @@ std::vector<KnownDependence> KnownDependenceOf(const ParameterSetup& setup, cons
   const double smax = rank ? sv[0] : 0;
   const Eigen::MatrixXd along = svd.matrixU().leftCols(rank).transpose() * a;
   for (size_t j = 0; j < known.size(); ++j) {
-    if (!a.col(j).allFinite() || a.col(j).squaredNorm() == 0) continue;
+    if (outside[j] || !a.col(j).allFinite() || a.col(j).squaredNorm() == 0) continue;
     const Eigen::VectorXd w = svd.matrixV().leftCols(rank) * along.col(j).cwiseQuotient(sv);
     const double gained = (b * w - a.col(j)).norm() / std::sqrt(1 + w.squaredNorm());
     if (!(gained <= kStructuralRank * std::max(smax, a.col(j).norm()))) continue;
@@ -222,17 +224,22 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   Eigen::MatrixXd g;
   StructuralRows(residuals, x, known, &g);
   // b: the free coordinates and common factors, rows normalised (a known
-  // column keeps its row's scale; rows b does not enter keep their own).
+  // column keeps its row's scale). A known parameter that enters a row b
+  // does not is out of b's range there: no free direction moves it.
   const std::vector<int> keep = Columns(n, {}, conditions, n + k + conditions);
   Eigen::MatrixXd b(g.rows(), keep.size()), a(g.rows(), k);
+  std::vector<bool> outside(k, false);
   for (int r = 0; r < g.rows(); ++r) {
     for (size_t j = 0; j < keep.size(); ++j) b(r, j) = g(r, keep[j]);
     a.row(r) = g.row(r).segment(n, k);
-    const double norm = b.row(r).norm() > 0 ? b.row(r).norm() : a.row(r).norm();
+    const double norm = b.row(r).norm();
     if (norm > 0) {
       b.row(r) /= norm;
       a.row(r) /= norm;
+      continue;
     }
+    for (int j = 0; j < k; ++j) outside[j] = outside[j] || a(r, j) != 0;
+    a.row(r).setZero();
   }
   if (!b.allFinite()) return out;  // an extreme point decides nothing
   const int cols = static_cast<int>(keep.size());
@@ -242,7 +249,7 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   int rank = 0;
   for (int j = 0; j < sv.size(); ++j) rank += sv[j] > kStructuralRank * smax;
   const Parameters p = setup.Decode(x.data(), 0);  // values, for sums and differences
-  out.known_dependence = KnownDependenceOf(setup, p, known, b, a, svd, rank);
+  out.known_dependence = KnownDependenceOf(setup, p, known, outside, b, a, svd, rank);
   out.directions = Orthonormal(svd.matrixV().rightCols(cols - rank).topRows(n), 1e-8);
   if (out.directions.cols() == 0) return out;
   // A readable basis: reduced row echelon form of the directions, pivoting on
@@ -257,7 +264,7 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
       if (o != r) e.row(o) -= e(o, col) * e.row(r);
     }
   }
-  // In the order of their first coordinates, whichever basis the SVD gave.
+  // In the order of their first coordinates (not of the SVD's basis).
   std::vector<std::pair<int, Eigen::VectorXd>> rows;
   for (int r = 0; r < e.rows(); ++r) {
     Eigen::VectorXd v = e.row(r).transpose();
