@@ -229,17 +229,18 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   const std::vector<int> keep = Columns(n, {}, conditions, n + k + conditions);
   Eigen::MatrixXd b(g.rows(), keep.size()), a(g.rows(), k);
   std::vector<bool> outside(k, false);
-  for (int r = 0; r < g.rows(); ++r) {
+  for (int r = 0; r < g.rows(); ++r) {  // a by element: it may have no column
     for (size_t j = 0; j < keep.size(); ++j) b(r, j) = g(r, keep[j]);
-    a.row(r) = g.row(r).segment(n, k);
-    const double norm = b.row(r).norm();
-    if (norm > 0) {
-      b.row(r) /= norm;
-      a.row(r) /= norm;
-      continue;
+    const double b_norm = b.row(r).norm();
+    for (int j = 0; j < k; ++j) {
+      if (b_norm > 0) {
+        a(r, j) = g(r, n + j) / b_norm;
+      } else {
+        outside[j] = outside[j] || g(r, n + j) != 0;
+        a(r, j) = 0;
+      }
     }
-    for (int j = 0; j < k; ++j) outside[j] = outside[j] || a(r, j) != 0;
-    a.row(r).setZero();
+    if (b_norm > 0) b.row(r) /= b_norm;
   }
   if (!b.allFinite()) return out;  // an extreme point decides nothing
   const int cols = static_cast<int>(keep.size());
@@ -249,7 +250,7 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   int rank = 0;
   for (int j = 0; j < sv.size(); ++j) rank += sv[j] > kStructuralRank * smax;
   const Parameters p = setup.Decode(x.data(), 0);  // values, for sums and differences
-  out.known_dependence = KnownDependenceOf(setup, p, known, outside, b, a, svd, rank);
+  if (k > 0) out.known_dependence = KnownDependenceOf(setup, p, known, outside, b, a, svd, rank);
   out.directions = Orthonormal(svd.matrixV().rightCols(cols - rank).topRows(n), 1e-8);
   if (out.directions.cols() == 0) return out;
   // A readable basis: reduced row echelon form of the directions, pivoting on
