@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/dataset.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -12,6 +13,8 @@ bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Par
                                const IdentifyOptions& o, UffImport* out, LoadError* error) {
   if (!UffToDataset(file, map, &guess, out, error)) return false;
   if (out->dataset.modes.size() == map.labels.size()) return true;  // the map named them all
+  Dataset checked;  // the loader's rules before anything is fitted
+  if (!ParseDataset(DatasetToJson(out->dataset), file.path, &checked, error)) return false;
   const Dataset at_guess = out->dataset;
   std::vector<std::string> said;  // every round's, kept past the rounds' own notes
   bool settled = false;

@@ -16,7 +16,8 @@ namespace ringid {
 // a round can fit differently) and labelled again at the fitted parameters,
 // at most three rounds, until no label changes. The known and initial values
 // stay the guess's. A fit that fails keeps the names of the round before,
-// with a note. False, with `error`, as UffToDataset.
+// with a note. False, with `error`, as UffToDataset, or where the dataset
+// breaks the loader's rules (checked before it is fitted).
 bool UffToDatasetLabelledByFit(const UffFile& file, const UffMap& map, const Parameters& guess,
                                const IdentifyOptions& o, UffImport* out, LoadError* error);
 

@@ -121,11 +121,11 @@ void StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
   for (size_t r = 0; r < rows.size(); ++r) g->row(r) = rows[r];
 }
 
-// Columns 0..n-1, then `also`, then the common factors of g (last `conditions`).
-std::vector<int> Columns(int n, const std::vector<int>& also, int conditions, int total) {
+// Columns 0..n-1 (the free coordinates), then the common factors of g (its
+// last `conditions`).
+std::vector<int> FreeColumns(int n, int conditions, int total) {
   std::vector<int> keep;
   for (int i = 0; i < n; ++i) keep.push_back(i);
-  keep.insert(keep.end(), also.begin(), also.end());
   for (int c = 0; c < conditions; ++c) keep.push_back(total - conditions + c);
   return keep;
 }
@@ -226,7 +226,7 @@ StructuralFreedom FindStructuralFreedom(const ModalResiduals& residuals, const E
   // b: the free coordinates and common factors, rows normalised (a known
   // column keeps its row's scale). A known parameter that enters a row b
   // does not is out of b's range there: no free direction moves it.
-  const std::vector<int> keep = Columns(n, {}, conditions, n + k + conditions);
+  const std::vector<int> keep = FreeColumns(n, conditions, n + k + conditions);
   Eigen::MatrixXd b(g.rows(), keep.size()), a(g.rows(), k);
   std::vector<bool> outside(k, false);
   for (int r = 0; r < g.rows(); ++r) {  // a by element: it may have no column
