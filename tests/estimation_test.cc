@@ -740,7 +740,7 @@ TEST(PairingTest, TheTemplateSaysItsSwappedStartAndNothingAtItsFit) {
 TEST(PairingTest, AStartWhoseModesAreSwappedAgainstTheDataIsSaid) {
   Dataset d;
   LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_standing_noshape.json"),
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_standing_noshape.json"),
                           &d, &e))
       << e.OneLine();
   Status status;

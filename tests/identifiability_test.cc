@@ -314,7 +314,7 @@ TEST(IdentifiabilityTest, ProfileBoundsAreRefittedCrossingsAndJumpsAreSaidApart)
 }
 
 // `identifiability --derivatives=analytic` on a new user's rolling dataset
-// (../shared/data/cases/newcomer_rolling.json, simulated without any effect): the
+// (tests/data/newcomer_rolling.json, simulated without any effect): the
 // K_cy profile's 2 delta cost went from 0.14 at 94827.55 to 797 at 94827.50,
 // and that jump was the lower bound. It was a refit that failed: a walk warm-
 // started from one point to the next finds 0.14 there. Further down, the
@@ -324,7 +324,7 @@ TEST(IdentifiabilityTest, ProfileBoundsAreRefittedCrossingsAndJumpsAreSaidApart)
 TEST(IdentifiabilityTest, AFailedRefitIsRetriedAndOnlyARealJumpIsSaid) {
   Dataset d;
   LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_rolling.json"), &d, &e))
       << e.OneLine();
   IdentifiabilityOptions o;
   o.fit.residuals.derivatives = Derivatives::kAnalytic;

@@ -32,9 +32,9 @@ using testing::Ringid;
 using testing::RunResult;
 using testing::Scratch;
 
-std::string Corpus(const std::string& name) {
-  return testing::SourcePath("../shared/data/uff/" + name);
-}
+std::string Corpus(const std::string& name) { return testing::CorpusPath("uff/" + name); }
+
+using UffImportCorpusTest = testing::CorpusTest;
 
 UffMap Map(const std::string& json) {
   UffMap map;
@@ -51,7 +51,7 @@ double ShapeOf(const MeasuredMode& m, Dof dof) {
   return NAN;
 }
 
-TEST(UffImportTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
+TEST_F(UffImportCorpusTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
@@ -85,7 +85,7 @@ TEST(UffImportTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
   EXPECT_NE(in.notes.front().find("no dataset 164"), std::string::npos) << in.notes.front();
 }
 
-TEST(UffImportTest, AComplexEigenvalueGivesTheDampedFrequencyAndItsRatio) {
+TEST_F(UffImportCorpusTest, AComplexEigenvalueGivesTheDampedFrequencyAndItsRatio) {
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_sample_test_record10.uff"), &file, &e)) << e.OneLine();
@@ -293,6 +293,10 @@ TEST(UffImportTest, BadMapsAndUnlabelledModesAreRefusedNamingTheField) {
     EXPECT_EQ(e.field, field) << json << ": " << e.OneLine();
     EXPECT_EQ(e.OneLine().find('\n'), std::string::npos);
   }
+}
+
+TEST_F(UffImportCorpusTest, UnlabelledAndMissingModesOfAPublicFileAreRefusedNamingTheField) {
+  const std::string head = R"({"format": "ringid-uff-map/1", "name": "m", )";
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
