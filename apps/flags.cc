@@ -20,7 +20,7 @@
 // it is the table of commands in main(), and `ringid COMMAND --help` shows
 // both. The values a named flag takes come from the library (apps/help.cc).
 DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3); a campaign takes FILE,DIR,... (a directory stands for its *.json)");
-DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report); predict and export also read the rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), the rest given by --set");
+DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report)");
 DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "how to fit: Levenberg-Marquardt or the Downhill Simplex");
@@ -61,6 +61,11 @@ DEFINE_double(response_noise, 1 / (10 * std::sqrt(2.0)),
 DEFINE_int32(lugs_per_revolution, 0,
              "predict: lug impacts per wheel turn; with --speeds, the lug orders meet the modes "
              "at the critical speeds listed (0: none)");
+DEFINE_int32(max_order, 5,
+             "predict --lugs_per_revolution: the highest lug order whose critical speeds are "
+             "listed (at most 200). The default keeps the orders a lug-force measurement reads "
+             "(docs/forces.md) and a list of a few dozen lines: order k meets a mode of f Hz at "
+             "2 pi r_e0 f / (k lugs) m/s, so slow speeds alone would add hundreds of orders");
 DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling)");
 DEFINE_string(markdown, "", "also write the Markdown table here");
 DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");
@@ -95,7 +100,8 @@ const std::vector<std::string>& FitFlags() {
 
 const std::vector<std::string>& PredictFlags() {
   static const std::vector<std::string> flags = {
-      "parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "output"};
+      "parameters", "dataset", "set", "effects", "speeds", "lugs_per_revolution", "max_order",
+      "output"};
   return flags;
 }
 
@@ -108,7 +114,8 @@ const std::vector<std::string>& SimulateFlags() {
 }
 
 const std::vector<std::string>& ForcesFlags() {
-  static const std::vector<std::string> flags = {"parameters", "dataset", "effects", "output"};
+  static const std::vector<std::string> flags = {"parameters", "set", "dataset", "effects",
+                                                 "output"};
   return flags;
 }
 

@@ -48,6 +48,7 @@ DECLARE_string(loads);
 DECLARE_string(suite);
 DECLARE_int32(replicates);
 DECLARE_int32(lugs_per_revolution);
+DECLARE_int32(max_order);
 DECLARE_string(lug_forces);
 DECLARE_string(uff);
 DECLARE_bool(force);

@@ -15,11 +15,19 @@
 
 namespace ringid {
 
-bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError* error) {
+bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError* error,
+                         const std::map<Param, double>& set, std::vector<std::string>* notes) {
   std::string text;
   Json json;
   if (!ReadInputFile(path, &text, error)) return false;
-  if (ParseJsonInput(text, &json, error) && json.is_object() && json.contains("report")) {
+  if (!IsTirPath(path) && ParseJsonInput(text, &json, error) && json.is_object() &&
+      json.contains("report")) {
+    if (!set.empty()) {  // the values and their covariance are the fit's
+      error->file = "--set";
+      error->message = "not over an identify report (" + path + "): its values carry the fit's "
+                       "covariance; give a parameter set or a .tir";
+      return false;
+    }
     IdentifyReport report;
     std::string why;
     if (!ReadReport(json, &report, &why)) {
@@ -37,7 +45,7 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
     return true;
   }
   *fp = ForceParameters{};
-  if (!LoadParameters(path, {}, &fp->shared, error)) return false;
+  if (!LoadParameters(path, set, &fp->shared, error, notes)) return false;
   fp->source = kParameterSetForces;
   return true;
 }
@@ -54,6 +62,11 @@ int SimulateResponsesCommand(int argc, char** argv) {
   }
   if (!(FLAGS_response_noise > 0) || !std::isfinite(FLAGS_response_noise)) {
     return Usage("--response_noise: must be positive (it is each channel's sigma)");
+  }
+  // Its default, 0 (standing), has no lug order: the drum speeds are asked for.
+  if (gflags::GetCommandLineFlagInfoOrDie("speeds").is_default) {
+    return Usage("simulate --lug_forces needs --speeds=V1,V2,... (drum speeds in m/s, each > 0: "
+                 "a lug order exists only rolling)");
   }
   std::vector<double> speeds;
   if (!ParseNumberList("speeds", FLAGS_speeds, true, "m/s", &speeds, &error)) {
@@ -98,7 +111,8 @@ int SimulateResponsesCommand(int argc, char** argv) {
 
 bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data,
               const std::vector<const Effect*>& effects, const std::string& parameters,
-              const std::string& dataset, ForcesResult* r, std::string* error) {
+              const std::string& dataset, ForcesResult* r, std::string* error,
+              const std::vector<std::string>& notes) {
   const RigidRingModel model(effects);
   // The forces need the model that was fitted: an effect the parameters move
   // off its baseline (0; m_a, the hub's mass, has none) asks for that effect.
@@ -124,7 +138,7 @@ bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data,
       if (values.IsSet(missing[0])) fitted += (fitted.empty() ? "" : ", ") + name;
     }
     if (fitted.empty()) {
-      *error = MissingParameters(parameters, missing);
+      *error = MissingParameters(parameters, missing, notes);
       return false;
     }
     *error = dataset + ": conditions[" + std::to_string(i) + "].known." + ParamName(missing[0]) +
@@ -146,13 +160,19 @@ int ForcesCommand(int argc, char** argv) {
                  "--dataset=FILE (a response dataset, ringid-lug-response/1)");
   }
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  std::map<Param, double> set;
+  if (!ParseSet(&set, &error)) return Usage(error);
   LoadError load;
   ForceParameters fp;
-  if (!ReadForceParameters(FLAGS_parameters, &fp, &load)) return Usage(load.OneLine());
+  std::vector<std::string> notes;  // where a .tir's values came from
+  if (!ReadForceParameters(FLAGS_parameters, &fp, &load, set, &notes)) return Usage(load.OneLine());
   ResponseDataset data;
   if (!LoadResponseDataset(FLAGS_dataset, &data, &load)) return Usage(load.OneLine());
   ForcesResult r;
-  if (!ForcesOf(fp, data, effects, FLAGS_parameters, FLAGS_dataset, &r, &error)) return Usage(error);
+  if (!ForcesOf(fp, data, effects, FLAGS_parameters, FLAGS_dataset, &r, &error, notes)) {
+    return Usage(error);
+  }
+  for (const std::string& note : notes) std::printf("parameters: %s\n", note.c_str());
   return Finish<ForcesReport>(argc, argv, data, r);
 }
 

@@ -22,6 +22,10 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* bod
     *error = "--lugs_per_revolution: must not be negative";
     return false;
   }
+  if (FLAGS_max_order < 1 || FLAGS_max_order > kMaxOrders) {
+    *error = "--max_order: must lie in [1, " + std::to_string(kMaxOrders) + "]";
+    return false;
+  }
   std::sort(speeds.begin(), speeds.end());
   if (speeds == std::vector<double>{0}) {  // standing: the modes above
     if (FLAGS_lugs_per_revolution > 0) {
@@ -40,7 +44,9 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, PredictBody* bod
   if (FLAGS_lugs_per_revolution > 0) {
     body->lugs_per_revolution = FLAGS_lugs_per_revolution;
     body->r_e0 = p[Param::r_e0];
-    body->critical_speeds = CriticalSpeeds(model, p, FLAGS_lugs_per_revolution, speeds);
+    body->max_order = FLAGS_max_order;
+    body->critical_speeds =
+        CriticalSpeeds(model, p, FLAGS_lugs_per_revolution, speeds, FLAGS_max_order);
   }
   return true;
 }

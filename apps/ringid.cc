@@ -306,7 +306,7 @@ const std::vector<Command>& Commands() {
       {"predict", "--parameters=FILE | --dataset=FILE",
        "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
        "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
-       PredictFlags(), Predict},
+       PredictFlags(), Predict, ""},
       {"identify", "--dataset=FILE",
        "fit parameters to a dataset, with covariance and identifiability;\n"
        "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"
@@ -327,7 +327,7 @@ const std::vector<Command>& Commands() {
        "sized by --set or --shift), and a separate truth file; one condition per\n"
        "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
-       SimulateFlags(), SimulateCommand},
+       SimulateFlags(), SimulateCommand, "lug_forces"},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
@@ -347,11 +347,11 @@ const std::vector<Command>& Commands() {
        "a parameter set (ringid-parameters/1 or a .tir), with --set over it, as\n"
        "the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 JSON;\n"
        "what maps to what and what a .tir cannot hold: docs/tir.md",
-       {"parameters", "set", "format", "output"}, ExportCommand},
+       {"parameters", "set", "format", "output"}, ExportCommand, ""},
       {"import", "--uff=FILE [--map=FILE --output=DATASET]",
        "a test lab's UFF modes (dataset 55) as a dataset, by a map of nodes to\n"
        "degrees of freedom; without --map, what the file holds (docs/uff.md)",
-       {"uff", "map", "parameters", "set", "output"}, ImportCommand},
+       {"uff", "map", "parameters", "set", "output"}, ImportCommand, ""},
       {"merge", "--output_dir=DIR",
        "the shard summaries DIR/campaign.I-of-N.json of one campaign as\n"
        "DIR/campaign.json and its page DIR/campaign.html",
@@ -359,8 +359,9 @@ const std::vector<Command>& Commands() {
       {"forces", "--parameters=FILE --dataset=FILE",
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"
-       "report (its covariance gives std_total) or a parameter set: docs/forces.md",
-       ForcesFlags(), ForcesCommand},
+       "report (its covariance gives std_total), a parameter set or a .tir (the rest\n"
+       "by --set): docs/forces.md",
+       ForcesFlags(), ForcesCommand, ""},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
       {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},
@@ -388,7 +389,7 @@ int HelpCommand(int argc, char** argv) {
   if (argc > 3) return Usage("help takes at most one command (see 'ringid help')");
   const Command* c = FindCommand(Commands(), argv[2]);
   if (!c) return Usage(UnknownCommand(argv[2]));
-  std::fputs(CommandHelp(*c).c_str(), stdout);
+  std::fputs(CommandHelp(*c, Commands()).c_str(), stdout);
   return kExitOk;
 }
 
@@ -399,7 +400,7 @@ int Run(int argc, char** argv) {
   const Command* command = FindCommand(Commands(), name);
   if (!command) return Usage(UnknownCommand(name));
   if (WantsHelp(argc, argv)) {
-    std::fputs(CommandHelp(*command).c_str(), stdout);
+    std::fputs(CommandHelp(*command, Commands()).c_str(), stdout);
     return kExitOk;
   }
   std::string error;

@@ -158,8 +158,9 @@ std::string PredictBody::FullReport() const {
   if (conditions) table(*conditions, "\nmodes by condition (Hz):\n", true);
   if (speeds) table(*speeds, "\nmodes by speed (Hz):\n", false);
   if (critical_speeds) {
-    std::snprintf(line, sizeof line, "\ncritical speeds (%d lugs per revolution):\n",
-                  lugs_per_revolution.value_or(0));
+    std::snprintf(line, sizeof line,
+                  "\ncritical speeds (%d lugs per revolution; orders 1 to %d, --max_order):\n",
+                  lugs_per_revolution.value_or(0), max_order.value_or(0));
     text += line;
     if (critical_speeds->empty()) text += "  none within the speeds given\n";
     for (const CriticalSpeed& c : *critical_speeds) {

@@ -25,7 +25,7 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 5;
+inline constexpr int kReportSchemaVersion = 6;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
@@ -140,6 +140,7 @@ struct PredictBody {
   std::optional<std::vector<SpeedModes>> speeds;
   std::optional<int> lugs_per_revolution;
   std::optional<double> r_e0;  // the orders' slope: k lugs V / (2 pi r_e0)
+  std::optional<int> max_order;  // the critical speeds are those of orders 1 to this
   std::optional<std::vector<CriticalSpeed>> critical_speeds;
   // With --dataset of several conditions: the modes of each (`modes` are the
   // first's).
@@ -159,6 +160,7 @@ struct PredictBody {
     a->VisitIfSet("speeds", &speeds);
     a->VisitIfSet("lugs_per_revolution", &lugs_per_revolution);
     a->VisitIfSet("r_e0", &r_e0);
+    a->VisitIfSet("max_order", &max_order);
     a->VisitIfSet("critical_speeds", &critical_speeds);
     a->VisitIfSet("conditions", &conditions);
     a->VisitIfSet("parameter_notes", &parameter_notes);

@@ -596,6 +596,107 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
   }
 }
 
+// forces reads a .tir as predict does: with --set of the rest, the forces of
+// the full parameter set; without it, the line that asks for --set (the help
+// said only predict and export read a .tir, and forces had no --set).
+TEST(CliTest, ForcesReadsATirWithTheRestFromSet) {
+  const std::string car = Source("datasets/examples/car_tire.json");
+  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
+  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
+  ringid::Parameters full, from_tir;
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadParameterSet(car, &full, &e)) << e.OneLine();
+  ASSERT_TRUE(ringid::LoadParameters(tir, {}, &from_tir, &e)) << e.OneLine();
+  const std::string of_set = Scratch("forces_of_set.json"), of_tir = Scratch("forces_of_tir.json");
+  RunResult r = Ringid("forces --parameters=" + car + " --dataset=" + response + " --output=" + of_set);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("forces --parameters=" + tir + " " + SetTheRest(from_tir, full) + " --dataset=" +
+             response + " --output=" + of_tir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json a = nlohmann::json::parse(ReadFile(of_set));
+  const nlohmann::json b = nlohmann::json::parse(ReadFile(of_tir));
+  ASSERT_EQ(a["conditions"].size(), 3u);
+  for (size_t c = 0; c < 3; ++c) {
+    for (size_t k = 0; k < a["conditions"][c]["orders"].size(); ++k) {
+      for (const char* f : {"F_x", "F_z", "F_y"}) {
+        const auto& x = a["conditions"][c]["orders"][k]["forces"][f];
+        const auto& y = b["conditions"][c]["orders"][k]["forces"][f];
+        const double scale = x["abs"].get<double>();
+        EXPECT_NEAR(y["re"].get<double>(), x["re"].get<double>(), 1e-9 * scale) << c << k << f;
+        EXPECT_NEAR(y["im"].get<double>(), x["im"].get<double>(), 1e-9 * scale) << c << k << f;
+      }
+    }
+  }
+  r = Ringid("forces --parameters=" + tir + " --dataset=" + response);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("tno_205_60R15_belt.tir: I_ay: missing (the model needs it; a .tir describes "
+                       "the tire, not the wheel"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("give --set=I_ay=VALUE"), std::string::npos) << r.err;
+  // --set over an identify report, whose values carry the fit's covariance: refused.
+  const std::string fit = Scratch("forces_tir_fit.json");
+  r = Ringid("identify --starts=1 --dataset=" + Source("datasets/paper/table1.json") +
+             " --output=" + fit);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("forces --parameters=" + fit + " --set=I_ay=0.4 --dataset=" + response);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--set: not over an identify report"), std::string::npos) << r.err;
+}
+
+// The help names the commands whose --parameters reads a .tir, in one
+// sentence from the table of commands, in `ringid help` and in each
+// --help of a command taking --parameters; each command it names does read
+// one (it asks for what the belt-only .tir lacks) and simulate without
+// --lug_forces, which it does not name, does not.
+TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
+  const auto OneLine = [](std::string text) {  // the wrapped help as one line
+    for (size_t at; (at = text.find('\n')) != std::string::npos;) {
+      size_t end = at + 1;
+      while (end < text.size() && text[end] == ' ') ++end;
+      text.replace(at, end - at, " ");
+    }
+    return text;
+  };
+  const std::string sentence =
+      "--parameters of predict, simulate --lug_forces, export, import and forces also reads the "
+      "rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), what a .tir cannot hold given by "
+      "--set";
+  EXPECT_NE(OneLine(Ringid("help").out).find("a .tir: " + sentence + "."), std::string::npos);
+  for (const char* command : {"forces", "predict", "export", "import", "simulate"}) {
+    EXPECT_NE(OneLine(Ringid(std::string(command) + " --help").out).find(sentence),
+              std::string::npos)
+        << command;
+  }
+  EXPECT_NE(Ringid("forces --help").out.find("--set=TEXT"), std::string::npos);
+  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string lugs = Source("datasets/examples/car_tire_lug_forces.json");
+  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
+  const std::string lack = "tno_205_60R15_belt.tir: I_ay: missing";
+  for (const std::string& args :
+       {"predict --parameters=" + tir,
+        "simulate --parameters=" + tir + " --lug_forces=" + lugs + " --speeds=6 --output=" +
+            Scratch("tir_never.json"),
+        "forces --parameters=" + tir + " --dataset=" + response}) {
+    const RunResult r = Ringid(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.err.find(lack), std::string::npos) << args << ": " << r.err;
+  }
+  RunResult r = Ringid("export --parameters=" + tir + " --format=json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = Ringid("import --uff=" + Source("datasets/examples/car_tire_lab.uff") + " --map=" +
+             Source("datasets/examples/car_tire_lab_map.json") + " --parameters=" + tir +
+             " --output=" + Scratch("tir_import.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("parameters: no [VERTICAL] FNOMIN"), std::string::npos) << r.out;  // read
+  EXPECT_NE(r.err.find("parameter I_ay is not finite"), std::string::npos) << r.err;
+  r = Ringid("simulate --parameters=" + tir + " --output=" + Scratch("tir_sim.json") +
+             " --truth=" + Scratch("tir_sim_truth.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("tno_205_60R15_belt.tir: [0]: not valid JSON"), std::string::npos) << r.err;
+}
+
 // The template holds sigma_cx known, so identify classes K_cx yes only given
 // it; its report and its --save_parameters say so, and a .tir exported from
 // either marks K_cx as undetermined in its header, the value of a key it

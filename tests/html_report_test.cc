@@ -678,6 +678,29 @@ TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSp
   EXPECT_NE(m.html.find("Critical speeds"), std::string::npos);
 }
 
+// The forces page gives each condition's model range and flags the orders
+// above it: the shipped response under car_tire.json, whose range ends at
+// 1.5 x 117.888 Hz (drum_6: orders 3-5 above; drum_18: every order).
+TEST(HtmlReportTest, ForcesFlagsTheOrdersAboveTheModelsRange) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Make("forces_range", "forces --parameters=" +
+                                          Source("datasets/examples/car_tire.json") + " --dataset=" +
+                                          Source("datasets/examples/car_tire_lug_response.json"));
+  ExpectWellFormed(m.html, 3);
+  EXPECT_NE(m.html.find("model valid below (Hz)"), std::string::npos);
+  EXPECT_NE(m.html.find("<td>drum_6</td><td class=\"n\">6</td><td class=\"n\">63.66</td>"
+                        "<td class=\"n\">176.8</td><td>3, 4, 5</td>"),
+            std::string::npos)
+      << m.html;
+  EXPECT_NE(m.html.find("<td>drum_18</td><td class=\"n\">18</td><td class=\"n\">191</td>"
+                        "<td class=\"n\">176.8</td><td>1, 2, 3, 4, 5</td>"),
+            std::string::npos);
+  EXPECT_NE(m.html.find(">model range</th>"), std::string::npos);
+  EXPECT_NE(m.html.find("<td class=\"n\">190.99</td><td>above</td>"), std::string::npos);
+  EXPECT_NE(m.html.find("<td class=\"n\">63.66</td><td>within</td>"), std::string::npos);
+  EXPECT_NE(m.html.find("dashed: the condition&#39;s model_valid_below_hz"), std::string::npos);
+}
+
 TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGapsAndTheVerdicts) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Campaign();

@@ -12,6 +12,9 @@
 #include "apps/reports.h"
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
+#include "datasets/parameter_files.h"
+#include "datasets/response_dataset.h"
+#include "datasets/uff_dataset.h"
 #include "report/schema.h"
 #include "report/report.h"
 #include "tests/round_trip.h"
@@ -252,6 +255,26 @@ TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
 TEST(ReportTest, DocsInputsMdIsTheGeneratedFieldList) {
   EXPECT_EQ(ReadFile(Source("docs/inputs.md")), ringid::InputsMarkdown())
       << "run: build/ringid inputs > docs/inputs.md";
+}
+
+// Each input file's section gives the `format` to write, the string its
+// reader checks (it said "string", or "derived from the fields above").
+TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
+  const std::string md = ringid::InputsMarkdown();
+  const std::vector<std::string> formats = {
+      ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kParameterSetFormat,
+      ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
+      ringid::kUffMapFormat};
+  size_t lines = 0;
+  for (size_t at = md.find("- `format`: "); at != std::string::npos;
+       at = md.find("- `format`: ", at + 1)) {
+    ++lines;
+  }
+  EXPECT_EQ(lines, formats.size()) << md;
+  for (const std::string& f : formats) {
+    EXPECT_NE(md.find("- `format`: `\"" + f + "\"` (this string exactly)\n"), std::string::npos)
+        << f;
+  }
 }
 
 TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
