@@ -109,7 +109,8 @@ MeasuredMode Mode(const ModeFields& j, const std::string& field) {
   }
   if (j.damping_ratio) {
     const double z = Finite(*j.damping_ratio, field + ".damping_ratio");
-    if (!(z > 0 && z < 1)) Fail(field + ".damping_ratio", "must lie in (0, 1)");
+    const std::string problem = DampingRatioProblem(z);
+    if (!problem.empty()) Fail(field + ".damping_ratio", problem);
     m.damping_ratio = z;
   }
   if (j.damping_sigma) {
@@ -385,6 +386,13 @@ std::string ModeFrequencyProblem(double hz) {
   std::ostringstream o;
   o << hz << " Hz is outside " << kMinModeFrequencyHz << "-" << kMaxModeFrequencyHz
     << " Hz, where every rigid-ring mode lies (a typo, or not a rigid-ring mode?)";
+  return o.str();
+}
+
+std::string DampingRatioProblem(double zeta) {
+  if (zeta > kMinDampingRatio && zeta < kMaxDampingRatio) return "";
+  std::ostringstream o;
+  o << "must lie in (" << kMinDampingRatio << ", " << kMaxDampingRatio << ")";
   return o.str();
 }
 
