@@ -144,12 +144,12 @@ bool ParseDataset(const std::string& text, const std::string& path,
 // K_cx/sigma_cx"), as an identify report or --save_parameters says.
 using Undetermined = std::map<Param, std::string>;
 
-// Reads a parameter set: {"format": "ringid-parameters/1", "parameters":
-// {NAME: {"value": V, "std": S, "identifiable": C, "condition": T}}}, the
-// last three optional. An identify report has the same "parameters" object
-// and reads back as one. With `undetermined`, the values whose class (C
-// "no" or "practically_no") or condition (T a string) says the data left
-// them undetermined.
+// Reads a parameter set (ringid-parameters/1, docs/conventions.md §3): each
+// value through ParameterValue's field list (datasets/parameter_files.h), or
+// a bare number. An identify report has the same "parameters" object and
+// reads back as one. With `undetermined`, the values whose class
+// ("no" or "practically_no") or condition says the data left them
+// undetermined.
 bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error,
                       Undetermined* undetermined = nullptr);
 
