@@ -8,6 +8,7 @@
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
+#include "estimation/statistics.h"
 #include "estimation/structure.h"
 
 namespace ringid {
@@ -23,6 +24,12 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
     return true;
   }
   return false;
+}
+
+std::pair<double, double> UncertaintyOptions::PracticalBand(bool fitted_in_log) const {
+  const double half = kNormal95 * practical_relative_std;
+  if (fitted_in_log) return {std::exp(-half), std::exp(half)};
+  return {1 - half, 1 + half};
 }
 
 namespace internal {
