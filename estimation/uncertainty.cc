@@ -1,6 +1,7 @@
 #include "estimation/uncertainty.h"
 
 #include <cmath>
+#include <iomanip>
 #include <memory>
 #include <limits>
 #include <sstream>
@@ -171,8 +172,10 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                         : u.std[i] / std::max(std::abs(x[i]), 1e-300);
     if (relative > options.practical_relative_std) {
       u.classes[i] = Identifiability::kPracticallyNo;
-      why << "determined, but its relative standard deviation " << relative
-          << " makes the 95 % interval wider than a factor of 2";
+      const auto [low, high] = options.PracticalBand(setup.is_log(i));
+      why << "determined, but its relative standard deviation " << relative << " is above "
+          << options.practical_relative_std << ": its 95 % interval reaches beyond "
+          << std::setprecision(3) << low << "-" << high << " times its value";
     } else {
       u.classes[i] = Identifiability::kYes;
       why << "relative standard deviation " << relative;
