@@ -45,12 +45,6 @@ double Positive(double v, const std::string& field) {
   return v;
 }
 
-// For the parameter-set reader, which reads JSON as it comes.
-double Number(const json& j, const std::string& field) {
-  if (!j.is_number()) Fail(field, "must be a number");
-  return Finite(j.get<double>(), field);
-}
-
 std::string String(const json& j, const std::string& field) {
   if (!j.is_string()) Fail(field, "must be a string");
   return j.get<std::string>();
@@ -109,7 +103,8 @@ MeasuredMode Mode(const ModeFields& j, const std::string& field) {
   }
   if (j.damping_ratio) {
     const double z = Finite(*j.damping_ratio, field + ".damping_ratio");
-    if (!(z > 0 && z < 1)) Fail(field + ".damping_ratio", "must lie in (0, 1)");
+    const std::string problem = DampingRatioProblem(z);
+    if (!problem.empty()) Fail(field + ".damping_ratio", problem);
     m.damping_ratio = z;
   }
   if (j.damping_sigma) {
@@ -388,6 +383,13 @@ std::string ModeFrequencyProblem(double hz) {
   return o.str();
 }
 
+std::string DampingRatioProblem(double zeta) {
+  if (zeta > kMinDampingRatio && zeta < kMaxDampingRatio) return "";
+  std::ostringstream o;
+  o << "must lie in (" << kMinDampingRatio << ", " << kMaxDampingRatio << ")";
+  return o.str();
+}
+
 bool ValidConditionName(const std::string& name) {
   if (name.empty()) return false;
   for (const char c : name) {
@@ -491,48 +493,6 @@ bool ParseChecked(const std::string& text, LoadError* error,
   return true;
 }
 
-// A parameter set, or an identify report read back as one: only the
-// "parameters" object is read, each entry a number or {"value": number}.
-void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined) {
-  if (!j.is_object()) Fail("", "top level must be a JSON object");
-  if (j.contains("format") && (j["format"] == kDatasetFormat1 || j["format"] == kDatasetFormat2)) {
-    Fail("format", "this is a modal dataset (" + j["format"].get<std::string>() +
-                       "), not a parameter set");
-  }
-  if (j.contains("format") && j["format"] != kParameterSetFormat) {
-    Fail("format", std::string("must be \"") + kParameterSetFormat + "\"");
-  }
-  if (!j.contains("parameters") || !j["parameters"].is_object()) {
-    Fail("parameters", "missing or not an object");
-  }
-  const json& ps = j["parameters"];
-  for (auto it = ps.begin(); it != ps.end(); ++it) {
-    const std::string field = "parameters." + it.key();
-    const Param param = ParamCalled(it.key(), field);
-    const json& v = it.value().is_object() && it.value().contains("value")
-                        ? it.value()["value"]
-                        : it.value();
-    const std::string f = field + (it.value().is_object() ? ".value" : "");
-    (*p)[param] = Number(v, f);
-    const std::string problem = ParameterValueProblem(param, (*p)[param]);
-    if (!problem.empty()) Fail(f, problem);
-    if (!it.value().is_object()) continue;
-    // What identify said of it (its report, or --save_parameters).
-    std::string why;
-    if (it.value().contains("identifiable")) {
-      const std::string c = String(it.value()["identifiable"], field + ".identifiable");
-      if (c != "yes" && c != "practically_no" && c != "no") {
-        Fail(field + ".identifiable", "must be yes, practically_no or no");
-      }
-      if (c != "yes") why = "classed " + c + " by ringid identify";
-    }
-    if (it.value().contains("condition") && !it.value()["condition"].is_null()) {
-      why += (why.empty() ? "" : "; ") + String(it.value()["condition"], field + ".condition");
-    }
-    if (undetermined && !why.empty()) (*undetermined)[param] = why;
-  }
-}
-
 }  // namespace
 
 bool ParseJsonInput(const std::string& text, Json* out, LoadError* error) {
@@ -551,16 +511,6 @@ bool ParseDataset(const std::string& text, const std::string& path,
   dataset->path = path;
   error->file = path;
   return ParseChecked(text, error, [&](const json& j) { Read(j, dataset); });
-}
-
-bool LoadParameterSet(const std::string& path, Parameters* p,
-                      LoadError* error, Undetermined* undetermined) {
-  std::string text;
-  if (!ReadInputFile(path, &text, error)) return false;
-  *p = Parameters{};
-  if (undetermined) undetermined->clear();
-  return ParseChecked(text, error,
-                      [&](const json& j) { CheckParameterSet(j, p, undetermined); });
 }
 
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,

@@ -211,11 +211,13 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
     const std::string problem = ModeFrequencyProblem(mode.frequency_hz);
     if (!problem.empty()) return Fail(error, Where(m) + " frequency", problem);
     const std::optional<double> zeta = m.DampingRatio();
-    if (zeta && *zeta > kMinDampingRatio && *zeta < kMaxDampingRatio) {
+    const std::string damping = zeta ? DampingRatioProblem(*zeta) : "";
+    if (zeta && damping.empty()) {
       mode.damping_ratio = zeta;
     } else if (zeta && *zeta != 0) {
-      out->notes.push_back(Where(m) + ": damping ratio " + std::to_string(*zeta) +
-                           " is outside (0, 1): left out");
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", *zeta);
+      out->notes.push_back(Where(m) + ": damping ratio " + value + " left out: it " + damping);
     }
     if (!Shape(m, map, units, &mode.shape, error)) return false;
     const auto label = map.labels.find(m.mode_number);

@@ -38,6 +38,17 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
 bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
                  std::string* why);
 
+// Levenberg-Marquardt's stop (StatisticalStop, estimation/fit.cc): besides
+// kStopChiSquare, the gains of the last kShrinkingGains successful steps each
+// at most kGainShrink times the one before, extrapolated at their slowest
+// ratio but at least kSlowestShrink; Ceres' function and gradient
+// tolerances kCeresTolerance behind it (docs/development.md, which a test
+// keeps saying these figures).
+inline constexpr int kShrinkingGains = 3;
+inline constexpr double kGainShrink = 0.8;
+inline constexpr double kSlowestShrink = 0.5;
+inline constexpr double kCeresTolerance = 1e-14;
+
 // 1/2 |r(x)|^2, or +inf where the model cannot be solved.
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);
 

@@ -513,6 +513,34 @@ TEST(ParameterSetTest, ReadsTheShippedSetAndRefusesBadOnes) {
   }
 }
 
+// A value's fields are ParameterValue's, read by its field list as the
+// writer writes them: a std that is no number is refused naming it, and an
+// object without a value says the value is missing (the hand reader took the
+// first for a set without a std, and the second for a bad number). The other
+// fields of an identify report's value and its nulls (not available: as if
+// absent), and a bare number, still read.
+TEST(ParameterSetTest, AValuesFieldsAreReadByItsFieldList) {
+  Parameters p;
+  LoadError e;
+  const std::pair<std::string, std::string> bad[] = {
+      {R"({"parameters": {"m_b": {"value": 2, "std": "big"}}})",
+       "parameters.m_b.std: must be a number"},
+      {R"({"parameters": {"m_b": {"std": 0.1}}})", "parameters.m_b.value: missing"},
+      {R"({"parameters": {"m_b": {"value": 2, "condition": 3}}})",
+       "parameters.m_b.condition: must be a string"},
+  };
+  for (const auto& [text, says] : bad) {
+    EXPECT_FALSE(LoadText(text, &p, &e)) << text;
+    EXPECT_NE(e.OneLine().find(says), std::string::npos) << e.OneLine();
+  }
+  ASSERT_TRUE(LoadText(R"({"report": "identify", "parameters": {"m_b": {"value": 2, "unit": "kg",
+      "free": true, "std": null, "identifiable": "no", "reason": "r", "condition": null},
+      "k_bx": 3e5}})", &p, &e))
+      << e.OneLine();
+  EXPECT_EQ(p[Param::m_b], 2);
+  EXPECT_EQ(p[Param::k_bx], 3e5);
+}
+
 // A value written to 17 significant digits reads back as the same double, so
 // write, read and write again give the same bytes.
 // The shipped sets, read and written, write the same bytes when read again.

@@ -130,6 +130,47 @@ std::string Record55(int number, std::complex<double> lambda,
   return out + "    -1\n";
 }
 
+// The import keeps the damping ratios the JSON loader takes, the open (0, 1)
+// of DampingRatioProblem: a lightly damped mode of zeta = 1e-7 (from the
+// eigenvalue -zeta w + i w sqrt(1 - zeta^2), 6 digits written) keeps its
+// ratio, as the same ratio in a JSON dataset loads (the import had dropped
+// ratios below 1e-6); an unstable eigenvalue (zeta = -0.1) is left out with a
+// note, as the loader refuses its ratio.
+TEST(UffImportTest, KeepsEveryDampingRatioTheJsonLoaderTakes) {
+  const UffMap map = Map(R"({"format": "ringid-uff-map/1", "name": "d",
+      "channels": [{"node": 1, "direction": 3, "dof": "z_b"}],
+      "labels": [{"mode": 1, "label": "vertical"}]})");
+  const double w = 2 * M_PI * 50;
+  for (const double zeta : {1e-7, -0.1}) {
+    const std::complex<double> lambda(-zeta * w, w * std::sqrt(1 - zeta * zeta));
+    UffFile file;
+    LoadError e;
+    ASSERT_TRUE(ParseUff(Record55(1, lambda, {{1, {0.0, 0.0, 1.0}}}), "d.uff", &file, &e))
+        << e.OneLine();
+    UffImport in;
+    ASSERT_TRUE(UffToDataset(file, map, nullptr, &in, &e)) << e.OneLine();
+    const std::optional<double> read = in.dataset.modes.at(0).damping_ratio;
+    const double written = -lambda.real() / std::abs(lambda);
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.17g", written);
+    Dataset json;
+    const std::string text =
+        R"({"format": "ringid-modal-dataset/1", "name": "d", "modes": [{"label": "vertical",
+            "frequency_hz": 50, "damping_ratio": )" + std::string(ratio) + "}]}";
+    const bool loads = ParseDataset(text, "d.json", &json, &e);
+    EXPECT_EQ(read.has_value(), loads) << zeta << ": " << e.OneLine();
+    if (zeta > 0) {
+      ASSERT_TRUE(read) << zeta;
+      EXPECT_NEAR(*read, zeta, 1e-5 * zeta);
+    } else {
+      EXPECT_FALSE(read);
+      bool noted = false;
+      for (const std::string& note : in.notes) noted |= note.find("left out") != std::string::npos;
+      EXPECT_TRUE(noted);
+    }
+  }
+}
+
 // The car tire's modes written as a lab would: node 1 holds the belt's
 // translations x, y, z (in millimetres, dataset 164), node 2 its rotations,
 // node 3 the rim's;
