@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "apps/help.h"
@@ -349,10 +350,27 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
   return true;
 }
 
+// --dataset names one file, not a directory or a list (a campaign's).
+bool OneDatasetFile(bool campaigns, std::string* error) {
+  std::error_code ec;
+  const bool directory = std::filesystem::is_directory(FLAGS_dataset, ec);
+  const bool list = FLAGS_dataset.find(',') != std::string::npos &&
+                    !std::filesystem::exists(FLAGS_dataset, ec);
+  if (!directory && !list) return true;
+  *error = "--dataset: " + FLAGS_dataset + " is " +
+           (directory ? "a directory" : "a list") + " of datasets, " +
+           (campaigns ? "a campaign: give --output_dir=DIR for its reports (one per dataset and "
+                        "DIR/campaign.json)"
+                      : "and this command reads one dataset file (campaigns: identify and "
+                        "diagnose with --output_dir)");
+  return false;
+}
+
 // The same and the one dataset of --dataset.
 bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
-                   Dataset* d, std::string* error) {
+                   Dataset* d, std::string* error, bool campaigns) {
   if (!ReadFitOptions(o, effects, error)) return false;
+  if (!OneDatasetFile(campaigns, error)) return false;
   if (!CheckOutputs({{"output", FLAGS_output}, {"save_parameters", FLAGS_save_parameters}},
                     Inputs(), error)) {
     return false;

@@ -66,7 +66,7 @@ int IdentifyCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o, &effects, &d, &error)) return Usage(error);
+  if (!ReadFitInputs(&o, &effects, &d, &error, true)) return Usage(error);
   const RigidRingModel model(effects);
   IdentifyResult s;
   Identify(model, d, o, &s);
@@ -158,7 +158,7 @@ int DiagnoseCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
+  if (!ReadFitInputs(&o.fit, &effects, &d, &error, true)) return Usage(error);
   const RigidRingModel baseline(effects);
   DiagnosisResult r;
   Diagnose(baseline, d, o, &r);

@@ -91,6 +91,7 @@ std::string CampaignTable(const CampaignBody& c) {
     }
     table += " | " + number(r.seconds, "%.3g") + " |\n";
   }
+  if (!identify) table += std::string("\n") + kCampaignGapMeaning + "\n";
   return table;
 }
 

@@ -1120,4 +1120,30 @@ TEST(CliTest, TheSuitesRunFromAnyDirectoryBuiltOrInstalled) {
   std::filesystem::remove_all(prefix);
 }
 
+// identify and diagnose take a directory or a list of datasets as a
+// campaign, which needs --output_dir; without it that is said, not "not valid
+// JSON" of the directory. The other fitting commands say they read one file.
+TEST(CliTest, ADirectoryOrListWithoutOutputDirIsSaidAsACampaign) {
+  const std::string dir = Scratch("one_campaign");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/a.json");
+  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/b.json");
+  const std::string list = dir + "/a.json," + dir + "/b.json";
+  for (const std::string command : {"identify", "diagnose"}) {
+    for (const std::string& datasets : {dir, list}) {
+      const RunResult r = Ringid(command + " --dataset=" + datasets);
+      EXPECT_EQ(r.status, 2) << command << " " << datasets;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find("--dataset: " + datasets + " is a "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("campaign: give --output_dir=DIR"), std::string::npos) << r.err;
+    }
+  }
+  for (const std::string command : {"identifiability", "compare"}) {
+    const RunResult r = Ringid(command + " --dataset=" + dir);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.err.find("reads one dataset file"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
