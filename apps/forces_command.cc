@@ -8,6 +8,7 @@
 
 #include "apps/flags.h"
 #include "apps/reports.h"
+#include "datasets/file_kind.h"
 #include "datasets/response_dataset.h"
 #include "datasets/tir_parameters.h"
 #include "estimation/forces.h"
@@ -19,7 +20,7 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
   std::string text;
   Json json;
   if (!ReadInputFile(path, &text, error)) return false;
-  if (ParseJsonInput(text, &json, error) && json.is_object() && json.contains("report")) {
+  if (ParseJsonInput(text, &json, error) && SniffJson(json).kind == FileKind::kReport) {
     IdentifyReport report;
     std::string why;
     if (!ReadReport(json, &report, &why)) {

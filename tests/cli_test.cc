@@ -1146,4 +1146,31 @@ TEST(CliTest, ADirectoryOrListWithoutOutputDirIsSaidAsACampaign) {
   }
 }
 
+// A file of another kind given as a dataset is named as what it is.
+TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
+  const std::pair<std::string, std::string> cases[] = {
+      {Source("datasets/examples/car_tire_lab.uff"), "this is a UFF file, not a dataset; import"},
+      {Source("datasets/examples/tno_205_60R15_belt.tir"),
+       "this is an MF-Swift tire property file (.tir), not a dataset; use --parameters"},
+      {Source("datasets/examples/car_tire_lab_map.json"),
+       "this is a UFF map (ringid-uff-map/1), not a dataset; use import --map"},
+      {Source("datasets/examples/car_tire_lug_response.json"),
+       "this is a response dataset (ringid-lug-response/1), not a dataset"},
+  };
+  for (const auto& [file, words] : cases) {
+    const RunResult r = Ringid("identify --dataset=" + file);
+    EXPECT_EQ(r.status, 2) << file;
+    EXPECT_EQ(r.err.rfind("ringid: " + file + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+  }
+  // And a modal dataset where a response dataset belongs.
+  const RunResult r = Ringid("forces --parameters=" + Source("datasets/examples/car_tire.json") +
+                             " --dataset=" + Source("datasets/paper/table1.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("this is a modal dataset (ringid-modal-dataset/1), not a response dataset "
+                       "(ringid-lug-response/1)"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
