@@ -29,6 +29,7 @@ DECLARE_string(output);
 DECLARE_string(save_parameters);
 DECLARE_string(method);
 DECLARE_int32(starts);
+DECLARE_int32(max_iterations);
 DECLARE_int32(seed);
 DECLARE_string(weighting);
 DECLARE_double(relative_sigma);

@@ -117,7 +117,7 @@ int ImportCommand(int argc, char** argv) {
   if (!FLAGS_parameters.empty() && !LoadParameters(FLAGS_parameters, set, &p, &load, &notes)) {
     return Usage(load.OneLine());
   }
-  for (const std::string& note : notes) std::printf("parameters: %s\n", note.c_str());
+  for (const std::string& note : notes) std::printf("%s%s\n", kParameterNotePrefix, note.c_str());
   UffImport in;
   IdentifyOptions fit;  // to label by the fitted model (estimation/label_by_fit.h)
   fit.residuals.derivatives = Derivatives::kAnalytic;

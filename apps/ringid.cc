@@ -261,7 +261,12 @@ int ExportCommand(int, char**) {
   if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes, &undetermined)) {
     return Usage(load.OneLine());
   }
-  for (const std::string& note : notes) std::fprintf(stderr, "ringid: %s\n", note.c_str());
+  // Notes, not errors: beside "wrote", or on standard error when standard
+  // output is the file.
+  for (const std::string& note : notes) {
+    std::fprintf(FLAGS_output.empty() ? stderr : stdout, "%s%s\n", kParameterNotePrefix,
+                 note.c_str());
+  }
   const std::string source =
       FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();

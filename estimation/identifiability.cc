@@ -565,7 +565,9 @@ std::string IdentifiabilityResult::FullReport() const {
     std::snprintf(line, sizeof line, " %.3g", singular_values[i]);
     o << line;
   }
-  o << "\n\n  parameter      value        class           std          Wald 95 %                profile 95 %\n";
+  std::snprintf(line, sizeof line, "\n\n  %-12s %12s %-9s  %-15s %-12s %-24s %s\n", "parameter",
+                "value", "unit", "class", "std", "Wald 95 %", "profile 95 %");
+  o << line;
   for (const ParameterIdentifiability& p : parameters) {
     // A side that did not close: where it jumped or its refits failed, else "open".
     auto opt = [](const std::optional<double>& v, const std::optional<double>& jump_at,
@@ -587,8 +589,9 @@ std::string IdentifiabilityResult::FullReport() const {
                                            p.profile_95.upper_failed_at) +
                                        "]"
                                  : "-";
-    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", p.key.Text().c_str(),
-                  p.value, ToString(p.identifiable), sd, wald, prof.c_str());
+    std::snprintf(line, sizeof line, "  %-12s %12.4e %-9s  %-15s %-12s %-24s %s\n",
+                  p.key.Text().c_str(), p.value, Info(p.key.param).unit, ToString(p.identifiable),
+                  sd, wald, prof.c_str());
     o << line;
   }
   o << "\n  combinations the data leave free:\n";

@@ -131,6 +131,10 @@ struct SpeedModes {
   }
 };
 
+// How a note on where the parameters came from is printed (predict, export,
+// import): a note, not an error ("ringid: ...").
+inline constexpr char kParameterNotePrefix[] = "parameters: ";
+
 struct PredictBody {
   Status status;
   std::vector<PredictedMode> modes;

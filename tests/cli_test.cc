@@ -1173,4 +1173,65 @@ TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
       << r.err;
 }
 
+// --max_iterations reaches every fitting command; a fit it cuts short says
+// "not converged" and what to try, and the same fit with the default
+// iterations converges (so the advice is right).
+TEST(CliTest, MaxIterationsIsAFlagAndNotConvergedSaysWhatToTry) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  RunResult r = Ringid("identify --starts=1 --max_iterations=2 --dataset=" + table1);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(lm): not converged"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warning: not converged: the best start used all its 2 "
+                       "Levenberg-Marquardt iterations (--max_iterations)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("--max_iterations=8"), std::string::npos) << r.out;
+  r = Ringid("identify --starts=1 --dataset=" + table1);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(lm): converged"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("not converged"), std::string::npos) << r.out;
+  for (const std::string command : {"identify", "identifiability", "compare", "diagnose"}) {
+    r = Ringid(command + " --max_iterations=0 --dataset=" + table1);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, "ringid: --max_iterations: must be at least 1\n") << command;
+    r = Ringid(command + " --help");
+    EXPECT_NE(r.out.find("--max_iterations"), std::string::npos) << command;
+  }
+}
+
+// Notes on where the parameters came from are notes, as predict and import
+// print them ("parameters: ..."), not errors ("ringid: ...").
+TEST(CliTest, ExportPrintsItsNotesAsNotesNotErrors) {
+  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string out = Scratch("noted.json");
+  for (const std::string& to : {std::string(), " --output=" + out}) {
+    const RunResult r = Ringid("export --parameters=" + tno + " --set=k_cz=2e5 --format=json" + to);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string notes = to.empty() ? r.err : r.out;  // stdout is the file without --output
+    EXPECT_NE(notes.find("parameters: "), std::string::npos) << notes;
+    EXPECT_EQ(r.err.find("ringid: "), std::string::npos) << r.err;
+  }
+}
+
+// The terminal's parameter tables give each value's unit (the paper's Table
+// 2: N/m for the sidewall's translational stiffnesses, N m/rad for its
+// rotational ones, N s/m for its dampers, N for the slip stiffness, m for the
+// radii).
+TEST(CliTest, TheParameterTablesGiveUnits) {
+  const std::string dataset = Source("datasets/template.json");
+  const std::map<std::string, std::string> units = {
+      {"k_bx", "N/m"}, {"k_btheta", "N m/rad"}, {"c_bx", "N s/m"}, {"K_cx", "N"}, {"r_e0", "m"}};
+  for (const std::string command : {"identify", "identifiability"}) {
+    const RunResult r = Ringid(command + " --starts=1 --derivatives=analytic --dataset=" + dataset);
+    ASSERT_LE(r.status, 1) << r.err;
+    EXPECT_NE(r.out.find(" unit "), std::string::npos) << r.out;
+    for (const auto& [name, unit] : units) {
+      const size_t at = r.out.find("\n  " + name + " ");
+      ASSERT_NE(at, std::string::npos) << command << " " << name;
+      const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+      EXPECT_NE(line.find(" " + unit + " "), std::string::npos) << command << ": " << line;
+    }
+  }
+}
+
 }  // namespace
