@@ -93,7 +93,11 @@ int IdentifiabilityCommand(int argc, char** argv) {
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
   IdentifiabilityResult r;
-  AnalyzeIdentifiability(model, d, o, &r);
+  {
+    Progress progress("identifiability", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    AnalyzeIdentifiability(model, d, o, &r);
+  }
   return Finish<IdentifiabilityReport>(argc, argv, d, r);
 }
 
@@ -161,7 +165,11 @@ int DiagnoseCommand(int argc, char** argv) {
   if (!ReadFitInputs(&o.fit, &effects, &d, &error, true)) return Usage(error);
   const RigidRingModel baseline(effects);
   DiagnosisResult r;
-  Diagnose(baseline, d, o, &r);
+  {
+    Progress progress("diagnose", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    Diagnose(baseline, d, o, &r);
+  }
   return Finish<DiagnoseReport>(argc, argv, d, r);
 }
 

@@ -111,12 +111,14 @@ std::string RankExplanation(const Uncertainty& u, int n) {
 }
 
 // Per coordinate: class, std, Wald and profile intervals.
+// o.on_step: the fit, then each coordinate's profile (step 2 + i), then the rest.
 std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eigen::VectorXd& xhat,
                                                double cost, const Uncertainty& u,
                                                const IdentifiabilityOptions& o) {
   const ParameterSetup& setup = problem.setup();
   std::vector<ParameterIdentifiability> out;
   for (int i = 0; i < setup.size(); ++i) {
+    if (o.on_step) o.on_step(1 + i, setup.size() + 2);
     ParameterIdentifiability p;
     p.key = setup.key(i);
     p.value = setup.ToPhysical(i, xhat[i]);
@@ -500,6 +502,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     return;
   }
   IdentifyResult fit;
+  if (o.on_step) o.on_step(0, problem->setup().size() + 2);
   Identify(*problem, o.fit, &fit);
   AnalyzeIdentifiability(*problem, fit, o, r);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -547,7 +550,9 @@ void AnalyzeIdentifiability(const Problem& problem, const IdentifyResult& fit,
   r->combinations = combinations.Release();
   r->correlation = Correlation(u);
   r->identifiable_subset = IdentifiableSubset(u, setup, o.fit.uncertainty.rank_tolerance);
+  if (o.on_step) o.on_step(setup.size() + 1, setup.size() + 2);
   r->advice = ExperimentAdvice(problem, xhat, u, o);
+  if (o.on_step) o.on_step(setup.size() + 2, setup.size() + 2);
   r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

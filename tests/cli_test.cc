@@ -4,12 +4,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iterator>
 #include <fstream>
 #include <map>
 #include <utility>
 #include <string>
+#include <vector>
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -22,6 +26,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/progress.h"
 #include "apps/reports.h"
 #include "datasets/synthetic.h"
 #include "datasets/tir.h"
@@ -1120,6 +1125,7 @@ TEST(CliTest, TheSuitesRunFromAnyDirectoryBuiltOrInstalled) {
   std::filesystem::remove_all(prefix);
 }
 
+
 // identify and diagnose take a directory or a list of datasets as a
 // campaign, which needs --output_dir; without it that is said, not "not valid
 // JSON" of the directory. The other fitting commands say they read one file.
@@ -1231,6 +1237,132 @@ TEST(CliTest, TheParameterTablesGiveUnits) {
       const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
       EXPECT_NE(line.find(" " + unit + " "), std::string::npos) << command << ": " << line;
     }
+  }
+}
+
+// A delayed progress (kProgressAfterSeconds for a single run) draws nothing
+// before its time, then its line (redrawn while no step comes) and a last one;
+// one that ends sooner leaves nothing on the terminal.
+TEST(CliTest, ADelayedProgressShowsOnlyOnceItsTimeHasCome) {
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  const int terminal = ::open(ptsname(master), O_RDWR | O_NOCTTY);
+  ASSERT_GE(terminal, 0);
+  std::fflush(stderr);
+  const int saved = ::dup(2);
+  ::dup2(terminal, 2);  // Progress draws on stderr, when it is a terminal
+  const auto shown = [&] {
+    std::string text;
+    char buffer[4096];
+    pollfd p{master, POLLIN, 0};
+    while (::poll(&p, 1, 50) > 0) {
+      const ssize_t n = ::read(master, buffer, sizeof buffer);
+      if (n <= 0) break;
+      text.append(buffer, n);
+    }
+    return text;
+  };
+  {
+    ringid::Progress quick("quick", 0, 0.4);
+    quick.Set(1, 4);
+    quick.Set(4, 4);
+  }
+  const std::string after_quick = shown();
+  std::string early, late;
+  {
+    ringid::Progress slow("slow", 0, 0.4);
+    slow.Set(1, 4);
+    early = shown();
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));  // no step: the ticker draws
+    late = shown();
+    slow.Set(4, 4);
+  }
+  const std::string last = shown();
+  std::fflush(stderr);
+  ::dup2(saved, 2);
+  ::close(saved);
+  ::close(terminal);
+  ::close(master);
+  EXPECT_EQ(after_quick, "");
+  EXPECT_EQ(early, "");
+  EXPECT_NE(late.find("slow: 1/4"), std::string::npos) << late;
+  EXPECT_NE(last.find("slow: 4/4"), std::string::npos) << last;
+  EXPECT_NE(last.find(", took "), std::string::npos) << last;
+}
+
+// ringid `args` with its standard error on a pseudo-terminal and standard
+// output to a file; what the terminal showed, the exit status and seconds.
+std::string OnATerminal(const std::string& args, int* status, double* seconds) {
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  EXPECT_GE(master, 0);
+  EXPECT_EQ(grantpt(master), 0);
+  EXPECT_EQ(unlockpt(master), 0);
+  const std::string terminal = ptsname(master);
+  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
+                            args + " > " + Scratch("terminal_stdout.txt");
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 2, terminal.c_str(), O_RDWR, 0);
+  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
+  const auto t0 = std::chrono::steady_clock::now();
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", &files, nullptr, const_cast<char**>(argv), environ), 0);
+  posix_spawn_file_actions_destroy(&files);
+  std::string shown;
+  char buffer[4096];
+  for (int raw = 0;;) {
+    pollfd p{master, POLLIN, 0};
+    if (::poll(&p, 1, 100) > 0) {
+      const ssize_t n = ::read(master, buffer, sizeof buffer);
+      if (n > 0) shown.append(buffer, n);
+    }
+    if (::waitpid(pid, &raw, WNOHANG) == pid) {
+      *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      while (::poll(&p, 1, 100) > 0) {  // what is left
+        const ssize_t n = ::read(master, buffer, sizeof buffer);
+        if (n <= 0) break;
+        shown.append(buffer, n);
+      }
+      *status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+      break;
+    }
+  }
+  ::close(master);
+  return shown;
+}
+
+// Single identifiability and diagnose runs are wired to that progress: on a
+// terminal, a run that took over 2.5 s showed it, one under 1.5 s did not.
+// Each command's runs go from quick to slow until one took over 2.5 s here.
+TEST(CliTest, ALongSingleRunShowsProgressOnATerminal) {
+  const std::string tire = " --dataset=" + Source("datasets/template.json");
+  const std::string rolling = " --dataset=" + Source("datasets/examples/car_tire_rolling.json");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+      {"identifiability",
+       {"--derivatives=analytic --threads=1" + tire, "--derivatives=analytic" + rolling,
+        "--threads=1" + rolling}},
+      {"diagnose",
+       {"--derivatives=analytic --threads=1 --starts=1" + tire, "--threads=1" + tire,
+        "--threads=1" + rolling}}};
+  for (const auto& [command, runs] : commands) {
+    bool long_run = false;
+    for (size_t k = 0; k < runs.size() && !long_run; ++k) {
+      int status = -1;
+      double seconds = 0;
+      const std::string shown = OnATerminal(command + " " + runs[k], &status, &seconds);
+      EXPECT_LE(status, 1) << runs[k] << ": " << shown;
+      const bool drawn = shown.find(command + ": ") != std::string::npos;
+      if (seconds > 2.5) {
+        long_run = true;
+        EXPECT_TRUE(drawn) << command << " " << runs[k] << " took " << seconds << " s";
+        EXPECT_NE(shown.find(", took "), std::string::npos) << shown;
+      } else if (seconds < 1.5) {
+        EXPECT_FALSE(drawn) << command << " " << runs[k] << " took " << seconds << " s: " << shown;
+      }
+    }
+    EXPECT_TRUE(long_run) << command << ": no run took 2.5 s here";
   }
 }
 
