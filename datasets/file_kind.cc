@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <sstream>
 
 #include "datasets/dataset.h"
 #include "datasets/parameter_files.h"
@@ -23,14 +24,20 @@ SniffedFile SniffPath(const std::string& path) {
 SniffedFile SniffFile(const std::string& path, const std::string& text) {
   const SniffedFile by_path = SniffPath(path);
   if (by_path.kind != FileKind::kUnknown) return by_path;
-  // A UFF file opens with a line "    -1" (I6), after blank lines at most.
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && text.compare(first, 2, "-1") == 0) {
-    const size_t end = text.find_first_of("\r\n", first);
-    const std::string rest = text.substr(first + 2, end == std::string::npos ? 0 : end - first - 2);
-    if (rest.find_first_not_of(" \t") == std::string::npos) return {FileKind::kUff, "", ""};
-  }
-  return {};
+  // A UFF file opens with a line "    -1" (I6), after blank lines at most, and
+  // a dataset number on the next ("    55", "    58b"; datasets/uff.h).
+  std::istringstream lines(text.substr(0, 4096));  // the opening is enough
+  std::string line, number;
+  while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {}
+  std::istringstream opening(line);
+  std::string minus_one, rest;
+  if (!(opening >> minus_one) || minus_one != "-1" || (opening >> rest)) return {};
+  if (!std::getline(lines, line)) return {};
+  std::istringstream second(line);
+  if (!(second >> number)) return {};  // 58b: its binary header follows on the line
+  if (number.back() == 'b') number.pop_back();
+  if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos) return {};
+  return {FileKind::kUff, "", ""};
 }
 
 FileKind FormatKind(const std::string& format) {

@@ -31,8 +31,8 @@ struct SniffedFile {
 
 // By the path alone: a directory, a .tir.
 SniffedFile SniffPath(const std::string& path);
-// By the path, then by the text's first line (UFF); JSON text is Unknown
-// here: its kind is SniffJson's, once parsed.
+// By the path, then by the text's first two lines (UFF: "-1", then a
+// dataset number); JSON text is Unknown here: its kind is SniffJson's.
 SniffedFile SniffFile(const std::string& path, const std::string& text);
 // A parsed JSON file (nlohmann::json or ordered_json) by its "format" (a
 // format of ringid; any other is Unknown), else a "report" string, else a
