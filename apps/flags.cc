@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "apps/help.h"
@@ -25,6 +26,9 @@ DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; re
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(method, ringid::ToString(ringid::IdentifyOptions().method), "how to fit: Levenberg-Marquardt or the Downhill Simplex");
 DEFINE_int32(starts, ringid::IdentifyOptions().starts, "number of starts: the dataset's initial point, the point matching the measured frequencies, and points scattered log-uniformly around that");
+DEFINE_int32(max_iterations, ringid::IdentifyOptions().max_iterations,
+             "Levenberg-Marquardt iterations per start (and per profile refit) before it stops "
+             "unconverged");
 DEFINE_int32(seed, static_cast<int>(ringid::IdentifyOptions().seed),
              "seed of the random starts, and of the noise in simulate and bench");
 DEFINE_string(weighting, ringid::ToString(ringid::ResidualOptions().frequency_weighting),
@@ -87,7 +91,7 @@ namespace ringid {
 
 const std::vector<std::string>& ResultFlags() {
   static const std::vector<std::string> flags = {
-      "method", "starts", "seed", "weighting", "relative_sigma", "shapes", "damping",
+      "method", "starts", "max_iterations", "seed", "weighting", "relative_sigma", "shapes", "damping",
       "shape_convention", "derivatives", "effects", "bounds", "fix"};
   return flags;
 }
@@ -337,6 +341,11 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
     return false;
   }
   o->starts = FLAGS_starts;
+  if (FLAGS_max_iterations < 1) {
+    *error = "--max_iterations: must be at least 1";
+    return false;
+  }
+  o->max_iterations = FLAGS_max_iterations;
   if (FLAGS_threads < 0 || FLAGS_threads > IdentifyOptions::kMaxThreads) {
     *error = "--threads: must lie in [0, " + std::to_string(IdentifyOptions::kMaxThreads) +
              "] (0: the cores)";
@@ -356,10 +365,27 @@ bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects,
   return true;
 }
 
+// --dataset names one file, not a directory or a list (a campaign's).
+bool OneDatasetFile(bool campaigns, std::string* error) {
+  std::error_code ec;
+  const bool directory = std::filesystem::is_directory(FLAGS_dataset, ec);
+  const bool list = FLAGS_dataset.find(',') != std::string::npos &&
+                    !std::filesystem::exists(FLAGS_dataset, ec);
+  if (!directory && !list) return true;
+  *error = "--dataset: " + FLAGS_dataset + " is " +
+           (directory ? "a directory" : "a list") + " of datasets, " +
+           (campaigns ? "a campaign: give --output_dir=DIR for its reports (one per dataset and "
+                        "DIR/campaign.json)"
+                      : "and this command reads one dataset file (campaigns: identify and "
+                        "diagnose with --output_dir)");
+  return false;
+}
+
 // The same and the one dataset of --dataset.
 bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects,
-                   Dataset* d, std::string* error) {
+                   Dataset* d, std::string* error, bool campaigns) {
   if (!ReadFitOptions(o, effects, error)) return false;
+  if (!OneDatasetFile(campaigns, error)) return false;
   if (!CheckOutputs({{"output", FLAGS_output}, {"save_parameters", FLAGS_save_parameters}},
                     Inputs(), error)) {
     return false;

@@ -29,6 +29,7 @@ DECLARE_string(output);
 DECLARE_string(save_parameters);
 DECLARE_string(method);
 DECLARE_int32(starts);
+DECLARE_int32(max_iterations);
 DECLARE_int32(seed);
 DECLARE_string(weighting);
 DECLARE_double(relative_sigma);
@@ -120,9 +121,11 @@ bool ParseFlag(const char* name, const std::string& value, E* e, std::string* er
 // The flags every fitting command shares, read into options and the model's
 // effects.
 bool ReadFitOptions(IdentifyOptions* o, std::vector<const Effect*>* effects, std::string* error);
-// The same and the one dataset of --dataset, --fix applied.
+// The same and the one dataset of --dataset, --fix applied. A directory or
+// a list in --dataset is refused as a campaign's, which `campaigns` (identify
+// and diagnose) run with --output_dir.
 bool ReadFitInputs(IdentifyOptions* o, std::vector<const Effect*>* effects, Dataset* d,
-                   std::string* error);
+                   std::string* error, bool campaigns = false);
 
 // The effect of the catalogue that `p` belongs to, or null for a parameter
 // of the baseline.

@@ -8,6 +8,7 @@
 
 #include "apps/flags.h"
 #include "apps/reports.h"
+#include "datasets/file_kind.h"
 #include "datasets/response_dataset.h"
 #include "datasets/tir_parameters.h"
 #include "estimation/forces.h"
@@ -20,8 +21,7 @@ bool ReadForceParameters(const std::string& path, ForceParameters* fp, LoadError
   std::string text;
   Json json;
   if (!ReadInputFile(path, &text, error)) return false;
-  if (!IsTirPath(path) && ParseJsonInput(text, &json, error) && json.is_object() &&
-      json.contains("report")) {
+  if (ParseJsonInput(text, &json, error) && SniffJson(json).kind == FileKind::kReport) {
     if (!set.empty()) {  // the values and their covariance are the fit's
       error->file = "--set";
       error->message = "not over an identify report (" + path + "): its values carry the fit's "

@@ -66,7 +66,7 @@ int IdentifyCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o, &effects, &d, &error)) return Usage(error);
+  if (!ReadFitInputs(&o, &effects, &d, &error, true)) return Usage(error);
   const RigidRingModel model(effects);
   IdentifyResult s;
   Identify(model, d, o, &s);
@@ -93,7 +93,11 @@ int IdentifiabilityCommand(int argc, char** argv) {
   if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
   const RigidRingModel model(effects);
   IdentifiabilityResult r;
-  AnalyzeIdentifiability(model, d, o, &r);
+  {
+    Progress progress("identifiability", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    AnalyzeIdentifiability(model, d, o, &r);
+  }
   return Finish<IdentifiabilityReport>(argc, argv, d, r);
 }
 
@@ -158,10 +162,14 @@ int DiagnoseCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
+  if (!ReadFitInputs(&o.fit, &effects, &d, &error, true)) return Usage(error);
   const RigidRingModel baseline(effects);
   DiagnosisResult r;
-  Diagnose(baseline, d, o, &r);
+  {
+    Progress progress("diagnose", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    Diagnose(baseline, d, o, &r);
+  }
   return Finish<DiagnoseReport>(argc, argv, d, r);
 }
 
@@ -261,7 +269,12 @@ int ExportCommand(int, char**) {
   if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes, &undetermined)) {
     return Usage(load.OneLine());
   }
-  for (const std::string& note : notes) std::fprintf(stderr, "ringid: %s\n", note.c_str());
+  // Notes, not errors: beside "wrote", or on standard error when standard
+  // output is the file.
+  for (const std::string& note : notes) {
+    std::fprintf(FLAGS_output.empty() ? stderr : stdout, "%s%s\n", kParameterNotePrefix,
+                 note.c_str());
+  }
   const std::string source =
       FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();

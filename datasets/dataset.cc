@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset_file.h"
+#include "datasets/file_kind.h"
 #include "model/spelling.h"
 
 namespace ringid {
@@ -326,17 +327,9 @@ void Check(const DatasetFields& j, Dataset* d) {
 // out its format (LoadParameterSet).
 void CheckKind(const json& j) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
-  const bool unmarked_set = !j.contains("format") && j.contains("parameters") &&
-                            !j.contains("modes") && !j.contains("conditions") &&
-                            !j.contains("report");
-  if ((j.contains("format") && j["format"] == kParameterSetFormat) || unmarked_set) {
-    Fail(unmarked_set ? "parameters" : "format",
-         std::string("this is a parameter set (") + kParameterSetFormat +
-             "), not a dataset; use --parameters");
-  }
-  if (!j.contains("format") && j.contains("report") && j["report"].is_string()) {
-    Fail("report", "this is a ringid " + j["report"].get<std::string>() +
-                       " report, not a dataset");
+  const SniffedFile kind = SniffJson(j);
+  if (kind.kind != FileKind::kUnknown && kind.kind != FileKind::kModalDataset) {
+    Fail(kind.field, NotTheKind(kind, "a dataset"));
   }
   if (!j.contains("format")) Fail("format", "missing");
   const std::string format = String(j["format"], "format");
@@ -517,6 +510,10 @@ bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
                    long max_bytes) {
   error->file = path;
   error->field = "";
+  if (SniffPath(path).kind == FileKind::kDirectory) {
+    error->message = "a directory, not a file";
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     error->message = "cannot open file";
@@ -538,8 +535,13 @@ bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
 
 bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
   std::string text;
-  return ReadInputFile(path, &text, error) &&
-         ParseDataset(text, path, dataset, error);
+  if (!ReadInputFile(path, &text, error)) return false;
+  // Not JSON at all: a .tir or a UFF file, named as such (the JSON kinds: CheckKind).
+  if (const SniffedFile kind = SniffFile(path, text); kind.kind != FileKind::kUnknown) {
+    error->message = NotTheKind(kind, "a dataset");
+    return false;
+  }
+  return ParseDataset(text, path, dataset, error);
 }
 
 bool Dataset::IsPerCondition(Param p) const {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "datasets/file_kind.h"
 #include "datasets/synthetic.h"
 #include "model/effects.h"
 #include "model/spelling.h"
@@ -21,14 +22,13 @@ bool ReadParameterSet(const Json& j, ParameterSet* set, LoadError* error) {
     return false;
   };
   if (!j.is_object()) return fail("", "top level must be a JSON object");
-  if (const auto format = j.find("format"); format != j.end()) {
-    if (*format == kDatasetFormat1 || *format == kDatasetFormat2) {
-      return fail("format", "this is a modal dataset (" + format->get<std::string>() +
-                                "), not a parameter set");
-    }
-    if (*format != kParameterSetFormat) {
-      return fail("format", std::string("must be \"") + kParameterSetFormat + "\"");
-    }
+  const SniffedFile kind = SniffJson(j);
+  if (kind.kind != FileKind::kUnknown && kind.kind != FileKind::kParameterSet &&
+      kind.kind != FileKind::kReport) {  // an identify report's parameters are read
+    return fail(kind.field, NotTheKind(kind, "a parameter set"));
+  }
+  if (const auto format = j.find("format"); format != j.end() && *format != kParameterSetFormat) {
+    return fail("format", std::string("must be \"") + kParameterSetFormat + "\"");
   }
   const auto values = j.find("parameters");
   if (values == j.end() || !values->is_object()) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <set>
 
+#include "datasets/file_kind.h"
 #include "model/campbell.h"
 #include "model/forced_response.h"
 #include "model/spelling.h"
@@ -136,8 +137,11 @@ bool ReadTyped(const std::string& text, const std::string& path, const char* for
   Json j;
   if (!ParseJsonInput(text, &j, error)) return false;
   if (j.is_object() && j.contains("format") && j["format"] != format) {
+    const SniffedFile found = SniffJson(j);
     error->field = "format";
-    error->message = std::string("must be \"") + format + "\"";
+    error->message = found.kind == FileKind::kUnknown
+                         ? std::string("must be \"") + format + "\""
+                         : NotTheKind(found, KindName({FormatKind(format), format, ""}));
     return false;
   }
   Fields fields;

@@ -4,9 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <set>
 
+#include "datasets/file_kind.h"
 #include "datasets/tir_contact.h"
 #include "model/rigid_ring_model.h"
 
@@ -498,9 +498,7 @@ bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error) {
   return true;
 }
 
-bool IsTirPath(const std::string& path) {
-  return Upper(std::filesystem::path(path).extension().string()) == ".TIR";
-}
+bool IsTirPath(const std::string& path) { return SniffPath(path).kind == FileKind::kTir; }
 
 namespace {
 

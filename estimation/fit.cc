@@ -173,6 +173,7 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   fit.cost = summary.IsSolutionUsable() ? CostAt(residuals, fit.x) : kInf;
   fit.converged = summary.termination_type == ceres::CONVERGENCE ||
                   summary.termination_type == ceres::USER_SUCCESS;
+  fit.at_limit = summary.termination_type == ceres::NO_CONVERGENCE;
   if (summary.termination_type == ceres::USER_SUCCESS) {
     char words[200];
     std::snprintf(words, sizeof words,
@@ -200,6 +201,7 @@ LocalFit FitSimplex(const ModalResiduals& residuals,
   fit.x = s.x;
   fit.cost = s.cost;
   fit.converged = s.converged;
+  fit.at_limit = !s.converged && s.evaluations >= options.max_evaluations;
   fit.message = s.message;
   for (const auto& [evaluations, cost] : s.history) fit.history.emplace_back(evaluations, cost);
   return fit;
@@ -299,6 +301,23 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
   fit.seconds = std::chrono::duration<double>(
                     std::chrono::steady_clock::now() - t0).count();
   return fit;
+}
+
+std::string NotConverged(const LocalFit& fit, Method method, int max_iterations,
+                         const SimplexOptions& simplex) {
+  if (fit.at_limit && method == Method::kLevenbergMarquardt) {
+    return "not converged: the best start used all its " + std::to_string(max_iterations) +
+           " Levenberg-Marquardt iterations (--max_iterations) before the stopping rule held; "
+           "run again with --max_iterations=" + std::to_string(4 * max_iterations) +
+           " (the estimates and their std may still move), or from initial values nearer the fit";
+  }
+  if (fit.at_limit) {
+    return "not converged: the Downhill Simplex used all its " +
+           std::to_string(simplex.max_evaluations) +
+           " evaluations; try --method=lm (Levenberg-Marquardt), or hold what you know (--fix)";
+  }
+  return "not converged: the best start stopped on '" + fit.message +
+         "'; try more starts (--starts) or exact Jacobians (--derivatives=analytic)";
 }
 
 }  // namespace internal

@@ -56,6 +56,9 @@ struct LocalFit {
   Eigen::VectorXd x;
   double cost = std::numeric_limits<double>::infinity();
   bool converged = false;
+  // Stopped by its limit: max_iterations (Levenberg-Marquardt) or
+  // SimplexOptions::max_evaluations, not by a convergence test or a failure.
+  bool at_limit = false;
   std::string message;
   long evaluations = 0;  // model solutions this fit used
   double seconds = 0;
@@ -70,6 +73,11 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
                     const Eigen::VectorXd& start, const Box& box,
                     int max_iterations, const SimplexOptions& simplex,
                     int fixed = -1, double stop_chi_square = kStopChiSquare);
+
+// What to try where `fit`, the best start, did not converge: more
+// iterations where it ran out of them, else what it stopped on.
+std::string NotConverged(const LocalFit& fit, Method method, int max_iterations,
+                         const SimplexOptions& simplex);
 
 }  // namespace internal
 

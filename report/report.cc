@@ -91,6 +91,7 @@ std::string CampaignTable(const CampaignBody& c) {
     }
     table += " | " + number(r.seconds, "%.3g") + " |\n";
   }
+  if (!identify) table += std::string("\n") + kCampaignGapMeaning + "\n";
   return table;
 }
 
@@ -119,7 +120,7 @@ std::string PredictBody::FullReport() const {
   std::string text;
   char line[160];
   for (const std::string& note : parameter_notes.value_or(std::vector<std::string>{})) {
-    text += "parameters: " + note + "\n";
+    text += kParameterNotePrefix + note + "\n";
   }
   if (parameter_notes && !parameter_notes->empty()) text += "\n";
   std::snprintf(line, sizeof line, "%-22s %-13s %10s %8s\n", "mode", "plane", "Hz", "zeta");

@@ -131,6 +131,10 @@ struct SpeedModes {
   }
 };
 
+// How a note on where the parameters came from is printed (predict, export,
+// import): a note, not an error ("ringid: ...").
+inline constexpr char kParameterNotePrefix[] = "parameters: ";
+
 struct PredictBody {
   Status status;
   std::vector<PredictedMode> modes;
@@ -234,7 +238,15 @@ struct CampaignBody {
   }
 };
 
-// The campaign as a Markdown table, one row per dataset (shrink in %).
+// What a diagnose campaign's gap columns hold, under its table and in its
+// page's figure.
+inline constexpr char kCampaignGapMeaning[] =
+    "gap: chi-square in excess of its degrees of freedom, max(0, chi-square - dof), 0 for a fit "
+    "as good as the noise; before: the calibrated baseline's, after: with the effect of the "
+    "verdict added; shrink: 1 - after / before";
+
+// The campaign as a Markdown table, one row per dataset (shrink in %); a
+// diagnose campaign's with kCampaignGapMeaning under it.
 std::string CampaignTable(const CampaignBody& campaign);
 
 template <ReportKind K, class Body>

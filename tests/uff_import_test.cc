@@ -384,5 +384,98 @@ TEST(UffImportTest, TheCommandWritesADatasetIdentifyReadsAndNothingOnBadInput) {
   }
 }
 
+
+// A map channel on a node the file's modes do not hold would drop that degree
+// of freedom from every shape: it is refused, naming the node, its direction
+// and the file, exit 2, nothing written.
+TEST(UffImportTest, AMappedNodeTheFileDoesNotHoldIsRefusedNamingIt) {
+  const Parameters p = ExampleCarTire();
+  ModalSolution s;
+  std::vector<ModeLabel> truth;
+  const UffFile file = ReadLabFile(p, &s, &truth);  // nodes 1, 2 and 3 (LabFile)
+  std::string json = kLabMap;
+  const std::string extra = R"({"node": 9, "direction": 2, "dof": "y_a"}, )";
+  json.insert(json.find("{\"node\": 1"), extra);
+  const UffMap map = Map(json);
+  UffImport in;
+  LoadError e;
+  EXPECT_FALSE(UffToDataset(file, map, &p, &in, &e));
+  EXPECT_EQ(e.file, "lab.uff");
+  EXPECT_NE(e.message.find("node 9 direction 2"), std::string::npos) << e.OneLine();
+  EXPECT_NE(e.message.find("channels[0]"), std::string::npos) << e.OneLine();
+  EXPECT_NE(e.message.find("its nodes: 1, 2, 3"), std::string::npos) << e.OneLine();
+  // A direction the node does not hold (LabFile writes three values a node).
+  std::string beyond = kLabMap;
+  beyond.replace(beyond.find(R"("direction": 2, "dof": "theta_a")"), 14, R"("direction": 5)");
+  EXPECT_FALSE(UffToDataset(file, Map(beyond), &p, &in, &e));
+  EXPECT_NE(e.message.find("node 3 direction 5"), std::string::npos) << e.OneLine();
+  // The command: exit 2, one line naming the node and the file, no dataset.
+  const std::string uff = Scratch("lab_node.uff"), map_path = Scratch("lab_node_map.json");
+  const std::string out = Scratch("lab_node_dataset.json");
+  std::ofstream(uff) << LabFile(s, &truth);
+  std::ofstream(map_path) << json;
+  std::remove(out.c_str());
+  const RunResult r = Ringid("import --uff=" + uff + " --map=" + map_path + " --parameters=" +
+                             testing::SourcePath("datasets/examples/car_tire.json") +
+                             " --output=" + out);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(uff), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("node 9 direction 2"), std::string::npos) << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+}
+
+// Without --map the command lists the nodes of the modes and the directions
+// each holds, what a map's channels name: LabFile writes nodes 1, 2 and 3,
+// three values each, in all seven modes.
+TEST(UffImportTest, TheListingGivesTheNodesAndDirectionsAMapNames) {
+  std::vector<ModeLabel> truth;
+  const std::string uff = Scratch("lab_list.uff");
+  std::ofstream(uff) << LabFile(RigidRingModel().Solve(ExampleCarTire()), &truth);
+  const RunResult r = Ringid("import --uff=" + uff);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("nodes 1-3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("directions 1-3, in every mode"), std::string::npos) << r.out;
+}
+
+// A map that swaps the belt's x and z channels: the shapes match no model
+// mode well, and the labels that rest on them are said to (exit 0, with a
+// warning); the right map of the same file says nothing of the kind.
+TEST(UffImportTest, LabelsThatRestOnAPoorMatchAreAWarning) {
+  const Parameters p = ExampleCarTire();
+  ModalSolution s;
+  std::vector<ModeLabel> truth;
+  const UffFile file = ReadLabFile(p, &s, &truth);
+  std::string swapped = kLabMap;
+  swapped.replace(swapped.find(R"("direction": 1, "dof": "x_b")"), 28, R"("direction": 1, "dof": "z_b")");
+  swapped.replace(swapped.find(R"("direction": 3, "dof": "z_b")"), 28, R"("direction": 3, "dof": "x_b")");
+  IdentifyOptions o;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  UffImport good, poor;
+  LoadError e;
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(kLabMap), p, o, &good, &e)) << e.OneLine();
+  EXPECT_TRUE(good.warnings.empty()) << good.warnings.front();
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(swapped), p, o, &poor, &e)) << e.OneLine();
+  ASSERT_EQ(poor.warnings.size(), 1u);
+  EXPECT_NE(poor.warnings[0].find("poor match"), std::string::npos) << poor.warnings[0];
+  // The thresholds: a MAC under 0.8 named with its mode, or p under 1e-3.
+  bool low_mac = false;
+  for (const UffModelLabel& l : poor.by_model) low_mac |= l.mac && *l.mac < 0.8;
+  EXPECT_EQ(low_mac, poor.warnings[0].find("MAC") != std::string::npos) << poor.warnings[0];
+  for (const UffModelLabel& l : good.by_model) EXPECT_GT(*l.mac, 1 - 1e-6);
+  // The command prints it and still writes the dataset.
+  const std::string uff = Scratch("lab_poor.uff"), map = Scratch("lab_poor_map.json");
+  const std::string out = Scratch("lab_poor_dataset.json");
+  std::ofstream(uff) << LabFile(s, &truth);
+  std::ofstream(map) << swapped;
+  std::remove(out.c_str());
+  const RunResult r = Ringid("import --uff=" + uff + " --map=" + map + " --parameters=" +
+                             testing::SourcePath("datasets/examples/car_tire.json") +
+                             " --output=" + out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("warning: the labels rest on a poor match"), std::string::npos) << r.out;
+  EXPECT_TRUE(testing::Exists(out));
+}
+
 }  // namespace
 }  // namespace ringid
