@@ -82,7 +82,7 @@ bool RegisterOptionFlags() {
 }
 const bool kOptionFlags = RegisterOptionFlags();
 
-std::vector<std::string> NamesOf(const std::vector<OptionInfo>& options) {
+std::vector<std::string> OptionNames(const std::vector<OptionInfo>& options) {
   std::vector<std::string> names;
   for (const OptionInfo& o : options) names.push_back(o.name);
   return names;
@@ -92,7 +92,7 @@ std::vector<std::string> NamesOf(const std::vector<OptionInfo>& options) {
 
 const std::vector<std::string>& ResultFlags() {
   static const std::vector<std::string> flags = [] {
-    std::vector<std::string> names = NamesOf(OptionsOf<FitSettings>());
+    std::vector<std::string> names = OptionNames(OptionsOf<FitSettings>());
     names.erase(std::find(names.begin(), names.end(), "threads"));
     return names;
   }();
@@ -101,25 +101,25 @@ const std::vector<std::string>& ResultFlags() {
 
 const std::vector<std::string>& FitFlags() {
   static const std::vector<std::string> flags =
-      Joined({"dataset", "output"}, NamesOf(OptionsOf<FitSettings>()));
+      Joined({"dataset", "output"}, OptionNames(OptionsOf<FitSettings>()));
   return flags;
 }
 
 const std::vector<std::string>& PredictFlags() {
   static const std::vector<std::string> flags =
-      Joined(Joined({"parameters", "dataset"}, NamesOf(OptionsOf<PredictSettings>())), {"output"});
+      Joined(Joined({"parameters", "dataset"}, OptionNames(OptionsOf<PredictSettings>())), {"output"});
   return flags;
 }
 
 const std::vector<std::string>& SimulateFlags() {
   static const std::vector<std::string> flags =
-      Joined({"parameters", "output", "truth"}, NamesOf(OptionsOf<SimulateSettings>()));
+      Joined({"parameters", "output", "truth"}, OptionNames(OptionsOf<SimulateSettings>()));
   return flags;
 }
 
 const std::vector<std::string>& ForcesFlags() {
   static const std::vector<std::string> flags =
-      Joined(Joined({"parameters", "dataset"}, NamesOf(OptionsOf<ForcesSettings>())), {"output"});
+      Joined(Joined({"parameters", "dataset"}, OptionNames(OptionsOf<ForcesSettings>())), {"output"});
   return flags;
 }
 
