@@ -121,7 +121,8 @@ bool ReportNames(const std::vector<std::string>& files, const std::string& dir,
   reports->clear();
   for (const std::string& f : files) {
     const std::string stem = fs::path(f).stem().string();
-    const bool summary = stem == "campaign" || stem.rfind("campaign.", 0) == 0;
+    const std::string summaries = kCampaignSummaryStem;
+    const bool summary = stem == summaries || stem.rfind(summaries + ".", 0) == 0;
     if (summary || seen.count(stem)) {
       *error = f + ": its report " + stem + ".json would overwrite " +
                (summary ? "a campaign summary" : "that of " + seen[stem]);
@@ -219,6 +220,18 @@ std::string CampaignKept(const std::vector<std::string>& written,
          (summarised ? " written" : " not written");
 }
 
+// The datasets a campaign cannot use, as one line: every one named, or the
+// first kNamed and how many more.
+std::string BadDatasets(const std::vector<std::string>& bad) {
+  constexpr size_t kNamed = 5;
+  if (bad.size() == 1) return bad[0];
+  std::string line = std::to_string(bad.size()) + " datasets cannot be used (--keep_going runs "
+                     "the others, these as failed rows): ";
+  for (size_t i = 0; i < bad.size() && i < kNamed; ++i) line += (i ? "; " : "") + bad[i];
+  if (bad.size() > kNamed) line += "; and " + std::to_string(bad.size() - kNamed) + " more";
+  return line;
+}
+
 }  // namespace
 
 int RunCampaign(const CampaignRequest& request, const ModalModel& model,
@@ -248,14 +261,13 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
   }
   const std::string shard_name = std::to_string(shard.index) + "/" + std::to_string(shard.count);
   const std::string summary_path =
-      (std::filesystem::path(request.output_dir) /
-       (shard.count == 1 ? std::string("campaign.json")
-                         : "campaign." + std::to_string(shard.index) + "-of-" +
-                               std::to_string(shard.count) + ".json")).string();
+      (std::filesystem::path(request.output_dir) / CampaignSummaryName(shard.index, shard.count))
+          .string();
   const int n = static_cast<int>(files.size());
   std::vector<Dataset> datasets(n);
   std::vector<CampaignItem> items(n);
   std::vector<bool> done(n, false);  // failed to load (--keep_going) or kept
+  std::vector<std::string> bad;      // why each dataset that cannot be used
   for (int i = 0; i < n; ++i) {
     LoadError load;
     std::string why;
@@ -271,10 +283,11 @@ int RunCampaign(const CampaignRequest& request, const ModalModel& model,
       items[i].row.field = "";
     }
     if (why.empty()) continue;
-    if (!request.keep_going) return usage(why);
+    bad.push_back(why);
     items[i].row.status = Status::InvalidInput(why);
     done[i] = true;
   }
+  if (!bad.empty() && !request.keep_going) return usage(BadDatasets(bad));
   std::error_code ec;
   std::filesystem::create_directories(request.output_dir, ec);
   if (ec) return usage("--output_dir: " + request.output_dir + ": " + ec.message());

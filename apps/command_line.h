@@ -6,6 +6,7 @@
 #define RINGID_APPS_COMMAND_LINE_H_
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct Command {
   std::string summary;  // what it does, in lines of at most 72 characters
   std::vector<std::string> flags;  // every flag it takes, in help order
   std::function<int(int argc, char** argv)> run;
+  // Whether its --parameters reads an MF-Swift .tir (docs/tir.md): always
+  // (""), only with the flag named, or not (nullopt). The help lists these.
+  std::optional<std::string> reads_tir = std::nullopt;
 };
 
 // Sets the flags of argv[2..] through gflags, each as --NAME=VALUE or

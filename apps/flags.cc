@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "apps/help.h"
@@ -20,7 +21,7 @@
 // The options of the operations are not here: they are registered from
 // their lists (operations/options.h, RegisterOptionFlags below).
 DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3); a campaign takes FILE,DIR,... (a directory stands for its *.json)");
-DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report); predict and export also read the rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), the rest given by --set");
+DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report)");
 DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(truth, "", "write the truth (effects and every value) here");
@@ -200,7 +201,24 @@ bool ReadDiagnoseOptions(DiagnoseSettings* s, DiagnoseOptions* o, std::string* e
          NeedsDataset(error);
 }
 
-bool ReadFitDataset(const FitSettings& s, Dataset* d, std::string* error) {
+// --dataset names one file, not a directory or a list (a campaign's).
+bool OneDatasetFile(bool campaigns, std::string* error) {
+  std::error_code ec;
+  const bool directory = std::filesystem::is_directory(FLAGS_dataset, ec);
+  const bool list = FLAGS_dataset.find(',') != std::string::npos &&
+                    !std::filesystem::exists(FLAGS_dataset, ec);
+  if (!directory && !list) return true;
+  *error = "--dataset: " + FLAGS_dataset + " is " +
+           (directory ? "a directory" : "a list") + " of datasets, " +
+           (campaigns ? "a campaign: give --output_dir=DIR for its reports (one per dataset and "
+                        "DIR/campaign.json)"
+                      : "and this command reads one dataset file (campaigns: identify and "
+                        "diagnose with --output_dir)");
+  return false;
+}
+
+bool ReadFitDataset(const FitSettings& s, Dataset* d, std::string* error, bool campaigns) {
+  if (!OneDatasetFile(campaigns, error)) return false;
   if (!CheckOutputs({{"output", FLAGS_output}, {"save_parameters", FLAGS_save_parameters}},
                     Inputs(), error)) {
     return false;

@@ -102,7 +102,10 @@ bool ParseSet(ParameterValues* set, std::string* error);
 bool ReadFitOptions(FitSettings* s, IdentifyOptions* o, std::string* error);
 bool ReadDiagnoseOptions(DiagnoseSettings* s, DiagnoseOptions* o, std::string* error);
 // The one dataset of --dataset, s.fix applied (the outputs checked first).
-bool ReadFitDataset(const FitSettings& s, Dataset* d, std::string* error);
+// A directory or a list in --dataset is refused as a campaign's, which
+// `campaigns` (identify and diagnose) run with --output_dir.
+bool ReadFitDataset(const FitSettings& s, Dataset* d, std::string* error,
+                    bool campaigns = false);
 
 // The flags that decide a fitting command's results (the options of
 // FitSettings less --threads).

@@ -18,6 +18,11 @@ int SimulateResponsesCommand(const SimulateSettings& s) {
   if (!FLAGS_truth.empty()) {
     return Usage("--truth: the file of --lug_forces is the truth of a response simulation");
   }
+  // Its default, 0 (standing), has no lug order: the drum speeds are asked for.
+  if (gflags::GetCommandLineFlagInfoOrDie("speeds").is_default) {
+    return Usage("simulate --lug_forces needs --speeds=V1,V2,... (drum speeds in m/s, each > 0: "
+                 "a lug order exists only rolling)");
+  }
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
   LugForceSpectrum spectrum;
   ResponseDataset data;
@@ -41,12 +46,16 @@ int ForcesCommand(int argc, char** argv) {
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
   ForceParameters fp;
   InputError bad;
-  if (!ReadForceParameters(FLAGS_parameters, s.set, &fp, &bad)) return Usage(bad.line);
+  std::vector<std::string> notes;  // where a .tir's values came from
+  if (!ReadForceParameters(FLAGS_parameters, s.set, &fp, &bad, &notes)) return Usage(bad.line);
   ResponseDataset data;
   LoadError load;
   if (!LoadResponseDataset(FLAGS_dataset, &data, &load)) return Usage(load.OneLine());
   ForcesResult r;
-  if (!ForcesOf(fp, data, s, FLAGS_parameters, FLAGS_dataset, &r, &bad)) return Usage(bad.line);
+  if (!ForcesOf(fp, data, s, FLAGS_parameters, FLAGS_dataset, &r, &bad, notes)) {
+    return Usage(bad.line);
+  }
+  for (const std::string& note : notes) std::printf("%s%s\n", kParameterNotePrefix, note.c_str());
   return Finish<ForcesReport>(argc, argv, data, r);
 }
 

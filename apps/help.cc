@@ -98,6 +98,19 @@ std::vector<std::string> FlagValues(const std::string& flag) {
   return {};
 }
 
+std::string TirReaders(const std::vector<Command>& all) {
+  std::vector<std::string> names;
+  for (const Command& c : all) {
+    if (c.reads_tir) names.push_back(c.name + (c.reads_tir->empty() ? "" : " --" + *c.reads_tir));
+  }
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i) {
+    list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  }
+  return "--parameters of " + list + " also reads the rigid-ring part of an MF-Swift FILE.tir "
+         "(docs/tir.md), what a .tir cannot hold given by --set";
+}
+
 std::string Help(const std::vector<Command>& commands) {
   std::string help =
       "ringid: identify rigid-ring (SWIFT) tire parameters from modal test data\n"
@@ -110,11 +123,12 @@ std::string Help(const std::vector<Command>& commands) {
     help += "  " + Usage(c) + "\n" + Indented(c.summary, "      ");
   }
   help += "\n" + std::string(kFlagSyntax) + "\n" +
-          Wrapped("effects: " + OneOf(FlagValues("effects")), "") + "\n" + kExitStatus;
+          Wrapped("effects: " + OneOf(FlagValues("effects")), "") + "\n" +
+          Wrapped("a .tir: " + TirReaders(commands) + ".", "") + "\n" + kExitStatus;
   return help;
 }
 
-std::string CommandHelp(const Command& c) {
+std::string CommandHelp(const Command& c, const std::vector<Command>& all) {
   std::string help = "usage: " + Usage(c) + "\n\n" + c.summary + "\n";
   if (c.summary.empty() || c.summary.back() != '\n') help += "\n";
   if (c.flags.empty()) return help + "It takes no flags.\n";
@@ -124,6 +138,7 @@ std::string CommandHelp(const Command& c) {
     const std::vector<std::string> values = FlagValues(name);
     std::string meaning = info.description;
     if (name == "effects") meaning += "; LIST is any of " + OneOf(values);
+    if (name == "parameters") meaning += "; " + TirReaders(all);
     help += "  " + FlagLine(info, values) + "\n" + Wrapped(meaning, "      ");
   }
   return help + "\n" + kFlagSyntax;

@@ -14,10 +14,14 @@ namespace ringid {
 // Every command with what it needs and does.
 std::string Help(const std::vector<Command>& commands);
 
-// One command: its usage, what it does, and each of its flags with its type,
-// default and meaning (the flag's DEFINE) and, where the library names them,
-// the values it takes.
-std::string CommandHelp(const Command& command);
+// One command of `all`: its usage, what it does, and each of its flags with
+// its type, default and meaning (the flag's DEFINE) and, where the library
+// names them, the values it takes.
+std::string CommandHelp(const Command& command, const std::vector<Command>& all);
+
+// The commands of `all` whose --parameters reads a .tir (Command::reads_tir),
+// as a sentence.
+std::string TirReaders(const std::vector<Command>& all);
 
 // The values a flag takes where the library names them (--method: lm,
 // simplex; --effects: the catalogue); empty for a free value.

@@ -1,8 +1,11 @@
 #include "apps/import_command.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "apps/flags.h"
 #include "apps/reports.h"
@@ -12,6 +15,46 @@
 
 namespace ringid {
 namespace {
+
+// The nodes of the modes (dataset 55) and the directions each holds, as a
+// map's channels name them: runs of consecutive nodes alike on one line.
+void ListMappable(const UffFile& f) {
+  int modes = 0;
+  std::map<int, std::pair<size_t, int>> held;  // node -> (values, modes holding it)
+  for (const UffModalData& m : f.modal_data) {
+    if (!m.IsNormalMode() && !m.IsComplexMode()) continue;
+    ++modes;
+    for (const UffNodeValues& n : m.nodes) {
+      auto& [values, in] = held[n.label];
+      values = std::max(values, n.values.size());
+      ++in;
+    }
+  }
+  if (held.empty()) return;
+  std::printf("nodes of the modes, as a map's channels name them (direction 1-3: x, y, z; "
+              "4-6: rotations about them):\n");
+  const auto line = [&](int first, int last, std::pair<size_t, int> h) {
+    const std::string nodes = first == last ? "node " + std::to_string(first)
+                                            : "nodes " + std::to_string(first) + "-" +
+                                                  std::to_string(last);
+    std::printf("  %-17s directions 1-%zu, in %s\n", nodes.c_str(), h.first,
+                h.second == modes ? "every mode"
+                                  : (std::to_string(h.second) + " of " + std::to_string(modes) +
+                                     " modes").c_str());
+  };
+  auto run = held.begin();
+  int last = run->first;
+  for (auto it = std::next(held.begin()); it != held.end(); ++it) {
+    if (it->first == last + 1 && it->second == run->second) {
+      last = it->first;
+      continue;
+    }
+    line(run->first, last, run->second);
+    run = it;
+    last = it->first;
+  }
+  line(run->first, last, run->second);
+}
 
 // What the file holds: its datasets, modes, functions, units and nodes.
 void List(const UffFile& f) {
@@ -25,6 +68,7 @@ void List(const UffFile& f) {
                 u.description.c_str(), u.length_factor, u.force_factor);
   }
   for (const UffNodes& n : f.nodes) std::printf("nodes (15): %zu\n", n.nodes.size());
+  ListMappable(f);
   if (!f.modal_data.empty()) std::printf("modes (55):\n  %6s %12s %10s %6s %s\n", "mode", "Hz", "zeta", "nodes", "analysis");
   for (const UffModalData& m : f.modal_data) {
     const std::optional<double> hz = m.FrequencyHz(), zeta = m.DampingRatio();
@@ -73,7 +117,7 @@ int ImportCommand(int argc, char** argv) {
   if (!FLAGS_parameters.empty() && !LoadParameters(FLAGS_parameters, set, &p, &load, &notes)) {
     return Usage(load.OneLine());
   }
-  for (const std::string& note : notes) std::printf("parameters: %s\n", note.c_str());
+  for (const std::string& note : notes) std::printf("%s%s\n", kParameterNotePrefix, note.c_str());
   UffImport in;
   IdentifyOptions fit;  // to label by the fitted model (estimation/label_by_fit.h)
   fit.residuals.derivatives = Derivatives::kAnalytic;
@@ -86,6 +130,7 @@ int ImportCommand(int argc, char** argv) {
   Dataset back;
   if (!ParseDataset(text, FLAGS_output, &back, &load)) return Usage(load.OneLine());
   for (const std::string& note : in.notes) std::printf("%s\n", note.c_str());
+  for (const std::string& w : in.warnings) std::printf("warning: %s\n", w.c_str());
   const int rc = Write(FLAGS_output, text);
   if (rc == kExitOk) {
     std::printf("wrote %s (%zu modes from %s)\n", FLAGS_output.c_str(), in.dataset.modes.size(),

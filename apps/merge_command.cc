@@ -26,7 +26,7 @@ int MergeCommand(int argc, char** argv) {
   const std::string text = ReportText(merged);
   std::string html;
   std::vector<HtmlFigure> figures;
-  std::vector<std::pair<std::string, std::string>> files = {{(dir / "campaign.json").string(), text}};
+  std::vector<std::pair<std::string, std::string>> files = {{(dir / CampaignSummaryName(0, 1)).string(), text}};
   // The summary is written whatever the page: a login node may lack gnuplot.
   if (RenderHtmlReport(Json::parse(text), files[0].first, &html, &error, &figures)) {
     files.emplace_back((dir / "campaign.html").string(), html);

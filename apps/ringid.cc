@@ -67,7 +67,7 @@ int IdentifyCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitOptions(&settings, &o, &error) || !ReadFitDataset(settings, &d, &error)) {
+  if (!ReadFitOptions(&settings, &o, &error) || !ReadFitDataset(settings, &d, &error, true)) {
     return Usage(error);
   }
   const RigidRingModel model(settings.effects);
@@ -98,7 +98,11 @@ int IdentifiabilityCommand(int argc, char** argv) {
   }
   const RigidRingModel model(settings.effects);
   IdentifiabilityResult r;
-  AnalyzeIdentifiability(model, d, o, &r);
+  {
+    Progress progress("identifiability", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    AnalyzeIdentifiability(model, d, o, &r);
+  }
   return Finish<IdentifiabilityReport>(argc, argv, d, r);
 }
 
@@ -172,10 +176,14 @@ int DiagnoseCommand(int argc, char** argv) {
         });
   }
   Dataset d;
-  if (!ReadFitDataset(settings.fit, &d, &error)) return Usage(error);
+  if (!ReadFitDataset(settings.fit, &d, &error, true)) return Usage(error);
   const RigidRingModel baseline(settings.fit.effects);
   DiagnosisResult r;
-  Diagnose(baseline, d, o, &r);
+  {
+    Progress progress("diagnose", 0, kProgressAfterSeconds);
+    o.on_step = [&](int done, int total) { progress.Set(done, total); };
+    Diagnose(baseline, d, o, &r);
+  }
   return Finish<DiagnoseReport>(argc, argv, d, r);
 }
 
@@ -275,7 +283,12 @@ int ExportCommand(int, char**) {
   if (!LoadParameters(FLAGS_parameters, set, &p, &load, &notes, &undetermined)) {
     return Usage(load.OneLine());
   }
-  for (const std::string& note : notes) std::fprintf(stderr, "ringid: %s\n", note.c_str());
+  // Notes, not errors: beside "wrote", or on standard error when standard
+  // output is the file.
+  for (const std::string& note : notes) {
+    std::fprintf(FLAGS_output.empty() ? stderr : stdout, "%s%s\n", kParameterNotePrefix,
+                 note.c_str());
+  }
   const std::string set_text = FlagText("set");
   const std::string source =
       FLAGS_parameters + (set_text.empty() ? "" : " with --set=" + set_text);
@@ -321,7 +334,7 @@ const std::vector<Command>& Commands() {
       {"predict", "--parameters=FILE | --dataset=FILE",
        "modes of a parameter set, as a table and JSON; a FILE.tir is read as\n"
        "MF-Swift's rigid-ring part (docs/tir.md), the rest given by --set",
-       PredictFlags(), Predict},
+       PredictFlags(), Predict, ""},
       {"identify", "--dataset=FILE",
        "fit parameters to a dataset, with covariance and identifiability;\n"
        "with --output_dir, a campaign over many datasets (--dataset=FILE,DIR,...):\n"
@@ -342,7 +355,7 @@ const std::vector<Command>& Commands() {
        "sized by --set or --shift), and a separate truth file; one condition per\n"
        "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
-       SimulateFlags(), SimulateCommand},
+       SimulateFlags(), SimulateCommand, "lug_forces"},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
@@ -362,11 +375,11 @@ const std::vector<Command>& Commands() {
        "a parameter set (ringid-parameters/1 or a .tir), with --set over it, as\n"
        "the rigid-ring part of an MF-Swift .tir or as ringid-parameters/1 JSON;\n"
        "what maps to what and what a .tir cannot hold: docs/tir.md",
-       {"parameters", "set", "format", "output"}, ExportCommand},
+       {"parameters", "set", "format", "output"}, ExportCommand, ""},
       {"import", "--uff=FILE [--map=FILE --output=DATASET]",
        "a test lab's UFF modes (dataset 55) as a dataset, by a map of nodes to\n"
        "degrees of freedom; without --map, what the file holds (docs/uff.md)",
-       {"uff", "map", "parameters", "set", "output"}, ImportCommand},
+       {"uff", "map", "parameters", "set", "output"}, ImportCommand, ""},
       {"merge", "--output_dir=DIR",
        "the shard summaries DIR/campaign.I-of-N.json of one campaign as\n"
        "DIR/campaign.json and its page DIR/campaign.html",
@@ -374,8 +387,9 @@ const std::vector<Command>& Commands() {
       {"forces", "--parameters=FILE --dataset=FILE",
        "the lug forces at the contact from the axle's response at the lug orders\n"
        "(a response dataset, ringid-lug-response/1); FILE of --parameters an identify\n"
-       "report (its covariance gives std_total) or a parameter set: docs/forces.md",
-       ForcesFlags(), ForcesCommand},
+       "report (its covariance gives std_total), a parameter set or a .tir (the rest\n"
+       "by --set): docs/forces.md",
+       ForcesFlags(), ForcesCommand, ""},
       {"schema", "", "every report's fields and their types, as Markdown (docs/reports.md)", {},
        SchemaCommand},
       {"inputs", "", "every input file's fields and their types, as Markdown (docs/inputs.md)", {},
@@ -403,7 +417,7 @@ int HelpCommand(int argc, char** argv) {
   if (argc > 3) return Usage("help takes at most one command (see 'ringid help')");
   const Command* c = FindCommand(Commands(), argv[2]);
   if (!c) return Usage(UnknownCommand(argv[2]));
-  std::fputs(CommandHelp(*c).c_str(), stdout);
+  std::fputs(CommandHelp(*c, Commands()).c_str(), stdout);
   return kExitOk;
 }
 
@@ -414,7 +428,7 @@ int Run(int argc, char** argv) {
   const Command* command = FindCommand(Commands(), name);
   if (!command) return Usage(UnknownCommand(name));
   if (WantsHelp(argc, argv)) {
-    std::fputs(CommandHelp(*command).c_str(), stdout);
+    std::fputs(CommandHelp(*command, Commands()).c_str(), stdout);
     return kExitOk;
   }
   std::string error;

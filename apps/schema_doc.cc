@@ -59,7 +59,7 @@ std::string InputsMarkdown() {
          "priors (conventions.md §7).\n\n" + InputSchema(format2) + "\n" +
          "## Parameter set (`" + kParameterSetFormat + "`)\n\nRead by `--parameters`, written by "
          "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
-         "value, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +
+         "value, a file without `format`, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +
          "## Truth file (`" + kTruthFormat + "`)\n\nWritten by `simulate --truth`, read by "
          "`LoadTruth` (datasets/parameter_files.h).\n\n" + InputSchema(Truth{}) + "\n" +
          "## Response dataset (`" + kResponseFormat + "`)\n\nRead by `forces --dataset` "
@@ -69,7 +69,8 @@ std::string InputsMarkdown() {
          InputSchema(ResponseDatasetFields{}) + "\n" +
          "## Lug forces (`" + kLugForcesFormat + "`)\n\nRead by `simulate --lug_forces`: the lug "
          "forces whose axle response it writes, per order the complex amplitude of `F_x`,\n"
-         "`F_z` and `F_y` (N; a force left out is 0).\n\n" + InputSchema(LugForcesFields{}) + "\n" +
+         "`F_z` and `F_y` (N; a force left out is 0). An example: "
+         "`datasets/examples/car_tire_lug_forces.json`.\n\n" + InputSchema(LugForcesFields{}) + "\n" +
          "## UFF map (`" + kUffMapFormat + "`)\n\nRead by `import --map` ([uff.md](uff.md)): "
          "each channel a UFF node's direction (1..3 x, y, z; 4..6\nrotations; negative: the "
          "opposite sense) as a degree of freedom, with a sign; the\nlabels of modes the user "

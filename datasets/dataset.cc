@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset_file.h"
+#include "datasets/file_kind.h"
 #include "model/spelling.h"
 
 namespace ringid {
@@ -43,12 +44,6 @@ double Finite(double v, const std::string& field) {
 double Positive(double v, const std::string& field) {
   if (!(Finite(v, field) > 0)) Fail(field, "must be positive");
   return v;
-}
-
-// For the parameter-set reader, which reads JSON as it comes.
-double Number(const json& j, const std::string& field) {
-  if (!j.is_number()) Fail(field, "must be a number");
-  return Finite(j.get<double>(), field);
 }
 
 std::string String(const json& j, const std::string& field) {
@@ -109,7 +104,8 @@ MeasuredMode Mode(const ModeFields& j, const std::string& field) {
   }
   if (j.damping_ratio) {
     const double z = Finite(*j.damping_ratio, field + ".damping_ratio");
-    if (!(z > 0 && z < 1)) Fail(field + ".damping_ratio", "must lie in (0, 1)");
+    const std::string problem = DampingRatioProblem(z);
+    if (!problem.empty()) Fail(field + ".damping_ratio", problem);
     m.damping_ratio = z;
   }
   if (j.damping_sigma) {
@@ -331,17 +327,9 @@ void Check(const DatasetFields& j, Dataset* d) {
 // out its format (LoadParameterSet).
 void CheckKind(const json& j) {
   if (!j.is_object()) Fail("", "top level must be a JSON object");
-  const bool unmarked_set = !j.contains("format") && j.contains("parameters") &&
-                            !j.contains("modes") && !j.contains("conditions") &&
-                            !j.contains("report");
-  if ((j.contains("format") && j["format"] == kParameterSetFormat) || unmarked_set) {
-    Fail(unmarked_set ? "parameters" : "format",
-         std::string("this is a parameter set (") + kParameterSetFormat +
-             "), not a dataset; use --parameters");
-  }
-  if (!j.contains("format") && j.contains("report") && j["report"].is_string()) {
-    Fail("report", "this is a ringid " + j["report"].get<std::string>() +
-                       " report, not a dataset");
+  const SniffedFile kind = SniffJson(j);
+  if (kind.kind != FileKind::kUnknown && kind.kind != FileKind::kModalDataset) {
+    Fail(kind.field, NotTheKind(kind, "a dataset"));
   }
   if (!j.contains("format")) Fail("format", "missing");
   const std::string format = String(j["format"], "format");
@@ -385,6 +373,13 @@ std::string ModeFrequencyProblem(double hz) {
   std::ostringstream o;
   o << hz << " Hz is outside " << kMinModeFrequencyHz << "-" << kMaxModeFrequencyHz
     << " Hz, where every rigid-ring mode lies (a typo, or not a rigid-ring mode?)";
+  return o.str();
+}
+
+std::string DampingRatioProblem(double zeta) {
+  if (zeta > kMinDampingRatio && zeta < kMaxDampingRatio) return "";
+  std::ostringstream o;
+  o << "must lie in (" << kMinDampingRatio << ", " << kMaxDampingRatio << ")";
   return o.str();
 }
 
@@ -491,48 +486,6 @@ bool ParseChecked(const std::string& text, LoadError* error,
   return true;
 }
 
-// A parameter set, or an identify report read back as one: only the
-// "parameters" object is read, each entry a number or {"value": number}.
-void CheckParameterSet(const json& j, Parameters* p, Undetermined* undetermined) {
-  if (!j.is_object()) Fail("", "top level must be a JSON object");
-  if (j.contains("format") && (j["format"] == kDatasetFormat1 || j["format"] == kDatasetFormat2)) {
-    Fail("format", "this is a modal dataset (" + j["format"].get<std::string>() +
-                       "), not a parameter set");
-  }
-  if (j.contains("format") && j["format"] != kParameterSetFormat) {
-    Fail("format", std::string("must be \"") + kParameterSetFormat + "\"");
-  }
-  if (!j.contains("parameters") || !j["parameters"].is_object()) {
-    Fail("parameters", "missing or not an object");
-  }
-  const json& ps = j["parameters"];
-  for (auto it = ps.begin(); it != ps.end(); ++it) {
-    const std::string field = "parameters." + it.key();
-    const Param param = ParamCalled(it.key(), field);
-    const json& v = it.value().is_object() && it.value().contains("value")
-                        ? it.value()["value"]
-                        : it.value();
-    const std::string f = field + (it.value().is_object() ? ".value" : "");
-    (*p)[param] = Number(v, f);
-    const std::string problem = ParameterValueProblem(param, (*p)[param]);
-    if (!problem.empty()) Fail(f, problem);
-    if (!it.value().is_object()) continue;
-    // What identify said of it (its report, or --save_parameters).
-    std::string why;
-    if (it.value().contains("identifiable")) {
-      const std::string c = String(it.value()["identifiable"], field + ".identifiable");
-      if (c != "yes" && c != "practically_no" && c != "no") {
-        Fail(field + ".identifiable", "must be yes, practically_no or no");
-      }
-      if (c != "yes") why = "classed " + c + " by ringid identify";
-    }
-    if (it.value().contains("condition") && !it.value()["condition"].is_null()) {
-      why += (why.empty() ? "" : "; ") + String(it.value()["condition"], field + ".condition");
-    }
-    if (undetermined && !why.empty()) (*undetermined)[param] = why;
-  }
-}
-
 }  // namespace
 
 bool ParseJsonInput(const std::string& text, Json* out, LoadError* error) {
@@ -553,20 +506,14 @@ bool ParseDataset(const std::string& text, const std::string& path,
   return ParseChecked(text, error, [&](const json& j) { Read(j, dataset); });
 }
 
-bool LoadParameterSet(const std::string& path, Parameters* p,
-                      LoadError* error, Undetermined* undetermined) {
-  std::string text;
-  if (!ReadInputFile(path, &text, error)) return false;
-  *p = Parameters{};
-  if (undetermined) undetermined->clear();
-  return ParseChecked(text, error,
-                      [&](const json& j) { CheckParameterSet(j, p, undetermined); });
-}
-
 bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
                    long max_bytes) {
   error->file = path;
   error->field = "";
+  if (SniffPath(path).kind == FileKind::kDirectory) {
+    error->message = "a directory, not a file";
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     error->message = "cannot open file";
@@ -588,8 +535,13 @@ bool ReadInputFile(const std::string& path, std::string* text, LoadError* error,
 
 bool LoadDataset(const std::string& path, Dataset* dataset, LoadError* error) {
   std::string text;
-  return ReadInputFile(path, &text, error) &&
-         ParseDataset(text, path, dataset, error);
+  if (!ReadInputFile(path, &text, error)) return false;
+  // Not JSON at all: a .tir or a UFF file, named as such (the JSON kinds: CheckKind).
+  if (const SniffedFile kind = SniffFile(path, text); kind.kind != FileKind::kUnknown) {
+    error->message = NotTheKind(kind, "a dataset");
+    return false;
+  }
+  return ParseDataset(text, path, dataset, error);
 }
 
 bool Dataset::IsPerCondition(Param p) const {

@@ -87,12 +87,21 @@ inline constexpr double kMaxModeFrequencyHz = 1000;
 // No parameter of the catalogue, in SI units, comes near this magnitude
 // (stiffnesses are 1e4-1e7, docs/reference.md); beyond it a value is absurd.
 inline constexpr double kMaxParameterMagnitude = 1e12;
+// A measured damping ratio is an underdamped mode's, inside the open interval
+// (kMinDampingRatio, kMaxDampingRatio) = (0, 1): the JSON loader, the UFF
+// import and the synthetic generator all hold to it (a plausibility rule's
+// bound on a sidewall damper is another fact, model/plausibility.cc).
+inline constexpr double kMinDampingRatio = 0;
+inline constexpr double kMaxDampingRatio = 1;
 
 // Why `v` cannot be a value of `p` (its sign domain, kMaxParameterMagnitude),
 // as "must be positive"; empty when it can.
 std::string ParameterValueProblem(Param p, double v);
 // Why `hz` cannot be a rigid-ring mode's frequency; empty when it can.
 std::string ModeFrequencyProblem(double hz);
+// Why `zeta` cannot be a measured damping ratio ("must lie in (0, 1)"); empty
+// when it can.
+std::string DampingRatioProblem(double zeta);
 // A condition name (docs/conventions.md §7): letters, digits, '_', '-', '.'.
 bool ValidConditionName(const std::string& name);
 
@@ -135,12 +144,12 @@ bool ParseDataset(const std::string& text, const std::string& path,
 // K_cx/sigma_cx"), as an identify report or --save_parameters says.
 using Undetermined = std::map<Param, std::string>;
 
-// Reads a parameter set: {"format": "ringid-parameters/1", "parameters":
-// {NAME: {"value": V, "std": S, "identifiable": C, "condition": T}}}, the
-// last three optional. An identify report has the same "parameters" object
-// and reads back as one. With `undetermined`, the values whose class (C
-// "no" or "practically_no") or condition (T a string) says the data left
-// them undetermined.
+// Reads a parameter set (ringid-parameters/1, docs/conventions.md §3): each
+// value through ParameterValue's field list (datasets/parameter_files.h), or
+// a bare number. An identify report has the same "parameters" object and
+// reads back as one. With `undetermined`, the values whose class
+// ("no" or "practically_no") or condition says the data left them
+// undetermined.
 bool LoadParameterSet(const std::string& path, Parameters* p, LoadError* error,
                       Undetermined* undetermined = nullptr);
 

@@ -72,10 +72,6 @@ const Measurement& MeasurementOf(Quantity q);
 // The standard deviation a measured frequency is weighted by (Hz).
 double FrequencySigma(const MeasuredMode& m, const MeasurementOptions& o);
 
-// The damping ratios a measurement may hold (the loader's open interval).
-inline constexpr double kMinDampingRatio = 1e-6;
-inline constexpr double kMaxDampingRatio = 1 - 1e-6;
-
 // The model's real shape under a convention, as measured shapes are made
 // (docs/conventions.md §2: the largest component's phase removed).
 RealShapeVector ComparableShape(const Mode& mode, ShapeConvention convention);

@@ -46,7 +46,12 @@ class Damping : public Measurement {
   static double Sigma(const MeasuredMode& m, const MeasurementOptions& o) {
     return m.damping_sigma.value_or(o.default_damping_sigma);
   }
-  static double Clamped(double z) { return std::clamp(z, kMinDampingRatio, kMaxDampingRatio); }
+  // A model's ratio held this far inside the loader's open interval
+  // (DampingRatioProblem), so that the dataset written reads back.
+  static constexpr double kInside = 1e-6;
+  static double Clamped(double z) {
+    return std::clamp(z, kMinDampingRatio + kInside, kMaxDampingRatio - kInside);
+  }
 };
 
 }  // namespace

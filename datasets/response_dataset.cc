@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <set>
 
+#include "datasets/file_kind.h"
+#include "model/campbell.h"
 #include "model/forced_response.h"
 #include "model/spelling.h"
 
@@ -98,6 +100,7 @@ bool CheckLugForces(const LugForcesFields& j, LugForceSpectrum* s, LoadError* er
   Checker c(error);
   s->name = j.name;
   if (s->name.empty()) return c.Fail("name", "must not be empty");
+  s->description = j.description.value_or("");
   s->lugs_per_revolution = j.lugs_per_revolution;
   if (j.lugs_per_revolution <= 0) return c.Fail("lugs_per_revolution", "must be positive");
   if (j.orders.empty()) return c.Fail("orders", "must be a non-empty array");
@@ -134,8 +137,11 @@ bool ReadTyped(const std::string& text, const std::string& path, const char* for
   Json j;
   if (!ParseJsonInput(text, &j, error)) return false;
   if (j.is_object() && j.contains("format") && j["format"] != format) {
+    const SniffedFile found = SniffJson(j);
     error->field = "format";
-    error->message = std::string("must be \"") + format + "\"";
+    error->message = found.kind == FileKind::kUnknown
+                         ? std::string("must be \"") + format + "\""
+                         : NotTheKind(found, KindName({FormatKind(format), format, ""}));
     return false;
   }
   Fields fields;
@@ -197,7 +203,7 @@ bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lug
         continue;  // no force at this order: nothing measured there
       }
       AxleResponseMatrix H;
-      if (!AxleResponse(model, p, v, k * lugs * v / (2 * M_PI * p[Param::r_e0]), &H, why)) {
+      if (!AxleResponse(model, p, v, LugOrderHz(k, lugs, p[Param::r_e0], v), &H, why)) {
         return false;
       }
       OrderResponse o{k, {}};
@@ -223,6 +229,20 @@ bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lug
     data->conditions.push_back(c);
   }
   return true;
+}
+
+std::string LugForcesToJson(const LugForceSpectrum& s) {
+  LugForcesFields j;
+  j.name = s.name;
+  if (!s.description.empty()) j.description = s.description;
+  j.lugs_per_revolution = s.lugs_per_revolution;
+  for (const auto& [order, forces] : s.orders) {
+    LugForceOrderFields o;
+    o.order = order;
+    for (int f = 0; f < kNumLugForces; ++f) o.forces[ToString(static_cast<LugForce>(f))] = forces[f];
+    j.orders.push_back(o);
+  }
+  return JsonWriter::ToJson(j).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string ResponseDatasetToJson(const ResponseDataset& d) {

@@ -114,6 +114,7 @@ struct LugForcesFields {
 
 struct LugForceSpectrum {
   std::string name;
+  std::string description;
   int lugs_per_revolution = 0;
   std::map<int, std::array<std::complex<double>, kNumLugForces>> orders;  // by order
 };
@@ -122,6 +123,9 @@ struct LugForceSpectrum {
 bool LoadLugForces(const std::string& path, LugForceSpectrum* spectrum, LoadError* error);
 bool ParseLugForces(const std::string& text, const std::string& path, LugForceSpectrum* spectrum,
                     LoadError* error);
+// The file text of `spectrum`, every force of every order (LoadLugForces
+// reads it back).
+std::string LugForcesToJson(const LugForceSpectrum& spectrum);
 
 // A measured channel at one order.
 struct Phasor {

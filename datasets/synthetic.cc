@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cmath>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -70,21 +71,19 @@ Parameters ExampleCarTire() {
   // rest typical of a car tire at 4 kN: 5 % sidewall damping, slip
   // stiffness about 20 and 15 times the load, relaxation lengths of half a
   // contact length or more.
-  const double w = 2 * M_PI;
   p[P::m_b] = 7.698;
   p[P::I_by] = 0.4889;
   p[P::I_bx] = p[P::I_bz] = 0.3519;
   p[P::I_ay] = 0.35;
   p[P::F_cz0] = 4000;
-  p[P::k_bx] = p[P::k_bz] = p[P::m_b] * std::pow(w * 76.63, 2);
-  p[P::k_by] = p[P::m_b] * std::pow(w * 41.47, 2);
-  p[P::k_bgamma] = p[P::k_bpsi] = p[P::I_bz] * std::pow(w * 53.46, 2);
-  p[P::k_btheta] = p[P::I_by] * std::pow(w * 67.73, 2);
-  auto damper = [](double k, double m) { return 2 * 0.05 * std::sqrt(k * m); };
-  p[P::c_bx] = p[P::c_bz] = damper(p[P::k_bx], p[P::m_b]);
-  p[P::c_by] = damper(p[P::k_by], p[P::m_b]);
-  p[P::c_bgamma] = p[P::c_bpsi] = damper(p[P::k_bgamma], p[P::I_bx]);
-  p[P::c_btheta] = damper(p[P::k_btheta], p[P::I_by]);
+  // One frequency for x and z (FREQ_LONG) and for camber and yaw (FREQ_YAW).
+  const std::map<Param, double> hz = {{P::k_bx, 76.63},    {P::k_bz, 76.63},
+                                      {P::k_btheta, 67.73}, {P::k_by, 41.47},
+                                      {P::k_bgamma, 53.46}, {P::k_bpsi, 53.46}};
+  for (const SidewallElement& e : kSidewallElements) {
+    p[e.stiffness] = SidewallStiffness(e, hz.at(e.stiffness), p);
+    p[e.damper] = SidewallDamper(e, 0.05, p);
+  }
   p[P::K_cx] = 8e4;
   p[P::sigma_cx] = 0.1;
   p[P::K_cy] = 6e4;

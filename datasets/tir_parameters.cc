@@ -4,9 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <set>
 
+#include "datasets/file_kind.h"
 #include "datasets/tir_contact.h"
 #include "model/rigid_ring_model.h"
 
@@ -15,17 +15,56 @@ namespace {
 
 using P = Param;
 
-constexpr double kTwoPi = 2 * M_PI;
-
-// The undamped frequency (Hz) of a stiffness k on an inertia m, and back.
-double Frequency(double k, double m) { return std::sqrt(k / m) / kTwoPi; }
-double Stiffness(double f, double m) {
-  const double w = kTwoPi * f;
-  return m * (w * w);
+// FREQ_* and DAMP_* hold the undamped frequency and the damping ratio of a
+// sidewall element (model/parameters.h), named by its stiffness or damper.
+const SidewallElement& Element(Param p) { return *SidewallOf(p); }
+double Frequency(const Parameters& p, Param k) { return SidewallFrequencyHz(Element(k), p); }
+double Ratio(const Parameters& p, Param c) { return SidewallDampingRatio(Element(c), p); }
+// Each stiffness of `ks` (damper of `cs`) set to give its element frequency
+// (ratio) v.
+void SetFrequency(double v, std::initializer_list<Param> ks, Parameters* p) {
+  for (Param k : ks) (*p)[k] = SidewallStiffness(Element(k), v, *p);
 }
-// The damping ratio of a damper c on k and m, and back.
-double Ratio(double c, double k, double m) { return c / (2 * std::sqrt(k) * std::sqrt(m)); }
-double Damper(double zeta, double k, double m) { return 2 * zeta * std::sqrt(k) * std::sqrt(m); }
+void SetRatio(double v, std::initializer_list<Param> cs, Parameters* p) {
+  for (Param c : cs) (*p)[c] = SidewallDamper(Element(c), v, *p);
+}
+// What the frequency (ratio) of an element reads.
+std::vector<Param> FrequencyInputs(Param k) { return {k, Element(k).inertia}; }
+std::vector<Param> RatioInputs(Param c) { return {c, Element(c).stiffness, Element(c).inertia}; }
+
+std::string Name(Param p) { return ParamName(p); }
+// "sqrt(k_bx / m_b) / (2 pi)", "c_bx / (2 sqrt(k_bx m_b))".
+std::string FrequencyText(Param k) {
+  return "sqrt(" + Name(k) + " / " + Name(Element(k).inertia) + ") / (2 pi)";
+}
+std::string RatioText(Param c) {
+  const SidewallElement& e = Element(c);
+  return Name(c) + " / (2 sqrt(" + Name(e.stiffness) + " " + Name(e.inertia) + "))";
+}
+// What reading `key` sets, each parameter from its own element, those with
+// the same formula together: "k_bx = k_bz = m_b (2 pi FREQ_LONG)^2".
+std::string SetsText(const std::vector<std::pair<Param, std::string>>& sets) {
+  std::string out;
+  for (size_t i = 0; i < sets.size(); ++i) {
+    out += Name(sets[i].first) + " = ";
+    if (i + 1 < sets.size() && sets[i + 1].second == sets[i].second) continue;
+    out += sets[i].second + (i + 1 < sets.size() ? ", " : "");
+  }
+  return out;
+}
+std::string FromFrequencyText(const std::string& key, std::initializer_list<Param> ks) {
+  std::vector<std::pair<Param, std::string>> sets;
+  for (Param k : ks) sets.push_back({k, Name(Element(k).inertia) + " (2 pi " + key + ")^2"});
+  return SetsText(sets);
+}
+std::string FromRatioText(const std::string& key, std::initializer_list<Param> cs) {
+  std::vector<std::pair<Param, std::string>> sets;
+  for (Param c : cs) {
+    const SidewallElement& e = Element(c);
+    sets.push_back({c, "2 " + key + " sqrt(" + Name(e.stiffness) + " " + Name(e.inertia) + ")"});
+  }
+  return SetsText(sets);
+}
 
 }  // namespace
 
@@ -86,69 +125,57 @@ const std::vector<TirField>& TirFields() {  // size-check: data table
        },
        nullptr},
       {"STRUCTURAL", "FREQ_LONG", "Hz", "Undamped frequency fore/aft and vertical mode",
-       "sqrt(k_bx / m_b) / (2 pi)", "k_bx = k_bz = m_b (2 pi FREQ_LONG)^2",
+       FrequencyText(P::k_bx), FromFrequencyText("FREQ_LONG", {P::k_bx, P::k_bz}),
        "the belt on a fixed rim without road contact; one frequency fore/aft and vertical, so "
        "k_bz = k_bx (where k_bz differs, the header gives its frequency)",
-       true, {P::k_bx, P::m_b}, {P::k_bx, P::k_bz},
-       [](const Parameters& p) { return Frequency(p[P::k_bx], p[P::m_b]); },
-       [](double v, Parameters* p) { (*p)[P::k_bx] = (*p)[P::k_bz] = Stiffness(v, (*p)[P::m_b]); }},
+       true, FrequencyInputs(P::k_bx), {P::k_bx, P::k_bz},
+       [](const Parameters& p) { return Frequency(p, P::k_bx); },
+       [](double v, Parameters* p) { SetFrequency(v, {P::k_bx, P::k_bz}, p); }},
       {"STRUCTURAL", "FREQ_LAT", "Hz", "Undamped frequency lateral mode",
-       "sqrt(k_by / m_b) / (2 pi)", "k_by = m_b (2 pi FREQ_LAT)^2",
+       FrequencyText(P::k_by), FromFrequencyText("FREQ_LAT", {P::k_by}),
        "the belt on a fixed rim without road contact (no K_cy/sigma_cy)", true,
-       {P::k_by, P::m_b}, {P::k_by},
-       [](const Parameters& p) { return Frequency(p[P::k_by], p[P::m_b]); },
-       [](double v, Parameters* p) { (*p)[P::k_by] = Stiffness(v, (*p)[P::m_b]); }},
+       FrequencyInputs(P::k_by), {P::k_by},
+       [](const Parameters& p) { return Frequency(p, P::k_by); },
+       [](double v, Parameters* p) { SetFrequency(v, {P::k_by}, p); }},
       {"STRUCTURAL", "FREQ_YAW", "Hz", "Undamped frequency yaw and camber mode",
-       "sqrt(k_bpsi / I_bz) / (2 pi)",
-       "k_bpsi = I_bz (2 pi FREQ_YAW)^2, k_bgamma = I_bx (2 pi FREQ_YAW)^2",
+       FrequencyText(P::k_bpsi), FromFrequencyText("FREQ_YAW", {P::k_bpsi, P::k_bgamma}),
        "the belt on a fixed rim without road contact; one frequency for yaw and camber, so "
        "sqrt(k_bgamma / I_bx) = sqrt(k_bpsi / I_bz): the camber stiffness without the road's "
        "r_l0 F_cz0 (where the camber frequency differs, the header gives it)",
-       true, {P::k_bpsi, P::I_bz}, {P::k_bpsi, P::k_bgamma},
-       [](const Parameters& p) { return Frequency(p[P::k_bpsi], p[P::I_bz]); },
-       [](double v, Parameters* p) {
-         (*p)[P::k_bpsi] = Stiffness(v, (*p)[P::I_bz]);
-         (*p)[P::k_bgamma] = Stiffness(v, (*p)[P::I_bx]);
-       }},
+       true, FrequencyInputs(P::k_bpsi), {P::k_bpsi, P::k_bgamma},
+       [](const Parameters& p) { return Frequency(p, P::k_bpsi); },
+       [](double v, Parameters* p) { SetFrequency(v, {P::k_bpsi, P::k_bgamma}, p); }},
       {"STRUCTURAL", "FREQ_WINDUP", "Hz", "Undamped frequency wind-up mode",
-       "sqrt(k_btheta / I_by) / (2 pi)", "k_btheta = I_by (2 pi FREQ_WINDUP)^2",
+       FrequencyText(P::k_btheta), FromFrequencyText("FREQ_WINDUP", {P::k_btheta}),
        "the belt turning about y against the sidewall on a fixed rim (theta_a held), without "
        "road contact",
-       true, {P::k_btheta, P::I_by}, {P::k_btheta},
-       [](const Parameters& p) { return Frequency(p[P::k_btheta], p[P::I_by]); },
-       [](double v, Parameters* p) { (*p)[P::k_btheta] = Stiffness(v, (*p)[P::I_by]); }},
+       true, FrequencyInputs(P::k_btheta), {P::k_btheta},
+       [](const Parameters& p) { return Frequency(p, P::k_btheta); },
+       [](double v, Parameters* p) { SetFrequency(v, {P::k_btheta}, p); }},
       {"STRUCTURAL", "DAMP_LONG", "-", "Dimensionless damping fore/aft and vertical mode",
-       "c_bx / (2 sqrt(k_bx m_b))", "c_bx = c_bz = 2 DAMP_LONG sqrt(k_bx m_b)",
+       RatioText(P::c_bx), FromRatioText("DAMP_LONG", {P::c_bx, P::c_bz}),
        "as FREQ_LONG, one ratio fore/aft and vertical (where c_bz's differs, the header gives "
        "it)",
-       false, {P::c_bx, P::k_bx, P::m_b}, {P::c_bx, P::c_bz},
-       [](const Parameters& p) { return Ratio(p[P::c_bx], p[P::k_bx], p[P::m_b]); },
-       [](double v, Parameters* p) {
-         (*p)[P::c_bx] = (*p)[P::c_bz] = Damper(v, (*p)[P::k_bx], (*p)[P::m_b]);
-       }},
+       false, RatioInputs(P::c_bx), {P::c_bx, P::c_bz},
+       [](const Parameters& p) { return Ratio(p, P::c_bx); },
+       [](double v, Parameters* p) { SetRatio(v, {P::c_bx, P::c_bz}, p); }},
       {"STRUCTURAL", "DAMP_LAT", "-", "Dimensionless damping lateral mode",
-       "c_by / (2 sqrt(k_by m_b))", "c_by = 2 DAMP_LAT sqrt(k_by m_b)", "", false,
-       {P::c_by, P::k_by, P::m_b}, {P::c_by},
-       [](const Parameters& p) { return Ratio(p[P::c_by], p[P::k_by], p[P::m_b]); },
-       [](double v, Parameters* p) { (*p)[P::c_by] = Damper(v, (*p)[P::k_by], (*p)[P::m_b]); }},
+       RatioText(P::c_by), FromRatioText("DAMP_LAT", {P::c_by}), "", false,
+       RatioInputs(P::c_by), {P::c_by},
+       [](const Parameters& p) { return Ratio(p, P::c_by); },
+       [](double v, Parameters* p) { SetRatio(v, {P::c_by}, p); }},
       {"STRUCTURAL", "DAMP_YAW", "-", "Dimensionless damping yaw and camber mode",
-       "c_bpsi / (2 sqrt(k_bpsi I_bz))",
-       "c_bpsi = 2 DAMP_YAW sqrt(k_bpsi I_bz), c_bgamma = 2 DAMP_YAW sqrt(k_bgamma I_bx)",
+       RatioText(P::c_bpsi), FromRatioText("DAMP_YAW", {P::c_bpsi, P::c_bgamma}),
        "as FREQ_YAW, one ratio for yaw and camber (where the camber ratio differs, the header "
        "gives it)",
-       false, {P::c_bpsi, P::k_bpsi, P::I_bz}, {P::c_bpsi, P::c_bgamma},
-       [](const Parameters& p) { return Ratio(p[P::c_bpsi], p[P::k_bpsi], p[P::I_bz]); },
-       [](double v, Parameters* p) {
-         (*p)[P::c_bpsi] = Damper(v, (*p)[P::k_bpsi], (*p)[P::I_bz]);
-         (*p)[P::c_bgamma] = Damper(v, (*p)[P::k_bgamma], (*p)[P::I_bx]);
-       }},
+       false, RatioInputs(P::c_bpsi), {P::c_bpsi, P::c_bgamma},
+       [](const Parameters& p) { return Ratio(p, P::c_bpsi); },
+       [](double v, Parameters* p) { SetRatio(v, {P::c_bpsi, P::c_bgamma}, p); }},
       {"STRUCTURAL", "DAMP_WINDUP", "-", "Dimensionless damping wind-up mode",
-       "c_btheta / (2 sqrt(k_btheta I_by))", "c_btheta = 2 DAMP_WINDUP sqrt(k_btheta I_by)", "",
-       false, {P::c_btheta, P::k_btheta, P::I_by}, {P::c_btheta},
-       [](const Parameters& p) { return Ratio(p[P::c_btheta], p[P::k_btheta], p[P::I_by]); },
-       [](double v, Parameters* p) {
-         (*p)[P::c_btheta] = Damper(v, (*p)[P::k_btheta], (*p)[P::I_by]);
-       }},
+       RatioText(P::c_btheta), FromRatioText("DAMP_WINDUP", {P::c_btheta}), "",
+       false, RatioInputs(P::c_btheta), {P::c_btheta},
+       [](const Parameters& p) { return Ratio(p, P::c_btheta); },
+       [](double v, Parameters* p) { SetRatio(v, {P::c_btheta}, p); }},
       {"VERTICAL", "VERTICAL_STIFFNESS", "N/m", "Tyre vertical stiffness",
        "1 / (1/k_bz + 1/k_cz)",
        "k_cz = 1 / (1/VERTICAL_STIFFNESS - 1/k_bz), k_bz from FREQ_LONG; so it must be below "
@@ -315,28 +342,28 @@ std::string AssumptionNotes(const Parameters& p) {
   if (AllSet(p, {P::k_bx, P::k_bz, P::m_b})) {
     note(Differ(p[P::k_bx], p[P::k_bz]),
          "FREQ_LONG holds k_bx; k_bz = " + TirNumber(p[P::k_bz]) + " N/m differs (its frequency " +
-             TirNumber(Frequency(p[P::k_bz], p[P::m_b])) +
+             TirNumber(Frequency(p, P::k_bz)) +
              " Hz) and reads back as k_bx" +
              (p.IsSet(P::k_cz) ? "; VERTICAL_STIFFNESS keeps the series of k_bz and k_cz." : "."));
   }
   if (AllSet(p, {P::k_bgamma, P::I_bx, P::k_bpsi, P::I_bz})) {
-    const double camber = Frequency(p[P::k_bgamma], p[P::I_bx]);
-    note(Differ(camber, Frequency(p[P::k_bpsi], p[P::I_bz])),
-         "FREQ_YAW holds the yaw sqrt(k_bpsi/I_bz)/(2 pi); the camber frequency " +
+    const double camber = Frequency(p, P::k_bgamma);
+    note(Differ(camber, Frequency(p, P::k_bpsi)),
+         "FREQ_YAW holds the yaw " + FrequencyText(P::k_bpsi) + "; the camber frequency " +
              TirNumber(camber) + " Hz (k_bgamma = " + TirNumber(p[P::k_bgamma]) +
              " N m/rad) differs and is not held.");
   }
   if (AllSet(p, {P::c_bx, P::c_bz, P::k_bx, P::k_bz, P::m_b})) {
-    const double vertical = Ratio(p[P::c_bz], p[P::k_bz], p[P::m_b]);
-    note(Differ(vertical, Ratio(p[P::c_bx], p[P::k_bx], p[P::m_b])),
-         "DAMP_LONG holds c_bx; the vertical ratio c_bz/(2 sqrt(k_bz m_b)) = " +
+    const double vertical = Ratio(p, P::c_bz);
+    note(Differ(vertical, Ratio(p, P::c_bx)),
+         "DAMP_LONG holds c_bx; the vertical ratio " + RatioText(P::c_bz) + " = " +
              TirNumber(vertical) + " (c_bz = " + TirNumber(p[P::c_bz]) +
              " N s/m) differs and is not held.");
   }
   if (AllSet(p, {P::c_bgamma, P::c_bpsi, P::k_bgamma, P::k_bpsi, P::I_bx, P::I_bz})) {
-    const double camber = Ratio(p[P::c_bgamma], p[P::k_bgamma], p[P::I_bx]);
-    note(Differ(camber, Ratio(p[P::c_bpsi], p[P::k_bpsi], p[P::I_bz])),
-         "DAMP_YAW holds the yaw c_bpsi; the camber ratio c_bgamma/(2 sqrt(k_bgamma I_bx)) = " +
+    const double camber = Ratio(p, P::c_bgamma);
+    note(Differ(camber, Ratio(p, P::c_bpsi)),
+         "DAMP_YAW holds the yaw c_bpsi; the camber ratio " + RatioText(P::c_bgamma) + " = " +
              TirNumber(camber) + " (c_bgamma = " + TirNumber(p[P::c_bgamma]) +
              " N m s/rad) differs and is not held.");
   }
@@ -471,9 +498,7 @@ bool TirToParameters(const TirFile& file, Parameters* p, LoadError* error) {
   return true;
 }
 
-bool IsTirPath(const std::string& path) {
-  return Upper(std::filesystem::path(path).extension().string()) == ".TIR";
-}
+bool IsTirPath(const std::string& path) { return SniffPath(path).kind == FileKind::kTir; }
 
 namespace {
 

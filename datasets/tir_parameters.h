@@ -33,8 +33,8 @@ struct TirField {
   const char* key;          // "FREQ_LONG"
   const char* unit;         // SI
   const char* meaning;      // the key's meaning in MF-Swift's own words
-  const char* written;      // how export computes it from the parameters
-  const char* read;         // what import sets from it; "not read: WHY" when nothing
+  std::string written;      // how export computes it from the parameters
+  std::string read;         // what import sets from it; "not read: WHY" when nothing
   const char* assumption;   // what the mapping assumes; "" when nothing
   bool required;            // import refuses a file without it
   std::vector<Param> inputs;  // the parameters `write` reads

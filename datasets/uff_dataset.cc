@@ -7,7 +7,7 @@
 #include <set>
 
 #include "datasets/measurement.h"
-#include "model/assignment.h"
+#include "datasets/pairing.h"
 #include "model/rigid_ring_model.h"
 #include "model/spelling.h"
 
@@ -80,13 +80,31 @@ std::string Where(const UffModalData& m) {
 bool Shape(const UffModalData& m, const UffMap& map, const UffUnits* units,
            std::vector<std::pair<Dof, double>>* shape, LoadError* error) {
   std::vector<std::pair<Dof, std::complex<double>>> complex;
-  for (const UffMap::Channel& c : map.channels) {
+  for (size_t k = 0; k < map.channels.size(); ++k) {
+    const UffMap::Channel& c = map.channels[k];
+    bool found = false;
+    for (const UffNodeValues& n : m.nodes) found |= n.label == c.node;
+    if (!found) {  // else that degree of freedom would drop out of the shape unsaid
+      std::string held;
+      for (size_t i = 0; i < m.nodes.size() && i < 8; ++i) {
+        held += (i ? ", " : "") + std::to_string(m.nodes[i].label);
+      }
+      if (m.nodes.size() > 8) held += ", ... (" + std::to_string(m.nodes.size()) + " nodes)";
+      return Fail(error, Where(m), "the map's channels[" + std::to_string(k) + "] names node " +
+                                       std::to_string(c.node) + " direction " +
+                                       std::to_string(c.direction) + " (" + DofName(c.dof) +
+                                       "), which this record does not hold (its nodes: " +
+                                       (held.empty() ? "none" : held) +
+                                       "; 'ringid import --uff=FILE' lists them)");
+    }
     for (const UffNodeValues& n : m.nodes) {
       if (n.label != c.node) continue;
       if (c.direction > static_cast<int>(n.values.size())) {
-        return Fail(error, Where(m), "node " + std::to_string(c.node) + " holds " +
-                                         std::to_string(n.values.size()) +
-                                         " values, not direction " + std::to_string(c.direction));
+        return Fail(error, Where(m), "the map's channels[" + std::to_string(k) + "] names node " +
+                                         std::to_string(c.node) + " direction " +
+                                         std::to_string(c.direction) + ", and the node holds " +
+                                         std::to_string(n.values.size()) + " values (directions 1-" +
+                                         std::to_string(n.values.size()) + ")");
       }
       std::complex<double> v = c.sign * n.values[c.direction - 1];
       if (units && IsTranslation(c.dof)) v = units->LengthToSi(1.0) * v;
@@ -108,48 +126,62 @@ bool Shape(const UffModalData& m, const UffMap& map, const UffUnits* units,
   return true;
 }
 
-// Labels the modes the map does not, by MAC with the model's modes at `p`
-// (by frequency where no shape was measured), one-to-one.
-bool LabelByModel(const Parameters& p, const std::set<ModeLabel>& taken,
-                  const std::vector<int>& unlabelled, const std::vector<std::string>& names,
-                  std::vector<MeasuredMode>* modes, std::vector<std::string>* notes,
-                  LoadError* error) {
+// Labels the modes the map does not by the model's modes at `p` that the map
+// left, by the one pairing rule (datasets/pairing.h; their labels unknown).
+bool LabelByModel(const Parameters& p, ShapeConvention convention,
+                  const std::set<ModeLabel>& taken, const std::vector<int>& unlabelled,
+                  const std::vector<std::string>& names, std::vector<MeasuredMode>* modes,
+                  UffImport* out, LoadError* error) {
   const ModalSolution s = RigidRingModel().Solve(p);
   if (!s.ok) return Fail(error, "parameters", "the model has no modes there: " + s.error);
   std::vector<const Mode*> free;
   for (const Mode& m : s.modes) {
     if (!taken.count(m.label)) free.push_back(&m);
   }
-  if (unlabelled.size() > free.size() || free.size() > 16) {
+  if (unlabelled.size() > free.size()) {
     return Fail(error, "labels", std::to_string(unlabelled.size()) + " modes to label, and the "
                                  "model has " + std::to_string(free.size()) + " left to pair them with");
   }
-  Eigen::MatrixXd score(unlabelled.size(), free.size());
-  for (size_t r = 0; r < unlabelled.size(); ++r) {
-    const MeasuredMode& m = (*modes)[unlabelled[r]];
-    for (size_t c = 0; c < free.size(); ++c) {
-      score(r, c) = m.shape.empty()
-                        ? std::exp(-std::abs(std::log(m.frequency_hz / free[c]->frequency_hz)))
-                        : Mac(ComparableShape(*free[c], ShapeConvention::kContract, m.shape), m.shape);
-    }
+  std::vector<internal::ModeToPair> measured;
+  for (int i : unlabelled) {
+    const MeasuredMode& m = (*modes)[i];
+    measured.push_back({m.frequency_hz, &m.shape, std::nullopt});
   }
-  const std::vector<int> pick = internal::AssignMaxScore(score);
+  std::vector<int> pick;
+  std::vector<internal::PairedBy> by;
+  std::string why;
+  if (!internal::PairModes(measured, free, convention, &pick, &by, &why)) {
+    return Fail(error, "labels", why);
+  }
+  std::vector<std::string>* notes = &out->notes;
   for (size_t r = 0; r < unlabelled.size(); ++r) {
     MeasuredMode& m = (*modes)[unlabelled[r]];
     const Mode& model = *free[pick[r]];
+    const bool shaped = by[r] == internal::PairedBy::kShape;
+    const auto score = [&](const Mode& mode) {
+      return shaped ? internal::ShapeScore(mode, measured[r], convention)
+                    : internal::FrequencyScore(mode, measured[r]);
+    };
     m.label = model.label;
-    for (size_t c = 0; c < free.size(); ++c) {  // a runner-up as good: say so
-      if (static_cast<int>(c) != pick[r] && score(r, c) > score(r, pick[r]) - 0.05) {
-        notes->push_back(names[unlabelled[r]] + ": " + LabelName(free[c]->label) +
+    const double mine = score(model);
+    for (const Mode* other : free) {  // a runner-up as good: say so
+      if (other != &model && score(*other) > mine - 0.05) {
+        notes->push_back(names[unlabelled[r]] + ": " + LabelName(other->label) +
                          " scores nearly as well; give its label in the map if you know it");
       }
     }
     char line[200];
-    std::snprintf(line, sizeof line, "%s, %.4g Hz, labelled %s by the model (%.4g Hz there, %s %.3f)",
-                  names[unlabelled[r]].c_str(), m.frequency_hz, LabelName(model.label), model.frequency_hz,
-                  m.shape.empty() ? "no shape measured: by frequency, score" : "MAC",
-                  score(r, pick[r]));
+    if (shaped) {
+      std::snprintf(line, sizeof line, "%s, %.4g Hz, labelled %s by the model (%.4g Hz there, MAC %.3f)",
+                    names[unlabelled[r]].c_str(), m.frequency_hz, LabelName(model.label),
+                    model.frequency_hz, mine);
+    } else {
+      std::snprintf(line, sizeof line, "%s, %.4g Hz, labelled %s by the model (%.4g Hz there; no "
+                    "shape measured: the nearest in frequency)", names[unlabelled[r]].c_str(),
+                    m.frequency_hz, LabelName(model.label), model.frequency_hz);
+    }
     notes->push_back(line);
+    out->by_model.push_back({unlabelled[r], shaped ? std::optional<double>(mine) : std::nullopt});
   }
   return true;
 }
@@ -178,7 +210,7 @@ bool LoadUffMap(const std::string& path, UffMap* map, LoadError* error) {
 }
 
 bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, UffImport* out,
-                  LoadError* error) {
+                  LoadError* error, ShapeConvention convention) {
   *out = UffImport{};
   error->file = file.path;
   error->field.clear();
@@ -211,11 +243,13 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
     const std::string problem = ModeFrequencyProblem(mode.frequency_hz);
     if (!problem.empty()) return Fail(error, Where(m) + " frequency", problem);
     const std::optional<double> zeta = m.DampingRatio();
-    if (zeta && *zeta > kMinDampingRatio && *zeta < kMaxDampingRatio) {
+    const std::string damping = zeta ? DampingRatioProblem(*zeta) : "";
+    if (zeta && damping.empty()) {
       mode.damping_ratio = zeta;
     } else if (zeta && *zeta != 0) {
-      out->notes.push_back(Where(m) + ": damping ratio " + std::to_string(*zeta) +
-                           " is outside (0, 1): left out");
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", *zeta);
+      out->notes.push_back(Where(m) + ": damping ratio " + value + " left out: it " + damping);
     }
     if (!Shape(m, map, units, &mode.shape, error)) return false;
     const auto label = map.labels.find(m.mode_number);
@@ -240,7 +274,7 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
       return Fail(error, "labels", std::to_string(unlabelled.size()) + " modes have no label: give "
                                    "them in the map, or --parameters to label them by the model");
     }
-    if (!LabelByModel(*p, taken, unlabelled, names, &d.modes, &out->notes, error)) return false;
+    if (!LabelByModel(*p, convention, taken, unlabelled, names, &d.modes, out, error)) return false;
   }
   if (!p && !map.known.empty()) {
     out->notes.push_back("known: no --parameters, so no value is written known or initial");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "datasets/measurement_options.h"
 #include "datasets/uff.h"
 #include "model/archive.h"
 #include "model/parameters.h"
@@ -78,20 +79,33 @@ struct UffMap {
 bool ParseUffMap(const std::string& text, const std::string& path, UffMap* map, LoadError* error);
 bool LoadUffMap(const std::string& path, UffMap* map, LoadError* error);
 
+// A mode the model labelled (the map did not): its index in dataset.modes
+// and, where its shape decided the label, the MAC with the model mode that
+// named it.
+struct UffModelLabel {
+  int mode = 0;
+  std::optional<double> mac;
+};
+
 // What an import made and said.
 struct UffImport {
   Dataset dataset;
-  std::vector<std::string> notes;  // units, skipped data, how each mode was labelled
+  std::vector<std::string> notes;     // units, skipped data, how each mode was labelled
+  std::vector<UffModelLabel> by_model;
+  std::vector<std::string> warnings;  // labels that rest on a poor fit (estimation/label_by_fit.h)
 };
 
 // The modes of `file`'s dataset-55 records under `map`, as a format-1
-// dataset. `p` (may be null): the parameters the model labels with, and the
-// dataset's known (map.known) and initial (the rest) values. Complex shapes
-// are made real as the contract's §2 (largest component real); translations
-// are converted to metres by dataset 164. False, with `error` naming the map
-// field or the UFF record, where a mode cannot be labelled or read.
+// dataset. `p` (may be null): the parameters the model labels with, by the
+// pairing of datasets/pairing.h with the model's modes the map's labels left
+// (shapes compared under `convention`), and the dataset's known (map.known)
+// and initial (the rest) values. Complex shapes are made real as the
+// contract's §2 (largest component real); translations are converted to
+// metres by dataset 164. False, with `error` naming the map field or the UFF
+// record, where a mode cannot be labelled or read, or a mapped node or
+// direction is not in a mode's record.
 bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, UffImport* out,
-                  LoadError* error);
+                  LoadError* error, ShapeConvention convention = ShapeConvention::kContract);
 
 }  // namespace ringid
 

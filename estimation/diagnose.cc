@@ -12,6 +12,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <mutex>
 #include <sstream>
 
 #include "model/effects.h"
@@ -190,6 +192,29 @@ IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, cons
   if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
   return best;
 }
+
+// DiagnoseOptions::on_step's count, one call at a time from any thread.
+class Steps {
+ public:
+  Steps(const std::function<void(int, int)>& report, int total) : report_(report), total_(total) {
+    Report(0);
+  }
+  void Done() { Report(1); }
+  void More(int n) {  // a re-calibration and its candidates
+    std::lock_guard<std::mutex> lock(mutex_);
+    total_ += n;
+  }
+
+ private:
+  void Report(int add) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ += add;
+    if (report_) report_(done_, total_);
+  }
+  const std::function<void(int, int)>& report_;
+  std::mutex mutex_;
+  int done_ = 0, total_;
+};
 
 }  // namespace
 
@@ -418,8 +443,12 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisResult* r, std::chrono::steady_clock::time_point t0) {
   // The gap: calibrate the baseline by the multistart of Identify, on the one
   // problem of the baseline and the data.
+  int candidates_in_catalogue = 0;
+  for (const Effect* effect : EffectCatalogue()) candidates_in_catalogue += !baseline.Has(effect);
+  Steps steps(o.on_step, candidates_in_catalogue + 2);  // the baseline, each candidate, the verdict
   const auto problem = Problem::Create(baseline, dataset, o.fit.residuals, &r->baseline.status);
   if (problem) Identify(*problem, o.fit, &r->baseline);
+  steps.Done();
   std::vector<IdentifyResult> fits;
   // A candidate that holds its effect at 0 and still fits better than the
   // baseline shows that the baseline missed its optimum: re-calibrate from
@@ -449,6 +478,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     internal::ParallelFor(n, o.fit.threads, [&](int k) {
       r->ranking[k] =
           FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k]);
+      steps.Done();
     });
     int better = -1;
     for (int k = 0; k < n; ++k) {
@@ -459,12 +489,14 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
       }
     }
     if (better < 0 || attempt == 2) break;
+    steps.More(1);  // the re-calibration
     IdentifyOptions one = o.fit;
     one.starts = 1;
     IdentifyResult recalibrated;
     Dataset from = WarmStart(dataset, fits[better]);
     for (Param q : r->ranking[better].effect->parameters()) from.initial.erase(q);
     Identify(baseline, from, one, &recalibrated);
+    steps.Done();
     if (!recalibrated.status.ok() || !(recalibrated.cost < r->baseline.cost)) break;
     // The baseline's starts, and this one after them.
     const double cost = recalibrated.cost;
@@ -477,6 +509,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
         "; a fit holding an effect at 0 then found a lower chi-square, from which the baseline "
         "was calibrated again";
     r->baseline = std::move(recalibrated);
+    steps.More(n);  // the candidates again
   }
   const Dataset warm = WarmStart(dataset, r->baseline);
 
@@ -521,6 +554,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
   }
   r->explanation = why.str();
+  steps.Done();
   r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -3,6 +3,7 @@
 #ifndef RINGID_ESTIMATION_DIAGNOSE_H_
 #define RINGID_ESTIMATION_DIAGNOSE_H_
 
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -39,6 +40,10 @@ struct DiagnoseOptions {
   // held-out chi-square is large (1e5 for a calibrated baseline seen); the
   // shrink from baseline to effect is what to read.
   bool held_out = true;
+  // Called as the diagnosis goes: steps done of total (the baseline, each
+  // candidate effect, the verdict; a re-calibration adds its own), from any
+  // of its threads, one call at a time.
+  std::function<void(int done, int total)> on_step;
   bool IsValid(std::string* why) const;
 };
 

@@ -39,9 +39,9 @@ class HistoryCallback : public ceres::IterationCallback {
 //   promises less than `stop` in chi-square. It is checked, at the price of
 //   one Jacobian, only after a successful step that gained less than `stop`
 //   itself (and then at most every kCheckEvery iterations);
-// - the gains of the last kShrinking successful steps shrink geometrically
-//   (each at most kShrink times the one before) and their extrapolated tail,
-//   gain r/(1-r) with r their slowest ratio but at least kSlowest (so the last
+// - the gains of the last kShrinkingGains successful steps shrink geometrically
+//   (each at most kGainShrink times the one before) and their extrapolated tail,
+//   gain r/(1-r) with r their slowest ratio but at least kSlowestShrink (so the last
 //   gain itself is below `stop`), is below `stop`: the crawl to a kink of the
 //   cost (a label or pairing that changes), where Gauss-Newton keeps
 //   promising what no step delivers.
@@ -70,14 +70,14 @@ class StatisticalStop : public ceres::IterationCallback {
 
  private:
   // What further steps would gain in all if the gains kept shrinking at
-  // their slowest recent rate (at least kSlowest); infinite unless they
+  // their slowest recent rate (at least kSlowestShrink); infinite unless they
   // shrink geometrically.
   double GeometricTail() const {
     const int n = static_cast<int>(gains_.size());
-    if (n < kShrinking + 1) return kInf;
-    double r = kSlowest;
-    for (int k = n - kShrinking; k < n; ++k) {
-      if (!(gains_[k - 1] > 0 && gains_[k] >= 0 && gains_[k] <= kShrink * gains_[k - 1])) {
+    if (n < kShrinkingGains + 1) return kInf;
+    double r = kSlowestShrink;
+    for (int k = n - kShrinkingGains; k < n; ++k) {
+      if (!(gains_[k - 1] > 0 && gains_[k] >= 0 && gains_[k] <= kGainShrink * gains_[k - 1])) {
         return kInf;
       }
       r = std::max(r, gains_[k] / gains_[k - 1]);
@@ -110,9 +110,6 @@ class StatisticalStop : public ceres::IterationCallback {
   // While a crawl keeps promising more, the check is repeated every few
   // iterations, not at each: it costs a Jacobian.
   static constexpr int kCheckEvery = 4;
-  static constexpr int kShrinking = 3;
-  static constexpr double kShrink = 0.8;
-  static constexpr double kSlowest = 0.5;
   int next_check_ = 0;
   bool by_tail_ = false;
   std::vector<double> gains_;  // chi-square gained by each successful step
@@ -147,8 +144,8 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = max_iterations;
-  so.function_tolerance = 1e-14;
-  so.gradient_tolerance = 1e-14;
+  so.function_tolerance = kCeresTolerance;
+  so.gradient_tolerance = kCeresTolerance;
   so.parameter_tolerance = 1e-12;
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
@@ -176,6 +173,7 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   fit.cost = summary.IsSolutionUsable() ? CostAt(residuals, fit.x) : kInf;
   fit.converged = summary.termination_type == ceres::CONVERGENCE ||
                   summary.termination_type == ceres::USER_SUCCESS;
+  fit.at_limit = summary.termination_type == ceres::NO_CONVERGENCE;
   if (summary.termination_type == ceres::USER_SUCCESS) {
     char words[200];
     std::snprintf(words, sizeof words,
@@ -203,6 +201,7 @@ LocalFit FitSimplex(const ModalResiduals& residuals,
   fit.x = s.x;
   fit.cost = s.cost;
   fit.converged = s.converged;
+  fit.at_limit = !s.converged && s.evaluations >= options.max_evaluations;
   fit.message = s.message;
   for (const auto& [evaluations, cost] : s.history) fit.history.emplace_back(evaluations, cost);
   return fit;
@@ -302,6 +301,23 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
   fit.seconds = std::chrono::duration<double>(
                     std::chrono::steady_clock::now() - t0).count();
   return fit;
+}
+
+std::string NotConverged(const LocalFit& fit, Method method, int max_iterations,
+                         const SimplexOptions& simplex) {
+  if (fit.at_limit && method == Method::kLevenbergMarquardt) {
+    return "not converged: the best start used all its " + std::to_string(max_iterations) +
+           " Levenberg-Marquardt iterations (--max_iterations) before the stopping rule held; "
+           "run again with --max_iterations=" + std::to_string(4 * max_iterations) +
+           " (the estimates and their std may still move), or from initial values nearer the fit";
+  }
+  if (fit.at_limit) {
+    return "not converged: the Downhill Simplex used all its " +
+           std::to_string(simplex.max_evaluations) +
+           " evaluations; try --method=lm (Levenberg-Marquardt), or hold what you know (--fix)";
+  }
+  return "not converged: the best start stopped on '" + fit.message +
+         "'; try more starts (--starts) or exact Jacobians (--derivatives=analytic)";
 }
 
 }  // namespace internal

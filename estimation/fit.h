@@ -38,6 +38,17 @@ Box BoundsAround(const ParameterSetup& setup, const Eigen::VectorXd& x0,
 bool CheckBounds(const ParameterSetup& setup, const Eigen::VectorXd& x0, const Bounds& bounds,
                  std::string* why);
 
+// Levenberg-Marquardt's stop (StatisticalStop, estimation/fit.cc): besides
+// kStopChiSquare, the gains of the last kShrinkingGains successful steps each
+// at most kGainShrink times the one before, extrapolated at their slowest
+// ratio but at least kSlowestShrink; Ceres' function and gradient
+// tolerances kCeresTolerance behind it (docs/development.md, which a test
+// keeps saying these figures).
+inline constexpr int kShrinkingGains = 3;
+inline constexpr double kGainShrink = 0.8;
+inline constexpr double kSlowestShrink = 0.5;
+inline constexpr double kCeresTolerance = 1e-14;
+
 // 1/2 |r(x)|^2, or +inf where the model cannot be solved.
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);
 
@@ -45,6 +56,9 @@ struct LocalFit {
   Eigen::VectorXd x;
   double cost = std::numeric_limits<double>::infinity();
   bool converged = false;
+  // Stopped by its limit: max_iterations (Levenberg-Marquardt) or
+  // SimplexOptions::max_evaluations, not by a convergence test or a failure.
+  bool at_limit = false;
   std::string message;
   long evaluations = 0;  // model solutions this fit used
   double seconds = 0;
@@ -59,6 +73,11 @@ LocalFit FitLocally(const ModalResiduals& residuals, Method method,
                     const Eigen::VectorXd& start, const Box& box,
                     int max_iterations, const SimplexOptions& simplex,
                     int fixed = -1, double stop_chi_square = kStopChiSquare);
+
+// What to try where `fit`, the best start, did not converge: more
+// iterations where it ran out of them, else what it stopped on.
+std::string NotConverged(const LocalFit& fit, Method method, int max_iterations,
+                         const SimplexOptions& simplex);
 
 }  // namespace internal
 

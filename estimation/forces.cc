@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "model/campbell.h"
+
 namespace ringid {
 namespace {
 
@@ -35,7 +37,9 @@ Eigen::MatrixXcd Columns(const Eigen::MatrixXcd& A, const std::vector<LugForce>&
   return out;
 }
 
+// Infinite where A has fewer rows than columns: its columns are dependent.
 double ConditionNumber(const Eigen::MatrixXcd& A) {
+  if (A.rows() < A.cols()) return INFINITY;
   const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(A);
   const auto& s = svd.singularValues();
   return s.size() && s(s.size() - 1) > 0 ? s(0) / s(s.size() - 1) : INFINITY;
@@ -45,14 +49,14 @@ double ConditionNumber(const Eigen::MatrixXcd& A) {
 // while the matrix of those kept has a condition number below the limit;
 // the others into `undetermined` with why.
 std::vector<LugForce> Determined(const Eigen::MatrixXcd& A, double limit,
-                                 std::map<LugForce, std::string>* undetermined) {
+                                 std::map<LugForce, UndeterminedForce>* undetermined) {
   std::vector<LugForce> order = {LugForce::kFx, LugForce::kFz, LugForce::kFy};
   std::sort(order.begin(), order.end(), [&](LugForce a, LugForce b) {
     return A.col(static_cast<int>(a)).norm() > A.col(static_cast<int>(b)).norm();
   });
   const double strongest = A.col(static_cast<int>(order[0])).norm();
   std::vector<LugForce> kept;
-  char why[200];
+  char why[300];
   for (LugForce f : order) {
     const double norm = A.col(static_cast<int>(f)).norm();
     if (!(norm > strongest / limit)) {
@@ -60,19 +64,26 @@ std::vector<LugForce> Determined(const Eigen::MatrixXcd& A, double limit,
                     "no measured channel responds to it (its weighted response below 1/%.3g of "
                     "the strongest force's)",
                     limit);
-      (*undetermined)[f] = why;
+      (*undetermined)[f] = {why, std::nullopt};
       continue;
     }
     std::vector<LugForce> with = kept;
     with.push_back(f);
     const double condition = ConditionNumber(Columns(A, with));
-    if (static_cast<int>(with.size()) > A.rows() || !(condition <= limit)) {
+    if (!(condition <= limit)) {
+      char number[80];
+      if (std::isfinite(condition)) {
+        std::snprintf(number, sizeof number, "%.3g, above %.3g", condition, limit);
+      } else {
+        std::snprintf(number, sizeof number, "infinite: %zu forces from %d channel%s",
+                      with.size(), static_cast<int>(A.rows()), A.rows() == 1 ? "" : "s");
+      }
       std::snprintf(why, sizeof why,
                     "the measured channels cannot tell it from the forces kept (condition "
-                    "number %.3g with it, above %.3g); the estimates of those hold its share "
-                    "as if it were zero",
-                    condition, limit);
-      (*undetermined)[f] = why;
+                    "number with it %s); the estimates of those hold its share as if it were "
+                    "zero",
+                    number);
+      (*undetermined)[f] = {why, condition};
       continue;
     }
     kept.push_back(f);
@@ -112,9 +123,9 @@ Parameters Moved(const ForceParameters& fp, const Parameters& p, const ResponseC
   return q;
 }
 
-// The lug frequency of condition c under p: measured, or lugs V / (2 pi r_e0).
+// The lug frequency of condition c under p: measured, or order 1's.
 double LugHz(const ResponseCondition& c, int lugs, const Parameters& p) {
-  return c.f_lug_hz.value_or(lugs * c.speed_m_s / (2 * M_PI * p[Param::r_e0]));
+  return c.f_lug_hz.value_or(LugOrderHz(1, lugs, p[Param::r_e0], c.speed_m_s));
 }
 
 }  // namespace
@@ -212,10 +223,12 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
     cf.speed_m_s = c.speed_m_s;
     cf.f_lug_measured = c.f_lug_hz.has_value();
     cf.f_lug_hz = LugHz(c, data.lugs_per_revolution, p);
+    cf.model_valid_below_hz = ModelValidBelowHz(model, p);
     for (const OrderResponse& order : c.orders) {
       OrderForces of;
       of.order = order.order;
       of.frequency_hz = order.order * cf.f_lug_hz;
+      of.above_model_range = !(of.frequency_hz < cf.model_valid_below_hz);
       for (const auto& [channel, phasor] : order.channels) of.channels.push_back(channel);
       AxleResponseMatrix H;
       const bool responds = ResponseAt(model, p, c, of.frequency_hz, &H, &why);
@@ -224,7 +237,7 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
         const std::string reason = responds ? "the weighted response is not finite (a sigma far "
                                               "below the amplitudes?)"
                                             : "the model's response: " + why;
-        for (LugForce f : {LugForce::kFx, LugForce::kFz, LugForce::kFy}) of.undetermined[f] = reason;
+        for (LugForce f : {LugForce::kFx, LugForce::kFz, LugForce::kFy}) of.undetermined[f] = {reason, std::nullopt};
         cf.orders.push_back(of);
         continue;
       }
@@ -290,24 +303,28 @@ void EstimateForces(const RigidRingModel& model, const ForceParameters& fp,
 
 std::string ForcesResult::FullReport() const {
   std::ostringstream o;
-  char line[300];
+  char line[400];
   o << "lug forces (" << lugs_per_revolution << " lugs per revolution; parameters: " << parameters
     << ")\n";
   for (const ConditionForces& c : conditions) {
-    std::snprintf(line, sizeof line, "%s at %g m/s, f_lug %.4g Hz (%s)\n", c.name.c_str(),
-                  c.speed_m_s, c.f_lug_hz, c.f_lug_measured ? "measured" : "lugs V / (2 pi r_e0)");
+    std::snprintf(line, sizeof line, "%s at %g m/s, f_lug %.4g Hz (%s); the model holds below %.4g Hz\n",
+                  c.name.c_str(), c.speed_m_s, c.f_lug_hz,
+                  c.f_lug_measured ? "measured" : "lugs V / (2 pi r_e0)", c.model_valid_below_hz);
     o << line;
     o << "  order      Hz  force        |F| N   phase deg   std meas.   std total\n";
+    std::string above;  // the orders above the model's range
     for (const OrderForces& of : c.orders) {
+      const char* mark = of.above_model_range ? "*" : " ";
+      if (of.above_model_range) above += (above.empty() ? "" : ", ") + std::to_string(of.order);
       for (const auto& [force, e] : of.forces) {
-        std::snprintf(line, sizeof line, "  %5d %7.2f  %-5s %12.4g %11.1f %11.3g %11.3g\n",
-                      of.order, of.frequency_hz, ToString(force), std::abs(e.value),
+        std::snprintf(line, sizeof line, "  %5d %7.2f%s %-5s %12.4g %11.1f %11.3g %11.3g\n",
+                      of.order, of.frequency_hz, mark, ToString(force), std::abs(e.value),
                       std::arg(e.value) * 180 / M_PI, e.std_measurement, e.std_total);
         o << line;
       }
-      for (const auto& [force, reason] : of.undetermined) {
-        std::snprintf(line, sizeof line, "  %5d %7.2f  %-5s not determined: %s\n", of.order,
-                      of.frequency_hz, ToString(force), reason.c_str());
+      for (const auto& [force, u] : of.undetermined) {
+        std::snprintf(line, sizeof line, "  %5d %7.2f%s %-5s not determined: %s\n", of.order,
+                      of.frequency_hz, mark, ToString(force), u.why.c_str());
         o << line;
       }
       if (of.chi_square) {
@@ -315,6 +332,11 @@ std::string ForcesResult::FullReport() const {
                       of.order, *of.chi_square, of.degrees_of_freedom);
         o << line;
       }
+    }
+    if (!above.empty()) {
+      o << "  * order" << (above.find(',') == std::string::npos ? " " : "s ") << above
+        << ": above the model's range, estimated with a rigid ring that does not describe the "
+           "tire there (docs/forces.md §3)\n";
     }
   }
   if (!status.ok()) o << "status: " << ToString(status.outcome) << ": " << status.message << "\n";

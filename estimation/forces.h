@@ -76,12 +76,30 @@ struct ForceEstimate {
   }
 };
 
+// A force the measured channels do not determine, and why.
+struct UndeterminedForce {
+  std::string why;
+  // Where it was left out for the conditioning: the condition number of the
+  // kept forces' weighted response matrix with it (infinite, null in JSON,
+  // where the channels are fewer than those forces).
+  std::optional<double> condition_number_with_it;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("why", &why);
+    a->VisitIfSet("condition_number_with_it", &condition_number_with_it);
+  }
+};
+
 struct OrderForces {
   int order = 1;
   double frequency_hz = 0;
+  // Above the condition's model_valid_below_hz: estimated with a model that
+  // does not describe the tire there (docs/forces.md §3).
+  bool above_model_range = false;
   std::vector<AxleChannel> channels;          // measured at this order
   std::map<LugForce, ForceEstimate> forces;   // those the channels determine
-  std::map<LugForce, std::string> undetermined;  // the others, each with why
+  std::map<LugForce, UndeterminedForce> undetermined;  // the others
   double condition_number = 0;  // of the weighted response matrix of `forces`
   // Where the channels over-determine the forces: chi-square of the
   // weighted residual on 2 (channels - forces) degrees of freedom.
@@ -92,6 +110,7 @@ struct OrderForces {
   void Serialize(Archive* a) {
     a->Visit("order", &order);
     a->Visit("frequency_hz", &frequency_hz);
+    a->Visit("above_model_range", &above_model_range);
     a->Visit("channels", &channels);
     a->Visit("forces", &forces);
     a->Visit("undetermined", &undetermined);
@@ -106,6 +125,9 @@ struct ConditionForces {
   double speed_m_s = 0;
   double f_lug_hz = 0;
   bool f_lug_measured = false;  // given by the dataset (order tracking), else lugs V / (2 pi r_e0)
+  // The rigid-ring model holds below this, from the standing modes of this
+  // condition's parameters (ModelValidBelowHz, model/forced_response.h).
+  double model_valid_below_hz = 0;
   std::vector<OrderForces> orders;
 
   template <class Archive>
@@ -114,6 +136,7 @@ struct ConditionForces {
     a->Visit("speed_m_s", &speed_m_s);
     a->Visit("f_lug_hz", &f_lug_hz);
     a->Visit("f_lug_measured", &f_lug_measured);
+    a->Visit("model_valid_below_hz", &model_valid_below_hz);
     a->Visit("orders", &orders);
   }
 };

@@ -111,12 +111,14 @@ std::string RankExplanation(const Uncertainty& u, int n) {
 }
 
 // Per coordinate: class, std, Wald and profile intervals.
+// o.on_step: the fit, then each coordinate's profile (step 2 + i), then the rest.
 std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eigen::VectorXd& xhat,
                                                double cost, const Uncertainty& u,
                                                const IdentifiabilityOptions& o) {
   const ParameterSetup& setup = problem.setup();
   std::vector<ParameterIdentifiability> out;
   for (int i = 0; i < setup.size(); ++i) {
+    if (o.on_step) o.on_step(1 + i, setup.size() + 2);
     ParameterIdentifiability p;
     p.key = setup.key(i);
     p.value = setup.ToPhysical(i, xhat[i]);
@@ -500,6 +502,7 @@ void AnalyzeIdentifiability(const ModalModel& model, const Dataset& dataset,
     return;
   }
   IdentifyResult fit;
+  if (o.on_step) o.on_step(0, problem->setup().size() + 2);
   Identify(*problem, o.fit, &fit);
   AnalyzeIdentifiability(*problem, fit, o, r);
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -547,7 +550,9 @@ void AnalyzeIdentifiability(const Problem& problem, const IdentifyResult& fit,
   r->combinations = combinations.Release();
   r->correlation = Correlation(u);
   r->identifiable_subset = IdentifiableSubset(u, setup, o.fit.uncertainty.rank_tolerance);
+  if (o.on_step) o.on_step(setup.size() + 1, setup.size() + 2);
   r->advice = ExperimentAdvice(problem, xhat, u, o);
+  if (o.on_step) o.on_step(setup.size() + 2, setup.size() + 2);
   r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -565,7 +570,9 @@ std::string IdentifiabilityResult::FullReport() const {
     std::snprintf(line, sizeof line, " %.3g", singular_values[i]);
     o << line;
   }
-  o << "\n\n  parameter      value        class           std          Wald 95 %                profile 95 %\n";
+  std::snprintf(line, sizeof line, "\n\n  %-12s %12s %-9s  %-15s %-12s %-24s %s\n", "parameter",
+                "value", "unit", "class", "std", "Wald 95 %", "profile 95 %");
+  o << line;
   for (const ParameterIdentifiability& p : parameters) {
     // A side that did not close: where it jumped or its refits failed, else "open".
     auto opt = [](const std::optional<double>& v, const std::optional<double>& jump_at,
@@ -587,8 +594,9 @@ std::string IdentifiabilityResult::FullReport() const {
                                            p.profile_95.upper_failed_at) +
                                        "]"
                                  : "-";
-    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-15s %-12s %-24s %s\n", p.key.Text().c_str(),
-                  p.value, ToString(p.identifiable), sd, wald, prof.c_str());
+    std::snprintf(line, sizeof line, "  %-12s %12.4e %-9s  %-15s %-12s %-24s %s\n",
+                  p.key.Text().c_str(), p.value, Info(p.key.param).unit, ToString(p.identifiable),
+                  sd, wald, prof.c_str());
     o << line;
   }
   o << "\n  combinations the data leave free:\n";

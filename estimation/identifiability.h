@@ -5,6 +5,7 @@
 #ifndef RINGID_ESTIMATION_IDENTIFIABILITY_H_
 #define RINGID_ESTIMATION_IDENTIFIABILITY_H_
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -50,6 +51,9 @@ struct IdentifiabilityOptions {
   std::vector<double> advice_speeds_m_s = {3, 6, 12, 25};
   double advice_load_factor = 1.5;
   int advice_per_parameter = 3;
+  // Called as the analysis goes: steps done of total (the fit, each
+  // coordinate's profile, the rest), from the calling thread.
+  std::function<void(int done, int total)> on_step;
 
   bool IsValid(std::string* why) const;
 };

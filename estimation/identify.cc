@@ -563,6 +563,9 @@ void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyRe
   s->start_agreement = internal::AssessStarts(setup, s->start_costs, ends);
   s->status = Status::Success(best.message);
   s->converged = best.converged;
+  if (!best.converged) {
+    s->warnings.push_back(internal::NotConverged(best, o.method, o.max_iterations, o.simplex));
+  }
   s->cost = best.cost;
   s->parameters = setup.Decode(best.x.data());
   s->x = best.x;
@@ -631,7 +634,9 @@ std::string IdentifyResult::FullReport() const {
                       : "");
     o << line;
   }
-  o << "\n  parameter        value         std          identifiable\n";
+  std::snprintf(line, sizeof line, "\n  %-12s %12s %-9s  %-11s  %s\n", "parameter", "value", "unit",
+                "std", "identifiable");
+  o << line;
   for (const ParameterEstimate& e : estimates) {
     std::string sd = e.std ? std::to_string(*e.std) : "-";
     if (e.std) {
@@ -640,8 +645,8 @@ std::string IdentifyResult::FullReport() const {
     }
     const std::string cls = std::string(e.free || e.tied_to ? ToString(e.identifiable) : "(fixed)") +
                             (e.conditional_on.empty() ? "" : " *");
-    std::snprintf(line, sizeof line, "  %-12s %12.4e  %-11s  %-15s %s\n",
-                  e.key.Text().c_str(), e.value, sd.c_str(), cls.c_str(),
+    std::snprintf(line, sizeof line, "  %-12s %12.4e %-9s  %-11s  %-15s %s\n",
+                  e.key.Text().c_str(), e.value, Info(e.key.param).unit, sd.c_str(), cls.c_str(),
                   e.tied_to ? (std::string("= ") + ParamName(*e.tied_to)).c_str()
                             : "");
     o << line;

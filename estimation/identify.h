@@ -242,7 +242,8 @@ struct IdentifyResult {
   bool converged = false;   // the winning start met its convergence test
   // Headline warnings, one sentence each: the pairing of measured with model
   // modes at the start and at the best fit (ModalResiduals::PairingWarnings),
-  // and data with fewer observables than free parameters.
+  // data with fewer observables than free parameters, and a best start that
+  // did not converge, with what to try.
   std::vector<std::string> warnings;
   Method method = Method::kLevenbergMarquardt;
   FrequencyWeighting frequency_weighting = FrequencyWeighting::kSigma;

@@ -4,6 +4,7 @@
 #define RINGID_ESTIMATION_OPTIONS_H_
 
 #include <string>
+#include <utility>
 
 #include "estimation/types.h"
 
@@ -39,6 +40,11 @@ struct UncertaintyOptions {
   // 0.354 makes the 95 % interval wider than a factor of 2 either way.
   double practical_relative_std = 0.354;
   bool IsValid(std::string* why) const;
+  // The 95 % interval relative to the value (ParameterSetup::Interval95) of
+  // a parameter at practical_relative_std, within which a determined one is
+  // "yes": exp(-+ kNormal95 t) fitted in its log (a factor 2 either way),
+  // 1 -+ kNormal95 t fitted linearly.
+  std::pair<double, double> PracticalBand(bool fitted_in_log) const;
 };
 
 // Levenberg-Marquardt stops once no step can change chi-square by more than

@@ -1,5 +1,7 @@
 #include "estimation/parallel.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -13,6 +15,12 @@ namespace internal {
 
 int ThreadsFor(int threads) {
   if (threads > 0) return threads;
+#ifdef __linux__
+  // The cores this process may run on: a batch scheduler binds a task to its
+  // allocation (Slurm's --cpus-per-task), which hardware_concurrency ignores.
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
+#endif
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 

@@ -7,7 +7,8 @@
 namespace ringid {
 namespace internal {
 
-// The threads `threads` asks for: itself when positive, else one per core.
+// The threads `threads` asks for: itself when positive, else one per core
+// this process may run on (its affinity mask, as a batch scheduler sets it).
 int ThreadsFor(int threads);
 
 // Runs work(i) for every i in [0, n) on up to ThreadsFor(threads) threads,

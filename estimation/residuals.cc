@@ -6,8 +6,8 @@
 #include <limits>
 #include <set>
 
+#include "datasets/pairing.h"
 #include "estimation/statistics.h"
-#include "model/assignment.h"
 
 namespace ringid {
 
@@ -90,80 +90,26 @@ double ModalResiduals::PriorTerm::CoordinateVariance(const ParameterSetup& setup
 
 bool ModalResiduals::PairCondition(int c, const ModalSolution& solution,
                                    std::vector<int>* pairs, std::string* why) const {
-  const auto& measured = dataset_.modes;
-  const auto& modes = solution.modes;
-  // Measured shapes decide their pairing by MAC (docs/conventions.md §2) ...
-  std::vector<int> shaped;
-  for (int i = 0; i < static_cast<int>(measured.size()); ++i) {
-    if (measured[i].condition == c && !measured[i].shape.empty()) shaped.push_back(i);
+  // The one rule of datasets/pairing.h: shapes by MAC, then labels, then
+  // frequency within the label's plane (PairingWarnings says where it forced one).
+  std::vector<int> index;
+  std::vector<ModeToPair> measured;
+  for (int i = 0; i < static_cast<int>(dataset_.modes.size()); ++i) {
+    const MeasuredMode& m = dataset_.modes[i];
+    if (m.condition != c) continue;
+    index.push_back(i);
+    measured.push_back({m.frequency_hz, &m.shape, m.label});
   }
-  if (!shaped.empty()) {
-    if (shaped.size() > modes.size()) {
-      *why = "fewer model modes than measured shapes";
-      return false;
-    }
-    Eigen::MatrixXd score(shaped.size(), modes.size());
-    for (size_t a = 0; a < shaped.size(); ++a) {
-      for (size_t b = 0; b < modes.size(); ++b) {
-        score(a, b) = Mac(ComparableShape(modes[b], options_.shape_convention,
-                                          measured[shaped[a]].shape),
-                          measured[shaped[a]].shape);
-      }
-    }
-    const std::vector<int> pick = AssignMaxScore(score);
-    if (!Assigned(pick, c, why)) return false;
-    for (size_t a = 0; a < shaped.size(); ++a) (*pairs)[shaped[a]] = pick[a];
-  }
-  // ... and the label decides the rest, one to one: a label whose model mode
-  // a shape took leaves its measured mode the nearest free model mode in
-  // frequency, of its own plane where there is one (PairingWarnings says so).
-  std::vector<bool> taken(modes.size(), false);
-  for (int i : shaped) taken[(*pairs)[i]] = true;
-  std::vector<int> left;
-  for (int i = 0; i < static_cast<int>(measured.size()); ++i) {
-    if (measured[i].condition != c || (*pairs)[i] >= 0) continue;
-    for (int b = 0; b < static_cast<int>(modes.size()); ++b) {
-      if (modes[b].label == measured[i].label && !taken[b]) (*pairs)[i] = b;
-    }
-    if ((*pairs)[i] >= 0) {
-      taken[(*pairs)[i]] = true;
-    } else if (!solution.Find(measured[i].label)) {
-      *why = std::string("the model has no oscillating ") + LabelName(measured[i].label) +
-             " mode (its roots are real) in condition " + dataset_.conditions[c].name;
-      return false;
-    } else {
-      left.push_back(i);
-    }
-  }
-  if (left.empty()) return true;
-  std::vector<int> free;
-  for (int b = 0; b < static_cast<int>(modes.size()); ++b) {
-    if (!taken[b]) free.push_back(b);
-  }
-  if (free.size() < left.size()) {
-    *why = "fewer model modes than measured modes in condition " + dataset_.conditions[c].name;
+  std::vector<const Mode*> modes;
+  for (const Mode& mode : solution.modes) modes.push_back(&mode);
+  std::vector<int> local;
+  std::vector<PairedBy> by;
+  if (!PairModes(measured, modes, options_.shape_convention, &local, &by, why)) {
+    *why += " in condition " + dataset_.conditions[c].name;
     return false;
   }
-  Eigen::MatrixXd score(left.size(), free.size());
-  for (size_t a = 0; a < left.size(); ++a) {
-    const MeasuredMode& m = measured[left[a]];
-    for (size_t b = 0; b < free.size(); ++b) {
-      const Mode& mode = modes[free[b]];
-      score(a, b) = -std::abs(std::log(mode.frequency_hz / m.frequency_hz)) -
-                    (mode.plane() == LabelPlane(m.label) ? 0 : 100);
-    }
-  }
-  const std::vector<int> pick = AssignMaxScore(score);
-  if (!Assigned(pick, c, why)) return false;
-  for (size_t a = 0; a < left.size(); ++a) (*pairs)[left[a]] = free[pick[a]];
+  for (size_t a = 0; a < index.size(); ++a) (*pairs)[index[a]] = local[a];
   return true;
-}
-
-bool ModalResiduals::Assigned(const std::vector<int>& pick, int c, std::string* why) const {
-  if (std::find(pick.begin(), pick.end(), -1) == pick.end()) return true;
-  *why = "the measured modes of condition " + dataset_.conditions[c].name +
-         " cannot be paired one to one with the model's (a score is not finite)";
-  return false;
 }
 
 namespace {

@@ -122,11 +122,10 @@ class ModalResiduals {
   // Condition c's rows from its model solution and, where dr is not empty,
   // their derivatives with respect to each catalogue parameter.
   bool Rows(int c, const ModalSolution& solution, double* r, Eigen::Ref<RowMatrix> dr) const;
-  // Pairs the measured modes of condition c with `solution`'s.
+  // Pairs the measured modes of condition c with `solution`'s
+  // (datasets/pairing.h).
   bool PairCondition(int c, const ModalSolution& solution, std::vector<int>* pairs,
                      std::string* why) const;
-  // Whether an assignment paired every row; else says so in `why`.
-  bool Assigned(const std::vector<int>& pick, int c, std::string* why) const;
 
   std::vector<Slot> slots_;
   std::vector<PriorTerm> priors_;

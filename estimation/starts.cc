@@ -12,10 +12,6 @@ namespace ringid {
 namespace internal {
 namespace {
 
-// A parameter moves with a label's misfit when a factor 2 in it moves that
-// label's frequency (damping ratio) by more than about 3.5 %.
-constexpr double kOwnership = 0.05;
-constexpr int kRounds = 8;
 const double kMaxStep = std::log(4.0);
 constexpr int kDamperRepairs = 4;
 
@@ -57,7 +53,7 @@ Eigen::VectorXd MatchFrequencies(const ModalResiduals& residuals, const Eigen::V
                                  const Box& box) {
   const ParameterSetup& setup = residuals.setup();
   Eigen::VectorXd x = x0;
-  for (int round = 0; round < kRounds; ++round) {
+  for (int round = 0; round < kMatchRounds; ++round) {
     const std::vector<LogRow> rows = LogRows(residuals, x);
     if (rows.empty()) break;
     double worst = 0;

@@ -24,6 +24,13 @@ StartAgreement AssessStarts(const ParameterSetup& setup,
                             const std::vector<Eigen::VectorXd>& ends);
 
 
+// MatchFrequencies' figures (docs/development.md, which a test keeps saying
+// them): a parameter moves with a label's misfit when a factor 2 in it moves
+// that label's frequency (damping ratio) by more than about 3.5 %; at most
+// kMatchRounds rounds.
+inline constexpr double kOwnership = 0.05;
+inline constexpr int kMatchRounds = 8;
+
 // x0 with every free stiffness (IsStiffness) moved so that the measured modes
 // get their measured frequencies, and with measured damping ratios every
 // free sidewall damper likewise: the closed form f^2 ~ k a tire engineer
@@ -31,7 +38,7 @@ StartAgreement AssessStarts(const ParameterSetup& setup,
 // Each parameter belongs to the measured label whose frequency (damping
 // ratio) it moves most, at least kOwnership in d log f / d log p; the
 // parameters of one label move by one common log step, the least-squares
-// step of that label's log misfit. Eight rounds at most, each step at most a
+// step of that label's log misfit. kMatchRounds rounds at most, each step at most a
 // factor 4, clipped to the box; x0 itself where the model cannot be solved.
 Eigen::VectorXd MatchFrequencies(const ModalResiduals& residuals, const Eigen::VectorXd& x0,
                                  const Box& box);

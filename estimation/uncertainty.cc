@@ -1,6 +1,7 @@
 #include "estimation/uncertainty.h"
 
 #include <cmath>
+#include <iomanip>
 #include <memory>
 #include <limits>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
+#include "estimation/statistics.h"
 #include "estimation/structure.h"
 
 namespace ringid {
@@ -23,6 +25,12 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
     return true;
   }
   return false;
+}
+
+std::pair<double, double> UncertaintyOptions::PracticalBand(bool fitted_in_log) const {
+  const double half = kNormal95 * practical_relative_std;
+  if (fitted_in_log) return {std::exp(-half), std::exp(half)};
+  return {1 - half, 1 + half};
 }
 
 namespace internal {
@@ -164,8 +172,10 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                         : u.std[i] / std::max(std::abs(x[i]), 1e-300);
     if (relative > options.practical_relative_std) {
       u.classes[i] = Identifiability::kPracticallyNo;
-      why << "determined, but its relative standard deviation " << relative
-          << " makes the 95 % interval wider than a factor of 2";
+      const auto [low, high] = options.PracticalBand(setup.is_log(i));
+      why << "determined, but its relative standard deviation " << relative << " is above "
+          << options.practical_relative_std << ": its 95 % interval reaches beyond "
+          << std::setprecision(3) << low << "-" << high << " times its value";
     } else {
       u.classes[i] = Identifiability::kYes;
       why << "relative standard deviation " << relative;

@@ -10,7 +10,8 @@ double LugOrderHz(int order, int lugs_per_revolution, double r_e0, double speed_
 }
 
 std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Parameters& p,
-                                          int lugs_per_revolution, const std::vector<double>& speeds) {
+                                          int lugs_per_revolution, const std::vector<double>& speeds,
+                                          int max_order) {
   std::vector<CriticalSpeed> out;
   if (lugs_per_revolution <= 0 || speeds.size() < 2) return out;
   const double r = p[Param::r_e0];
@@ -26,9 +27,9 @@ std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Paramet
     if (v > 0) slowest = std::min(slowest, v);
   }
   if (!std::isfinite(slowest)) return out;
-  // At most kMaxOrders: a slowest speed near 0 would ask for millions.
+  // At most max_order: a slowest speed near 0 would ask for millions.
   const double needed = std::ceil(highest / LugOrderHz(1, lugs_per_revolution, r, slowest));
-  const int orders = needed < kMaxOrders ? static_cast<int>(needed) : kMaxOrders;
+  const int orders = needed < max_order ? static_cast<int>(needed) : max_order;
   // f_label(V) - f_order(V); NaN where the label has no oscillating mode.
   auto gap = [&](const ModalSolution& s, ModeLabel label, int k, double v) {
     const Mode* m = s.ok ? s.Find(label) : nullptr;

@@ -34,10 +34,14 @@ double LugOrderHz(int order, int lugs_per_revolution, double r_e0, double speed_
 // (ascending), found where their difference changes sign and refined by
 // bisection to 1e-6 of the interval, ordered by speed. The orders tried are
 // those that reach the highest mode frequency within the speeds, at most
-// kMaxOrders (a slowest speed near 0 asks for more).
-inline constexpr int kMaxOrders = 200;
+// max_order (a slowest speed near 0 asks for hundreds: order k meets a mode
+// f at V = 2 pi r_e0 f / (k lugs)).
 std::vector<CriticalSpeed> CriticalSpeeds(const ModalModel& model, const Parameters& p,
-                                          int lugs_per_revolution, const std::vector<double>& speeds);
+                                          int lugs_per_revolution, const std::vector<double>& speeds,
+                                          int max_order);
+// The largest max_order: it bounds the work (a bisection per order, mode and
+// interval between speeds).
+inline constexpr int kMaxOrders = 200;
 
 }  // namespace ringid
 

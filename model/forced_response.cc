@@ -1,5 +1,6 @@
 #include "model/forced_response.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
@@ -110,6 +111,15 @@ bool AxleResponse(const RigidRingModel& model, const Parameters& p, double speed
     return false;
   }
   return true;
+}
+
+double ModelValidBelowHz(const RigidRingModel& model, const Parameters& p) {
+  const ModalSolution s = model.Solve(p);
+  double highest = 0;
+  for (const Mode& m : s.modes) {
+    if (LabelPlane(m.label) != Plane::kHub) highest = std::max(highest, m.frequency_hz);
+  }
+  return s.ok && highest > 0 ? kModelRangeFactor * highest : NAN;
 }
 
 }  // namespace ringid

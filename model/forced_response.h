@@ -36,6 +36,14 @@ std::vector<int> ActiveDofs(const MechanicalSystem& s);
 bool AxleResponse(const RigidRingModel& model, const Parameters& p, double speed_m_s,
                   double frequency_hz, AxleResponseMatrix* H, std::string* why);
 
+// The rigid ring moves the belt as a whole; above its modes the belt's
+// bending modes, which it lacks, take over. It is taken to hold below
+// kModelRangeFactor times the highest of the tire's standing modes under p
+// (the hub's aside): the rule and why, docs/forces.md §3. NaN where the
+// model cannot be solved.
+inline constexpr double kModelRangeFactor = 1.5;
+double ModelValidBelowHz(const RigidRingModel& model, const Parameters& p);
+
 }  // namespace ringid
 
 #endif  // RINGID_MODEL_FORCED_RESPONSE_H_

@@ -41,6 +41,23 @@ Parameters::Parameters() {
 
 bool Parameters::IsSet(Param p) const { return std::isfinite((*this)[p]); }
 
+double SidewallFrequencyHz(const SidewallElement& e, const Parameters& p) {
+  return std::sqrt(p[e.stiffness] / p[e.inertia]) / (2 * M_PI);
+}
+
+double SidewallDampingRatio(const SidewallElement& e, const Parameters& p) {
+  return p[e.damper] / (2 * std::sqrt(p[e.stiffness] * p[e.inertia]));
+}
+
+double SidewallStiffness(const SidewallElement& e, double hz, const Parameters& p) {
+  const double w = 2 * M_PI * hz;
+  return p[e.inertia] * (w * w);
+}
+
+double SidewallDamper(const SidewallElement& e, double zeta, const Parameters& p) {
+  return 2 * zeta * std::sqrt(p[e.stiffness] * p[e.inertia]);
+}
+
 ParameterArray<ParameterJet> Seeded(const Parameters& p) {
   ParameterArray<ParameterJet> q;
   for (int i = 0; i < kNumParams; ++i) q[ParamAt(i)] = ParameterJet(p[ParamAt(i)], i);

@@ -86,13 +86,36 @@ struct EnumNames<Param> {
 inline const char* ParamName(Param p) { return ToString(p); }
 inline std::optional<Param> ParseParam(const std::string& name) { return FromString<Param>(name); }
 inline Param ParamAt(int i) { return static_cast<Param>(i); }
+
+// Each sidewall spring of the belt, its damper and the belt inertia they carry
+// (docs/model.md): one degree of freedom of the belt on a held rim without
+// road contact. The one pairing that the plausibility rules, a .tir's FREQ_*
+// and DAMP_* keys (datasets/tir_parameters.cc) and the example tire use.
+struct SidewallElement {
+  const char* direction;  // the belt's coordinate
+  Param stiffness;
+  Param damper;
+  Param inertia;
+};
+inline constexpr std::array<SidewallElement, 6> kSidewallElements = {{
+    {"x", Param::k_bx, Param::c_bx, Param::m_b},
+    {"z", Param::k_bz, Param::c_bz, Param::m_b},
+    {"theta", Param::k_btheta, Param::c_btheta, Param::I_by},
+    {"y", Param::k_by, Param::c_by, Param::m_b},
+    {"gamma", Param::k_bgamma, Param::c_bgamma, Param::I_bx},
+    {"psi", Param::k_bpsi, Param::c_bpsi, Param::I_bz},
+}};
+// The element whose stiffness or damper `p` is; nullptr for any other parameter.
+inline const SidewallElement* SidewallOf(Param p) {
+  for (const SidewallElement& e : kSidewallElements) {
+    if (e.stiffness == p || e.damper == p) return &e;
+  }
+  return nullptr;
+}
 // The sidewall dampers c_b* (the rest are stiffnesses, inertias and lengths).
 inline bool IsDamping(Param p) {
-  switch (p) {
-    case Param::c_bx: case Param::c_bz: case Param::c_btheta:
-    case Param::c_by: case Param::c_bgamma: case Param::c_bpsi: return true;
-    default: return false;
-  }
+  const SidewallElement* e = SidewallOf(p);
+  return e && e->damper == p;
 }
 
 // The positive stiffnesses of springs and contact slips (k_b*, k_cz, K_c*):
@@ -118,6 +141,15 @@ class Parameters {
  private:
   std::array<double, kNumParams> v_;
 };
+
+// Sidewall element e of p alone: its undamped frequency sqrt(k / m) / (2 pi)
+// (Hz) and damping ratio c / (2 sqrt(k m)); the stiffness that gives it
+// frequency `hz` on its inertia, and the damper that gives it ratio `zeta` on
+// its stiffness and inertia.
+double SidewallFrequencyHz(const SidewallElement& e, const Parameters& p);
+double SidewallDampingRatio(const SidewallElement& e, const Parameters& p);
+double SidewallStiffness(const SidewallElement& e, double hz, const Parameters& p);
+double SidewallDamper(const SidewallElement& e, double zeta, const Parameters& p);
 
 // A scalar carrying the derivatives with respect to every parameter.
 using ParameterJet = ceres::Jet<double, kNumParams>;

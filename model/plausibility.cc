@@ -45,24 +45,29 @@ const char kRelaxationWhy[] =
     "than any contact patch.";
 
 // The one-DOF damping ratio c / (2 sqrt(k m)) of a sidewall spring and damper
-// on the inertia it carries must not exceed kMaxDampingRatio.
-constexpr double kMaxDampingRatio = 0.5;
-PlausibilityRule DampingRatio(std::string id, Param c, Param k, Param m) {
+// on the inertia it carries must not exceed kMaxPlausibleDampingRatio: a
+// warning on a plausible tire, not the (0, 1) a measured ratio must lie in
+// (datasets/dataset.h).
+constexpr double kMaxPlausibleDampingRatio = 0.5;
+PlausibilityRule DampingRatio(const SidewallElement& e) {
+  const Param c = e.damper, k = e.stiffness, m = e.inertia;
   const std::string ratio = Name(c) + " / (2 sqrt(" + Name(k) + " " + Name(m) + "))";
   auto check = [=](const Parameters& p) -> std::string {
-    const double zeta = p[c] / (2 * std::sqrt(p[k] * p[m]));
-    if (!std::isfinite(zeta) || zeta <= kMaxDampingRatio) return "";  // signs: the loader's job
+    const double zeta = SidewallDampingRatio(e, p);
+    // Signs are the loader's job.
+    if (!std::isfinite(zeta) || zeta <= kMaxPlausibleDampingRatio) return "";
     return ratio + " = " + Num(zeta) + " (" + Value(p, c) + ", " + Value(p, k) + ", " +
-           Value(p, m) + ") is above " + Num(kMaxDampingRatio) +
+           Value(p, m) + ") is above " + Num(kMaxPlausibleDampingRatio) +
            "; the sidewall modes of a tire are lightly damped";
   };
-  return {std::move(id),
+  return {std::string("damping_ratio_") + e.direction,
           {c, k, m},
-          ratio + " ≤ " + Num(kMaxDampingRatio),
+          ratio + " ≤ " + Num(kMaxPlausibleDampingRatio),
           "The approximate modal damping ratio of this sidewall spring and damper on the inertia "
           "it carries (coupling and contact ignored). Modal tests of tires typically find damping "
-          "ratios of a few per cent up to about 0.1 (e.g. Zegelaar 1998); above 0.5 a mode "
-          "shows hardly any resonance peak, so a modal test would barely find it.",
+          "ratios of a few per cent up to about 0.1 (e.g. Zegelaar 1998); above " +
+              Num(kMaxPlausibleDampingRatio) +
+              " a mode shows hardly any resonance peak, so a modal test would barely find it.",
           check};
 }
 
@@ -156,11 +161,10 @@ PlausibilityRule InertiaXVsZ() {
           check};
 }
 
-}  // namespace
-
-const std::vector<PlausibilityRule>& PlausibilityRules() {
+// Every rule, in the order of docs/plausibility.md.
+std::vector<PlausibilityRule> MakeRules() {
   using P = Param;
-  static const std::vector<PlausibilityRule> kPlausibilityRules = {
+  std::vector<PlausibilityRule> rules = {
       Range("belt_mass_range", P::m_b, 1, 100, "the belt mass of a car to truck tire",
             "A car tire's belt (tread and belt plies, without sidewalls and beads) is typically "
             "several kg, a truck tire's some tens of kg (Zegelaar 1998, Maurice 2000)."),
@@ -177,19 +181,21 @@ const std::vector<PlausibilityRule>& PlausibilityRules() {
             "At small slip the pneumatic trail is a fraction of the contact length, typically "
             "a few centimetres for car tires and somewhat more for trucks (Pacejka, Tire and "
             "Vehicle Dynamics)."),
-      DampingRatio("damping_ratio_x", P::c_bx, P::k_bx, P::m_b),
-      DampingRatio("damping_ratio_z", P::c_bz, P::k_bz, P::m_b),
-      DampingRatio("damping_ratio_theta", P::c_btheta, P::k_btheta, P::I_by),
-      DampingRatio("damping_ratio_y", P::c_by, P::k_by, P::m_b),
-      DampingRatio("damping_ratio_gamma", P::c_bgamma, P::k_bgamma, P::I_bx),
-      DampingRatio("damping_ratio_psi", P::c_bpsi, P::k_bpsi, P::I_bz),
-      RingInertia("belt_inertia_y_vs_ring", P::I_by, 0.5, 1.5, "m_b r_e0^2"),
-      RingInertia("belt_inertia_x_vs_ring", P::I_bx, 0.25, 0.75, "m_b r_e0^2 / 2"),
-      RingInertia("belt_inertia_z_vs_ring", P::I_bz, 0.25, 0.75, "m_b r_e0^2 / 2"),
-      InertiaXVsZ(),
-      SlipStiffnessVsLoad("longitudinal_slip_stiffness_vs_load", P::K_cx),
-      SlipStiffnessVsLoad("lateral_slip_stiffness_vs_load", P::K_cy),
   };
+  for (const SidewallElement& e : kSidewallElements) rules.push_back(DampingRatio(e));
+  rules.push_back(RingInertia("belt_inertia_y_vs_ring", P::I_by, 0.5, 1.5, "m_b r_e0^2"));
+  rules.push_back(RingInertia("belt_inertia_x_vs_ring", P::I_bx, 0.25, 0.75, "m_b r_e0^2 / 2"));
+  rules.push_back(RingInertia("belt_inertia_z_vs_ring", P::I_bz, 0.25, 0.75, "m_b r_e0^2 / 2"));
+  rules.push_back(InertiaXVsZ());
+  rules.push_back(SlipStiffnessVsLoad("longitudinal_slip_stiffness_vs_load", P::K_cx));
+  rules.push_back(SlipStiffnessVsLoad("lateral_slip_stiffness_vs_load", P::K_cy));
+  return rules;
+}
+
+}  // namespace
+
+const std::vector<PlausibilityRule>& PlausibilityRules() {
+  static const std::vector<PlausibilityRule> kPlausibilityRules = MakeRules();
   return kPlausibilityRules;
 }
 

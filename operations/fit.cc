@@ -10,6 +10,10 @@ bool FitOptionsOf(const FitSettings& s, int jobs, IdentifyOptions* o, std::strin
   *o = IdentifyOptions{};
   o->method = s.method;
   o->starts = s.starts;
+  if (s.max_iterations < 1) {
+    *error = "--max_iterations: must be at least 1";
+    return false;
+  }
   o->max_iterations = s.max_iterations;
   o->seed = static_cast<unsigned>(s.seed);
   o->residuals.frequency_weighting = s.weighting;

@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "datasets/file_kind.h"
 #include "datasets/parameter_files.h"
 #include "datasets/tir_parameters.h"
 #include "operations/model_parameters.h"
@@ -15,7 +16,8 @@
 namespace ringid {
 
 bool ReadForceParameters(const std::string& path, const ParameterValues& set,
-                         ForceParameters* fp, InputError* error) {
+                         ForceParameters* fp, InputError* error,
+                         std::vector<std::string>* notes) {
   std::string text;
   Json json;
   LoadError load;
@@ -23,7 +25,8 @@ bool ReadForceParameters(const std::string& path, const ParameterValues& set,
     *error = InputError::Of(load);
     return false;
   }
-  if (ParseJsonInput(text, &json, &load) && json.is_object() && json.contains("report")) {
+  if (ParseJsonInput(text, &json, &load) && SniffJson(json).kind == FileKind::kReport) {
+    if (!NoSetOverFit(set, path, error)) return false;
     IdentifyReport report;
     std::string why;
     if (!ReadReport(json, &report, &why)) {
@@ -40,15 +43,11 @@ bool ReadForceParameters(const std::string& path, const ParameterValues& set,
       return false;
     }
     *fp = ForceParameters::From(report.body.result);
-    if (!SetOverFit(set, path, fp, &why)) {
-      *error = InputError::Option(why);
-      return false;
-    }
     return true;
   }
   *fp = ForceParameters{};
   load = LoadError{};
-  if (!LoadParameters(path, set, &fp->shared, &load)) {
+  if (!LoadParameters(path, set, &fp->shared, &load, notes)) {
     *error = InputError::Of(load);
     return false;
   }
@@ -56,26 +55,17 @@ bool ReadForceParameters(const std::string& path, const ParameterValues& set,
   return true;
 }
 
-bool SetOverFit(const ParameterValues& set, const std::string& source, ForceParameters* fp,
-                std::string* error) {
-  for (const auto& [q, v] : set) {
-    for (const ForceParameters::Coordinate& c : fp->coordinates) {
-      if (c.key.param == q || std::find(c.tied.begin(), c.tied.end(), q) != c.tied.end()) {
-        *error = std::string("--set: ") + ParamName(q) + " was fitted by " + source +
-                 " (its covariance holds it); give its parameter set (--save_parameters) to "
-                 "set it";
-        return false;
-      }
-    }
-    fp->shared[q] = v;
-    for (auto& [name, values] : fp->by_condition) values[q] = v;
-  }
-  return true;
+bool NoSetOverFit(const ParameterValues& set, const std::string& source, InputError* error) {
+  if (set.empty()) return true;
+  *error = InputError::Option("--set: not over an identify report (" + source +
+                              "): its values carry the fit's covariance; give a parameter set "
+                              "or a .tir");
+  return false;
 }
 
 bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data, const ForcesSettings& s,
               const std::string& parameters, const std::string& dataset, ForcesResult* r,
-              InputError* error) {
+              InputError* error, const std::vector<std::string>& notes) {
   const RigidRingModel model(s.effects);
   // The forces need the model that was fitted: an effect the parameters move
   // off its baseline (0; m_a, the hub's mass, has none) asks for that effect.
@@ -102,7 +92,7 @@ bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data, const Forc
       if (values.IsSet(missing[0])) fitted += (fitted.empty() ? "" : ", ") + name;
     }
     if (fitted.empty()) {
-      *error = MissingParameters(parameters, missing);
+      *error = MissingParameters(parameters, missing, notes);
       return false;
     }
     const std::string q = ParamName(missing[0]);

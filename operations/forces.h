@@ -4,6 +4,7 @@
 #define RINGID_OPERATIONS_FORCES_H_
 
 #include <string>
+#include <vector>
 
 #include "datasets/dataset.h"
 #include "datasets/response_dataset.h"
@@ -19,19 +20,21 @@ inline constexpr const char* kParameterSetForces =
 
 // The parameters of an identify report (its values per condition and its
 // covariance) or of a parameter set or a .tir (its values alone, `set` over
-// them).
+// them, as LoadParameters, whose `notes` say where a .tir's values came
+// from). `set` over a report is refused (NoSetOverFit).
 bool ReadForceParameters(const std::string& path, const ParameterValues& set,
-                         ForceParameters* fp, InputError* error);
-// `set` over a fit's values: only over values it did not fit, whose
-// covariance would not hold them (`source` names the fit).
-bool SetOverFit(const ParameterValues& set, const std::string& source, ForceParameters* fp,
-                std::string* error);
+                         ForceParameters* fp, InputError* error,
+                         std::vector<std::string>* notes = nullptr);
+// `set` over a fit's values (`source` names the fit): refused, its values
+// carry the fit's covariance.
+bool NoSetOverFit(const ParameterValues& set, const std::string& source, InputError* error);
 
 // The forces of `data` (read from `dataset`) under fp (from `parameters`,
-// s.set over it already) and s.effects; false with the error.
+// s.set over it already, read with `notes`) and s.effects; false with the
+// error.
 bool ForcesOf(const ForceParameters& fp, const ResponseDataset& data, const ForcesSettings& s,
               const std::string& parameters, const std::string& dataset, ForcesResult* r,
-              InputError* error);
+              InputError* error, const std::vector<std::string>& notes = {});
 
 // The axle's response to the lug forces of s.lug_forces (read into
 // `spectrum`) at s.speeds (each > 0) under the parameter set at `parameters`

@@ -94,7 +94,8 @@ struct FitSettings {
              "number of starts: the dataset's initial point, the point matching the measured "
              "frequencies, and points scattered log-uniformly around that");
     a->Visit("max_iterations", &max_iterations,
-             "Levenberg-Marquardt iterations per start before a fit stops as not converged");
+             "Levenberg-Marquardt iterations per start (and per profile refit) before it stops "
+             "unconverged");
     option::Seed(a, &seed);
     a->Visit("weighting", &weighting,
              "frequency residuals weighted by their sigma, or relative to the frequency (eqs. "
@@ -139,10 +140,9 @@ struct PredictSettings {
   std::vector<const Effect*> effects;
   NumberList speeds{{0}, false, "m/s"};
   int lugs_per_revolution = 0;
-  // Order k meets a mode of f Hz at 2 pi r_e0 f / (k lugs): for five lugs
-  // and r_e0 = 0.3 m, order 12 meets a 100 Hz mode at 3 m/s already; higher
-  // orders only crowd the slowest speeds (issue 34).
-  int max_order = 12;
+  // The orders a lug-force measurement reads (docs/forces.md); at most
+  // kMaxOrders (model/campbell.h).
+  int max_order = 5;
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -153,7 +153,10 @@ struct PredictSettings {
              "predict: lug impacts per wheel turn; with --speeds, the lug orders meet the modes "
              "at the critical speeds listed (0: none)");
     a->Visit("max_order", &max_order,
-             "predict: the highest lug order whose critical speeds are listed");
+             "predict --lugs_per_revolution: the highest lug order whose critical speeds are "
+             "listed (at most 200). The default keeps the orders a lug-force measurement reads "
+             "(docs/forces.md) and a list of a few dozen lines: order k meets a mode of f Hz at "
+             "2 pi r_e0 f / (k lugs) m/s, so slow speeds alone would add hundreds of orders");
   }
 };
 

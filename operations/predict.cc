@@ -16,8 +16,8 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, const PredictSet
     *error = "--lugs_per_revolution: must not be negative";
     return false;
   }
-  if (s.max_order < 1) {
-    *error = "--max_order: must be at least 1";
+  if (s.max_order < 1 || s.max_order > kMaxOrders) {
+    *error = "--max_order: must lie in [1, " + std::to_string(kMaxOrders) + "]";
     return false;
   }
   std::vector<double> speeds = s.speeds.values;
@@ -39,11 +39,8 @@ bool AtSpeeds(const RigidRingModel& model, const Parameters& p, const PredictSet
   if (s.lugs_per_revolution > 0) {
     body->lugs_per_revolution = s.lugs_per_revolution;
     body->r_e0 = p[Param::r_e0];
-    std::vector<CriticalSpeed> critical = CriticalSpeeds(model, p, s.lugs_per_revolution, speeds);
-    critical.erase(std::remove_if(critical.begin(), critical.end(),
-                                  [&](const CriticalSpeed& c) { return c.order > s.max_order; }),
-                   critical.end());
-    body->critical_speeds = critical;
+    body->max_order = s.max_order;
+    body->critical_speeds = CriticalSpeeds(model, p, s.lugs_per_revolution, speeds, s.max_order);
   }
   return true;
 }

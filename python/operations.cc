@@ -202,7 +202,6 @@ std::shared_ptr<Held<PredictReport>> PredictPy(py::handle parameters, py::handle
 ForceParameters ForceParametersOf(py::handle parameters, const ForcesSettings& s,
                                   std::string* source, std::string* path) {
   ForceParameters fp;
-  std::string error;
   *source = "<identify result>";
   if (py::isinstance<IdentifyHeld>(parameters)) {
     const IdentifyResult& r = parameters.cast<std::shared_ptr<IdentifyHeld>>()->report.body.result;
@@ -210,8 +209,9 @@ ForceParameters ForceParametersOf(py::handle parameters, const ForcesSettings& s
       throw Error{*source + ": status: the identification did not succeed", *source, "status",
                   "the identification did not succeed; its values are no estimate"};
     }
+    InputError bad;
+    if (!NoSetOverFit(s.set, *source, &bad)) throw Error::Of(bad);
     fp = ForceParameters::From(r);
-    if (!SetOverFit(s.set, *source, &fp, &error)) throw Error::Usage(error);
   } else if (py::isinstance<LoadedParameters>(parameters)) {
     const auto p = parameters.cast<std::shared_ptr<LoadedParameters>>();
     *source = p->Name();

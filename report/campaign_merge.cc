@@ -34,17 +34,31 @@ bool ReadSummary(const std::string& path, CampaignReport* report, std::string* e
 
 }  // namespace
 
+std::string CampaignSummaryName(int index, int count) {
+  const std::string stem = kCampaignSummaryStem;
+  if (count == 1) return stem + ".json";
+  return stem + "." + std::to_string(index) + "-of-" + std::to_string(count) + ".json";
+}
+
+bool ParseShardSummaryName(const std::string& file, int* index, int* count) {
+  static const std::regex name(std::string(kCampaignSummaryStem) +
+                               "\\.([0-9]{1,6})-of-([0-9]{1,6})\\.json");
+  std::smatch m;
+  if (!std::regex_match(file, m, name)) return false;
+  *index = std::stoi(m[1]);
+  *count = std::stoi(m[2]);
+  return true;
+}
+
 bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* error,
                  std::vector<std::string>* shard_paths) {
-  const std::regex name("campaign\\.([0-9]{1,6})-of-([0-9]{1,6})\\.json");
   std::map<int, std::string> paths;  // by shard index
   std::error_code ec;
   int count = 0;
   for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    std::smatch m;
     const std::string file = it->path().filename().string();
-    if (!std::regex_match(file, m, name)) continue;
-    const int index = std::stoi(m[1]), of = std::stoi(m[2]);
+    int index = 0, of = 0;
+    if (!ParseShardSummaryName(file, &index, &of)) continue;
     if (index >= of) {
       *error = dir + ": " + file + " names no shard (I/N needs 0 <= I < N)";
       return false;
@@ -67,7 +81,7 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
     return false;
   }
   if (paths.empty()) {
-    *error = dir + ": no shard summary (campaign.I-of-N.json) to merge";
+    *error = dir + ": no shard summary (" + kCampaignSummaryStem + ".I-of-N.json) to merge";
     return false;
   }
   std::map<std::string, CampaignRow> rows;
@@ -112,8 +126,7 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
   int n_missing = 0;
   for (int i = 0; i < count; ++i) {
     if (paths.count(i)) continue;
-    missing += (n_missing++ ? ", " : "") + ("campaign." + std::to_string(i) + "-of-" +
-                                             std::to_string(count) + ".json");
+    missing += (n_missing++ ? ", " : "") + CampaignSummaryName(i, count);
   }
   if (n_missing) {
     *error = dir + ": " + std::to_string(n_missing) + " of " + std::to_string(count) +

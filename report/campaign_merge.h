@@ -9,6 +9,14 @@
 
 namespace ringid {
 
+// The one naming of a campaign's summaries in its directory: the stem,
+// `campaign.json` for a whole campaign (count 1) and `campaign.I-of-N.json`
+// for shard I of N; a dataset's report may not take a name that starts so.
+inline constexpr char kCampaignSummaryStem[] = "campaign";
+std::string CampaignSummaryName(int index, int count);
+// I and N of a shard summary's file name (no directory); false for any other.
+bool ParseShardSummaryName(const std::string& file, int* index, int* count);
+
 // The shard summaries campaign.I-of-N.json in `dir`, checked to be the
 // shards of one campaign (same datasets, options, command and N; no dataset
 // twice, no shard missing: named), as one summary in the whole list's order

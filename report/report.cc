@@ -91,6 +91,7 @@ std::string CampaignTable(const CampaignBody& c) {
     }
     table += " | " + number(r.seconds, "%.3g") + " |\n";
   }
+  if (!identify) table += std::string("\n") + kCampaignGapMeaning + "\n";
   return table;
 }
 
@@ -119,7 +120,7 @@ std::string PredictBody::FullReport() const {
   std::string text;
   char line[160];
   for (const std::string& note : parameter_notes.value_or(std::vector<std::string>{})) {
-    text += "parameters: " + note + "\n";
+    text += kParameterNotePrefix + note + "\n";
   }
   if (parameter_notes && !parameter_notes->empty()) text += "\n";
   std::snprintf(line, sizeof line, "%-22s %-13s %10s %8s\n", "mode", "plane", "Hz", "zeta");
@@ -158,8 +159,9 @@ std::string PredictBody::FullReport() const {
   if (conditions) table(*conditions, "\nmodes by condition (Hz):\n", true);
   if (speeds) table(*speeds, "\nmodes by speed (Hz):\n", false);
   if (critical_speeds) {
-    std::snprintf(line, sizeof line, "\ncritical speeds (%d lugs per revolution):\n",
-                  lugs_per_revolution.value_or(0));
+    std::snprintf(line, sizeof line,
+                  "\ncritical speeds (%d lugs per revolution; orders 1 to %d, --max_order):\n",
+                  lugs_per_revolution.value_or(0), max_order.value_or(0));
     text += line;
     if (critical_speeds->empty()) text += "  none within the speeds given\n";
     for (const CriticalSpeed& c : *critical_speeds) {

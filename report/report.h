@@ -25,7 +25,7 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 5;
+inline constexpr int kReportSchemaVersion = 6;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
@@ -131,6 +131,10 @@ struct SpeedModes {
   }
 };
 
+// How a note on where the parameters came from is printed (predict, export,
+// import): a note, not an error ("ringid: ...").
+inline constexpr char kParameterNotePrefix[] = "parameters: ";
+
 struct PredictBody {
   Status status;
   std::vector<PredictedMode> modes;
@@ -140,6 +144,7 @@ struct PredictBody {
   std::optional<std::vector<SpeedModes>> speeds;
   std::optional<int> lugs_per_revolution;
   std::optional<double> r_e0;  // the orders' slope: k lugs V / (2 pi r_e0)
+  std::optional<int> max_order;  // the critical speeds are those of orders 1 to this
   std::optional<std::vector<CriticalSpeed>> critical_speeds;
   // With --dataset of several conditions: the modes of each (`modes` are the
   // first's).
@@ -159,6 +164,7 @@ struct PredictBody {
     a->VisitIfSet("speeds", &speeds);
     a->VisitIfSet("lugs_per_revolution", &lugs_per_revolution);
     a->VisitIfSet("r_e0", &r_e0);
+    a->VisitIfSet("max_order", &max_order);
     a->VisitIfSet("critical_speeds", &critical_speeds);
     a->VisitIfSet("conditions", &conditions);
     a->VisitIfSet("parameter_notes", &parameter_notes);
@@ -232,7 +238,15 @@ struct CampaignBody {
   }
 };
 
-// The campaign as a Markdown table, one row per dataset (shrink in %).
+// What a diagnose campaign's gap columns hold, under its table and in its
+// page's figure.
+inline constexpr char kCampaignGapMeaning[] =
+    "gap: chi-square in excess of its degrees of freedom, max(0, chi-square - dof), 0 for a fit "
+    "as good as the noise; before: the calibrated baseline's, after: with the effect of the "
+    "verdict added; shrink: 1 - after / before";
+
+// The campaign as a Markdown table, one row per dataset (shrink in %); a
+// diagnose campaign's with kCampaignGapMeaning under it.
 std::string CampaignTable(const CampaignBody& campaign);
 
 template <ReportKind K, class Body>

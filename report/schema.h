@@ -21,7 +21,10 @@ class SchemaWriter {
       : prefix_(std::move(prefix)), out_(out), of_(of) {}
 
   template <class T>
-  void Visit(const char* name, T*) {
+  void Visit(const char* name, T* value) {
+    if constexpr (std::is_same_v<T, std::string>) {
+      if (Format(name, *value)) return;
+    }
     Field<T>(name, "");
   }
   template <class T>
@@ -40,7 +43,10 @@ class SchemaWriter {
     fields(&group);
   }
   template <class T>
-  void Derived(const char* name, const T&) {
+  void Derived(const char* name, const T& value) {
+    if constexpr (std::is_same_v<T, std::string>) {
+      if (Format(name, value)) return;
+    }
     Field<T>(name, " (derived from the fields above, and checked against them when read)");
   }
 
@@ -111,6 +117,12 @@ class SchemaWriter {
   template <class K>
   static std::string ShortKey() {
     return std::is_enum_v<K> || !std::is_same_v<K, std::string> ? "name" : "key";
+  }
+  // An input file's `format`: the string to write, which its reader checks.
+  bool Format(const char* name, const std::string& value) {
+    if (of_ != Of::kInput || std::string(name) != "format" || value.empty()) return false;
+    Line(Path(name), "`\"" + value + "\"` (this string exactly)");
+    return true;
   }
   template <class T>
   void Field(const char* name, const std::string& note) {

@@ -5,11 +5,13 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "report/campaign_merge.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -76,6 +78,10 @@ TEST(CampaignTest, DiagnosisDoesNotDependOnJobs) {
                                "/data --output_dir=" + dir + "/out" + jobs + " --jobs=" + jobs);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "") << "progress goes to a terminal only";
+    // The text table says what its gap columns are, not only the page.
+    EXPECT_NE(r.out.find("gap before"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("chi-square in excess of its degrees of freedom"), std::string::npos)
+        << r.out;
   }
   for (int i = 0; i < 4; ++i) {
     const std::string name = "/case" + std::to_string(i) + ".json";
@@ -156,6 +162,60 @@ TEST(CampaignTest, BadCampaignFlagsAreRefused) {
   }
   EXPECT_EQ(Ringid("identify --dataset=/no/such/dir --output_dir=" + out).status, 2);
   EXPECT_FALSE(fs::exists(out));
+}
+
+
+// Without --keep_going a campaign stops on bad datasets, and names every one
+// of them (the first five and how many more) in its one line, so that one
+// run finds them all.
+TEST(CampaignTest, EveryBadDatasetIsNamedBeforeTheCampaignStops) {
+  const std::string dir = Scratch("all_bad");
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/data");
+  fs::copy_file(SourcePath("datasets/paper/table1.json"), dir + "/data/a.json");
+  const char* bad[] = {"b", "c", "d", "e", "f", "g", "h"};
+  for (const char* b : bad) {
+    std::ofstream(dir + "/data/" + b + ".json") << "{\"format\": \"ringid-modal-dataset/1\", \"name\": 3}";
+  }
+  fs::create_directories(dir + "/two");
+  fs::copy_file(dir + "/data/b.json", dir + "/two/b.json");
+  fs::copy_file(dir + "/data/c.json", dir + "/two/c.json");
+  fs::copy_file(dir + "/data/a.json", dir + "/two/a.json");
+  RunResult r = Ringid("identify --dataset=" + dir + "/two --output_dir=" + dir + "/out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("2 datasets cannot be used"), std::string::npos) << r.err;
+  for (const char* b : {"b", "c"}) {
+    EXPECT_NE(r.err.find(dir + "/two/" + b + ".json"), std::string::npos) << b << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+  r = Ringid("diagnose --dataset=" + dir + "/data --output_dir=" + dir + "/out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("7 datasets cannot be used"), std::string::npos) << r.err;
+  for (const char* b : {"b", "c", "d", "e", "f"}) {
+    EXPECT_NE(r.err.find(dir + "/data/" + b + ".json"), std::string::npos) << b << ": " << r.err;
+  }
+  EXPECT_EQ(r.err.find(dir + "/data/g.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("and 2 more"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+
+// One naming of the summaries, which the campaign writes by and merge reads
+// by: a shard's name read back is that shard, the whole campaign's is none.
+TEST(CampaignTest, TheSummaryNamesAreMadeAndReadByOneRule) {
+  EXPECT_EQ(ringid::CampaignSummaryName(0, 1), "campaign.json");
+  EXPECT_EQ(ringid::CampaignSummaryName(2, 5), "campaign.2-of-5.json");
+  for (const auto& [index, count] : {std::pair{0, 2}, {1, 2}, {7, 12}, {99, 100}}) {
+    int i = -1, n = -1;
+    ASSERT_TRUE(ringid::ParseShardSummaryName(ringid::CampaignSummaryName(index, count), &i, &n));
+    EXPECT_EQ(i, index);
+    EXPECT_EQ(n, count);
+  }
+  int i = 0, n = 0;
+  EXPECT_FALSE(ringid::ParseShardSummaryName("campaign.json", &i, &n));
+  EXPECT_FALSE(ringid::ParseShardSummaryName("campaign.1-of-2.json.tmp", &i, &n));
 }
 
 }  // namespace

@@ -4,12 +4,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iterator>
 #include <fstream>
 #include <map>
 #include <utility>
 #include <string>
+#include <vector>
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -22,6 +26,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/progress.h"
 #include "apps/reports.h"
 #include "datasets/synthetic.h"
 #include "datasets/tir.h"
@@ -596,6 +601,107 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
   }
 }
 
+// forces reads a .tir as predict does: with --set of the rest, the forces of
+// the full parameter set; without it, the line that asks for --set (the help
+// said only predict and export read a .tir, and forces had no --set).
+TEST(CliTest, ForcesReadsATirWithTheRestFromSet) {
+  const std::string car = Source("datasets/examples/car_tire.json");
+  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
+  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
+  ringid::Parameters full, from_tir;
+  ringid::LoadError e;
+  ASSERT_TRUE(ringid::LoadParameterSet(car, &full, &e)) << e.OneLine();
+  ASSERT_TRUE(ringid::LoadParameters(tir, {}, &from_tir, &e)) << e.OneLine();
+  const std::string of_set = Scratch("forces_of_set.json"), of_tir = Scratch("forces_of_tir.json");
+  RunResult r = Ringid("forces --parameters=" + car + " --dataset=" + response + " --output=" + of_set);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("forces --parameters=" + tir + " " + SetTheRest(from_tir, full) + " --dataset=" +
+             response + " --output=" + of_tir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json a = nlohmann::json::parse(ReadFile(of_set));
+  const nlohmann::json b = nlohmann::json::parse(ReadFile(of_tir));
+  ASSERT_EQ(a["conditions"].size(), 3u);
+  for (size_t c = 0; c < 3; ++c) {
+    for (size_t k = 0; k < a["conditions"][c]["orders"].size(); ++k) {
+      for (const char* f : {"F_x", "F_z", "F_y"}) {
+        const auto& x = a["conditions"][c]["orders"][k]["forces"][f];
+        const auto& y = b["conditions"][c]["orders"][k]["forces"][f];
+        const double scale = x["abs"].get<double>();
+        EXPECT_NEAR(y["re"].get<double>(), x["re"].get<double>(), 1e-9 * scale) << c << k << f;
+        EXPECT_NEAR(y["im"].get<double>(), x["im"].get<double>(), 1e-9 * scale) << c << k << f;
+      }
+    }
+  }
+  r = Ringid("forces --parameters=" + tir + " --dataset=" + response);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("tno_205_60R15_belt.tir: I_ay: missing (the model needs it; a .tir describes "
+                       "the tire, not the wheel"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("give --set=I_ay=VALUE"), std::string::npos) << r.err;
+  // --set over an identify report, whose values carry the fit's covariance: refused.
+  const std::string fit = Scratch("forces_tir_fit.json");
+  r = Ringid("identify --starts=1 --dataset=" + Source("datasets/paper/table1.json") +
+             " --output=" + fit);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = Ringid("forces --parameters=" + fit + " --set=I_ay=0.4 --dataset=" + response);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--set: not over an identify report"), std::string::npos) << r.err;
+}
+
+// The help names the commands whose --parameters reads a .tir, in one
+// sentence from the table of commands, in `ringid help` and in each
+// --help of a command taking --parameters; each command it names does read
+// one (it asks for what the belt-only .tir lacks) and simulate without
+// --lug_forces, which it does not name, does not.
+TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
+  const auto OneLine = [](std::string text) {  // the wrapped help as one line
+    for (size_t at; (at = text.find('\n')) != std::string::npos;) {
+      size_t end = at + 1;
+      while (end < text.size() && text[end] == ' ') ++end;
+      text.replace(at, end - at, " ");
+    }
+    return text;
+  };
+  const std::string sentence =
+      "--parameters of predict, simulate --lug_forces, export, import and forces also reads the "
+      "rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), what a .tir cannot hold given by "
+      "--set";
+  EXPECT_NE(OneLine(Ringid("help").out).find("a .tir: " + sentence + "."), std::string::npos);
+  for (const char* command : {"forces", "predict", "export", "import", "simulate"}) {
+    EXPECT_NE(OneLine(Ringid(std::string(command) + " --help").out).find(sentence),
+              std::string::npos)
+        << command;
+  }
+  EXPECT_NE(Ringid("forces --help").out.find("--set=TEXT"), std::string::npos);
+  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string lugs = Source("datasets/examples/car_tire_lug_forces.json");
+  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
+  const std::string lack = "tno_205_60R15_belt.tir: I_ay: missing";
+  for (const std::string& args :
+       {"predict --parameters=" + tir,
+        "simulate --parameters=" + tir + " --lug_forces=" + lugs + " --speeds=6 --output=" +
+            Scratch("tir_never.json"),
+        "forces --parameters=" + tir + " --dataset=" + response}) {
+    const RunResult r = Ringid(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.err.find(lack), std::string::npos) << args << ": " << r.err;
+  }
+  RunResult r = Ringid("export --parameters=" + tir + " --format=json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = Ringid("import --uff=" + Source("datasets/examples/car_tire_lab.uff") + " --map=" +
+             Source("datasets/examples/car_tire_lab_map.json") + " --parameters=" + tir +
+             " --output=" + Scratch("tir_import.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("parameters: no [VERTICAL] FNOMIN"), std::string::npos) << r.out;  // read
+  EXPECT_NE(r.err.find("parameter I_ay is not finite"), std::string::npos) << r.err;
+  r = Ringid("simulate --parameters=" + tir + " --output=" + Scratch("tir_sim.json") +
+             " --truth=" + Scratch("tir_sim_truth.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("tno_205_60R15_belt.tir: [0]: not valid JSON"), std::string::npos) << r.err;
+}
+
 // The template holds sigma_cx known, so identify classes K_cx yes only given
 // it; its report and its --save_parameters say so, and a .tir exported from
 // either marks K_cx as undetermined in its header, the value of a key it
@@ -1118,6 +1224,247 @@ TEST(CliTest, TheSuitesRunFromAnyDirectoryBuiltOrInstalled) {
   EXPECT_NE(ReadFile(out).find(prefix + "/share/ringid/datasets/paper"), std::string::npos)
       << ReadFile(out);
   std::filesystem::remove_all(prefix);
+}
+
+
+// identify and diagnose take a directory or a list of datasets as a
+// campaign, which needs --output_dir; without it that is said, not "not valid
+// JSON" of the directory. The other fitting commands say they read one file.
+TEST(CliTest, ADirectoryOrListWithoutOutputDirIsSaidAsACampaign) {
+  const std::string dir = Scratch("one_campaign");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/a.json");
+  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/b.json");
+  const std::string list = dir + "/a.json," + dir + "/b.json";
+  for (const std::string command : {"identify", "diagnose"}) {
+    for (const std::string& datasets : {dir, list}) {
+      const RunResult r = Ringid(command + " --dataset=" + datasets);
+      EXPECT_EQ(r.status, 2) << command << " " << datasets;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find("--dataset: " + datasets + " is a "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("campaign: give --output_dir=DIR"), std::string::npos) << r.err;
+    }
+  }
+  for (const std::string command : {"identifiability", "compare"}) {
+    const RunResult r = Ringid(command + " --dataset=" + dir);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.err.find("reads one dataset file"), std::string::npos) << r.err;
+  }
+}
+
+// A file of another kind given as a dataset is named as what it is.
+TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
+  const std::pair<std::string, std::string> cases[] = {
+      {Source("datasets/examples/car_tire_lab.uff"), "this is a UFF file, not a dataset; import"},
+      {Source("datasets/examples/tno_205_60R15_belt.tir"),
+       "this is an MF-Swift tire property file (.tir), not a dataset; use --parameters"},
+      {Source("datasets/examples/car_tire_lab_map.json"),
+       "this is a UFF map (ringid-uff-map/1), not a dataset; use import --map"},
+      {Source("datasets/examples/car_tire_lug_response.json"),
+       "this is a response dataset (ringid-lug-response/1), not a dataset"},
+  };
+  for (const auto& [file, words] : cases) {
+    const RunResult r = Ringid("identify --dataset=" + file);
+    EXPECT_EQ(r.status, 2) << file;
+    EXPECT_EQ(r.err.rfind("ringid: " + file + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+  }
+  // And a modal dataset where a response dataset belongs.
+  const RunResult r = Ringid("forces --parameters=" + Source("datasets/examples/car_tire.json") +
+                             " --dataset=" + Source("datasets/paper/table1.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("this is a modal dataset (ringid-modal-dataset/1), not a response dataset "
+                       "(ringid-lug-response/1)"),
+            std::string::npos)
+      << r.err;
+}
+
+// --max_iterations reaches every fitting command; a fit it cuts short says
+// "not converged" and what to try, and the same fit with the default
+// iterations converges (so the advice is right).
+TEST(CliTest, MaxIterationsIsAFlagAndNotConvergedSaysWhatToTry) {
+  const std::string table1 = Source("datasets/paper/table1.json");
+  RunResult r = Ringid("identify --starts=1 --max_iterations=2 --dataset=" + table1);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(lm): not converged"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warning: not converged: the best start used all its 2 "
+                       "Levenberg-Marquardt iterations (--max_iterations)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("--max_iterations=8"), std::string::npos) << r.out;
+  r = Ringid("identify --starts=1 --dataset=" + table1);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(lm): converged"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("not converged"), std::string::npos) << r.out;
+  for (const std::string command : {"identify", "identifiability", "compare", "diagnose"}) {
+    r = Ringid(command + " --max_iterations=0 --dataset=" + table1);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err, "ringid: --max_iterations: must be at least 1\n") << command;
+    r = Ringid(command + " --help");
+    EXPECT_NE(r.out.find("--max_iterations"), std::string::npos) << command;
+  }
+}
+
+// Notes on where the parameters came from are notes, as predict and import
+// print them ("parameters: ..."), not errors ("ringid: ...").
+TEST(CliTest, ExportPrintsItsNotesAsNotesNotErrors) {
+  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string out = Scratch("noted.json");
+  for (const std::string& to : {std::string(), " --output=" + out}) {
+    const RunResult r = Ringid("export --parameters=" + tno + " --set=k_cz=2e5 --format=json" + to);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string notes = to.empty() ? r.err : r.out;  // stdout is the file without --output
+    EXPECT_NE(notes.find("parameters: "), std::string::npos) << notes;
+    EXPECT_EQ(r.err.find("ringid: "), std::string::npos) << r.err;
+  }
+}
+
+// The terminal's parameter tables give each value's unit (the paper's Table
+// 2: N/m for the sidewall's translational stiffnesses, N m/rad for its
+// rotational ones, N s/m for its dampers, N for the slip stiffness, m for the
+// radii).
+TEST(CliTest, TheParameterTablesGiveUnits) {
+  const std::string dataset = Source("datasets/template.json");
+  const std::map<std::string, std::string> units = {
+      {"k_bx", "N/m"}, {"k_btheta", "N m/rad"}, {"c_bx", "N s/m"}, {"K_cx", "N"}, {"r_e0", "m"}};
+  for (const std::string command : {"identify", "identifiability"}) {
+    const RunResult r = Ringid(command + " --starts=1 --derivatives=analytic --dataset=" + dataset);
+    ASSERT_LE(r.status, 1) << r.err;
+    EXPECT_NE(r.out.find(" unit "), std::string::npos) << r.out;
+    for (const auto& [name, unit] : units) {
+      const size_t at = r.out.find("\n  " + name + " ");
+      ASSERT_NE(at, std::string::npos) << command << " " << name;
+      const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+      EXPECT_NE(line.find(" " + unit + " "), std::string::npos) << command << ": " << line;
+    }
+  }
+}
+
+// A delayed progress (kProgressAfterSeconds for a single run) draws nothing
+// before its time, then its line (redrawn while no step comes) and a last one;
+// one that ends sooner leaves nothing on the terminal.
+TEST(CliTest, ADelayedProgressShowsOnlyOnceItsTimeHasCome) {
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  const int terminal = ::open(ptsname(master), O_RDWR | O_NOCTTY);
+  ASSERT_GE(terminal, 0);
+  std::fflush(stderr);
+  const int saved = ::dup(2);
+  ::dup2(terminal, 2);  // Progress draws on stderr, when it is a terminal
+  const auto shown = [&] {
+    std::string text;
+    char buffer[4096];
+    pollfd p{master, POLLIN, 0};
+    while (::poll(&p, 1, 50) > 0) {
+      const ssize_t n = ::read(master, buffer, sizeof buffer);
+      if (n <= 0) break;
+      text.append(buffer, n);
+    }
+    return text;
+  };
+  {
+    ringid::Progress quick("quick", 0, 0.4);
+    quick.Set(1, 4);
+    quick.Set(4, 4);
+  }
+  const std::string after_quick = shown();
+  std::string early, late;
+  {
+    ringid::Progress slow("slow", 0, 0.4);
+    slow.Set(1, 4);
+    early = shown();
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));  // no step: the ticker draws
+    late = shown();
+    slow.Set(4, 4);
+  }
+  const std::string last = shown();
+  std::fflush(stderr);
+  ::dup2(saved, 2);
+  ::close(saved);
+  ::close(terminal);
+  ::close(master);
+  EXPECT_EQ(after_quick, "");
+  EXPECT_EQ(early, "");
+  EXPECT_NE(late.find("slow: 1/4"), std::string::npos) << late;
+  EXPECT_NE(last.find("slow: 4/4"), std::string::npos) << last;
+  EXPECT_NE(last.find(", took "), std::string::npos) << last;
+}
+
+// ringid `args` with its standard error on a pseudo-terminal and standard
+// output to a file; what the terminal showed, the exit status and seconds.
+std::string OnATerminal(const std::string& args, int* status, double* seconds) {
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  EXPECT_GE(master, 0);
+  EXPECT_EQ(grantpt(master), 0);
+  EXPECT_EQ(unlockpt(master), 0);
+  const std::string terminal = ptsname(master);
+  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
+                            args + " > " + Scratch("terminal_stdout.txt");
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 2, terminal.c_str(), O_RDWR, 0);
+  const char* argv[] = {"/bin/sh", "-c", shell.c_str(), nullptr};
+  const auto t0 = std::chrono::steady_clock::now();
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, "/bin/sh", &files, nullptr, const_cast<char**>(argv), environ), 0);
+  posix_spawn_file_actions_destroy(&files);
+  std::string shown;
+  char buffer[4096];
+  for (int raw = 0;;) {
+    pollfd p{master, POLLIN, 0};
+    if (::poll(&p, 1, 100) > 0) {
+      const ssize_t n = ::read(master, buffer, sizeof buffer);
+      if (n > 0) shown.append(buffer, n);
+    }
+    if (::waitpid(pid, &raw, WNOHANG) == pid) {
+      *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      while (::poll(&p, 1, 100) > 0) {  // what is left
+        const ssize_t n = ::read(master, buffer, sizeof buffer);
+        if (n <= 0) break;
+        shown.append(buffer, n);
+      }
+      *status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+      break;
+    }
+  }
+  ::close(master);
+  return shown;
+}
+
+// Single identifiability and diagnose runs are wired to that progress: on a
+// terminal, a run that took over 2.5 s showed it, one under 1.5 s did not.
+// Each command's runs go from quick to slow until one took over 2.5 s here.
+TEST(CliTest, ALongSingleRunShowsProgressOnATerminal) {
+  const std::string tire = " --dataset=" + Source("datasets/template.json");
+  const std::string rolling = " --dataset=" + Source("datasets/examples/car_tire_rolling.json");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+      {"identifiability",
+       {"--derivatives=analytic --threads=1" + tire, "--derivatives=analytic" + rolling,
+        "--threads=1" + rolling}},
+      {"diagnose",
+       {"--derivatives=analytic --threads=1 --starts=1" + tire, "--threads=1" + tire,
+        "--threads=1" + rolling}}};
+  for (const auto& [command, runs] : commands) {
+    bool long_run = false;
+    for (size_t k = 0; k < runs.size() && !long_run; ++k) {
+      int status = -1;
+      double seconds = 0;
+      const std::string shown = OnATerminal(command + " " + runs[k], &status, &seconds);
+      EXPECT_LE(status, 1) << runs[k] << ": " << shown;
+      const bool drawn = shown.find(command + ": ") != std::string::npos;
+      if (seconds > 2.5) {
+        long_run = true;
+        EXPECT_TRUE(drawn) << command << " " << runs[k] << " took " << seconds << " s";
+        EXPECT_NE(shown.find(", took "), std::string::npos) << shown;
+      } else if (seconds < 1.5) {
+        EXPECT_FALSE(drawn) << command << " " << runs[k] << " took " << seconds << " s: " << shown;
+      }
+    }
+    EXPECT_TRUE(long_run) << command << ": no run took 2.5 s here";
+  }
 }
 
 }  // namespace

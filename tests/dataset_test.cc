@@ -3,6 +3,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/dataset.h"
+#include "datasets/file_kind.h"
 #include "datasets/parameter_files.h"
 #include "datasets/synthetic.h"
 #include "model/effects.h"
@@ -513,6 +515,34 @@ TEST(ParameterSetTest, ReadsTheShippedSetAndRefusesBadOnes) {
   }
 }
 
+// A value's fields are ParameterValue's, read by its field list as the
+// writer writes them: a std that is no number is refused naming it, and an
+// object without a value says the value is missing (the hand reader took the
+// first for a set without a std, and the second for a bad number). The other
+// fields of an identify report's value and its nulls (not available: as if
+// absent), and a bare number, still read.
+TEST(ParameterSetTest, AValuesFieldsAreReadByItsFieldList) {
+  Parameters p;
+  LoadError e;
+  const std::pair<std::string, std::string> bad[] = {
+      {R"({"parameters": {"m_b": {"value": 2, "std": "big"}}})",
+       "parameters.m_b.std: must be a number"},
+      {R"({"parameters": {"m_b": {"std": 0.1}}})", "parameters.m_b.value: missing"},
+      {R"({"parameters": {"m_b": {"value": 2, "condition": 3}}})",
+       "parameters.m_b.condition: must be a string"},
+  };
+  for (const auto& [text, says] : bad) {
+    EXPECT_FALSE(LoadText(text, &p, &e)) << text;
+    EXPECT_NE(e.OneLine().find(says), std::string::npos) << e.OneLine();
+  }
+  ASSERT_TRUE(LoadText(R"({"report": "identify", "parameters": {"m_b": {"value": 2, "unit": "kg",
+      "free": true, "std": null, "identifiable": "no", "reason": "r", "condition": null},
+      "k_bx": 3e5}})", &p, &e))
+      << e.OneLine();
+  EXPECT_EQ(p[Param::m_b], 2);
+  EXPECT_EQ(p[Param::k_bx], 3e5);
+}
+
 // A value written to 17 significant digits reads back as the same double, so
 // write, read and write again give the same bytes.
 // The shipped sets, read and written, write the same bytes when read again.
@@ -594,6 +624,35 @@ TEST(TruthFileTest, RefusesEachKindOfBadFileNamingTheField) {
     EXPECT_EQ(e.field, field) << text << " -> " << e.OneLine();
     EXPECT_FALSE(e.message.empty());
   }
+}
+
+
+// What kind a file is (datasets/file_kind.h), from the formats of docs/inputs.md
+// and the UFF syntax of datasets/uff.h.
+TEST(FileKindTest, EachKindIsToldByItsFormatItsNameOrItsOpening) {
+  const std::pair<const char*, FileKind> formats[] = {
+      {"ringid-modal-dataset/1", FileKind::kModalDataset},
+      {"ringid-modal-dataset/2", FileKind::kModalDataset},
+      {"ringid-parameters/1", FileKind::kParameterSet},
+      {"ringid-truth/1", FileKind::kTruth},
+      {"ringid-lug-response/1", FileKind::kResponseDataset},
+      {"ringid-lug-forces/1", FileKind::kLugForces},
+      {"ringid-uff-map/1", FileKind::kUffMap},
+      {"ringid-modal-dataset/9", FileKind::kUnknown}};
+  for (const auto& [format, kind] : formats) {
+    EXPECT_EQ(SniffJson(json{{"format", format}}).kind, kind) << format;
+  }
+  EXPECT_EQ(SniffJson(json{{"report", "identify"}}).kind, FileKind::kReport);
+  EXPECT_EQ(SniffJson(json{{"parameters", json::object()}}).kind, FileKind::kParameterSet);
+  EXPECT_EQ(SniffJson(json{{"parameters", json::object()}, {"modes", json::array()}}).kind,
+            FileKind::kUnknown);
+  EXPECT_EQ(SniffPath("tire.TIR").kind, FileKind::kTir);
+  EXPECT_EQ(SniffPath(testing::SourcePath("datasets")).kind, FileKind::kDirectory);
+  EXPECT_EQ(SniffFile("x", "\n    -1\n    55\n").kind, FileKind::kUff);
+  EXPECT_EQ(SniffFile("x", "    -1\n    58b     1     2\n").kind, FileKind::kUff);
+  EXPECT_EQ(SniffFile("x", "    -1\n    fifty-five\n").kind, FileKind::kUnknown);
+  EXPECT_EQ(SniffFile("x", "-1\n").kind, FileKind::kUnknown);  // JSON's -1, not a UFF file
+  EXPECT_EQ(SniffFile("x", "{\"format\": \"ringid-parameters/1\"}").kind, FileKind::kUnknown);
 }
 
 }  // namespace

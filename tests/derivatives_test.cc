@@ -258,7 +258,7 @@ TEST(DerivativesTest, AnalyticJacobianMatchesRiddersAtSpeedAndAcrossConditions) 
 TEST(DerivativesTest, NumericJacobianCarryingLabelsIsThatOfSolvingEachStep) {
   Dataset d;
   LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d,
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_rolling.json"), &d,
                           &e))
       << e.OneLine();
   const RigidRingModel model;

@@ -1,4 +1,6 @@
 // Identification against the paper, a synthetic truth and a Monte Carlo.
+#include <sched.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -740,7 +742,7 @@ TEST(PairingTest, TheTemplateSaysItsSwappedStartAndNothingAtItsFit) {
 TEST(PairingTest, AStartWhoseModesAreSwappedAgainstTheDataIsSaid) {
   Dataset d;
   LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_standing_noshape.json"),
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_standing_noshape.json"),
                           &d, &e))
       << e.OneLine();
   Status status;
@@ -801,6 +803,26 @@ TEST(ParallelForTest, EveryItemRunsOnceAndTheFirstFailureIsRethrown) {
                                        }),
                  std::runtime_error);
   }
+}
+
+// --threads=0 counts the cores this process may run on, as a batch scheduler
+// binds a task to its allocation (Slurm's --cpus-per-task), not the node's.
+TEST(ParallelForTest, DefaultThreadsAreTheCoresTheProcessMayUse) {
+  cpu_set_t all, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+  if (CPU_COUNT(&all) < 2) GTEST_SKIP() << "needs 2 usable cores, has " << CPU_COUNT(&all);
+  CPU_ZERO(&one);
+  for (int c = 0; c < CPU_SETSIZE; ++c) {
+    if (CPU_ISSET(c, &all)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  }
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  const int on_one_core = internal::ThreadsFor(0);
+  ASSERT_EQ(sched_setaffinity(0, sizeof all, &all), 0);
+  EXPECT_EQ(on_one_core, 1);
+  EXPECT_EQ(internal::ThreadsFor(0), CPU_COUNT(&all));
 }
 
 }  // namespace

@@ -222,7 +222,7 @@ TEST(CampbellTest, CriticalSpeedsAreWhereALugOrderMeetsAModeAndNoneIsMissed) {
   std::vector<double> coarse, fine;
   for (int i = 0; i <= 20; ++i) coarse.push_back(4.0 + 0.8 * i);  // 4-20 m/s
   for (int i = 0; i <= 2000; ++i) fine.push_back(4.0 + 0.008 * i);
-  const std::vector<CriticalSpeed> found = CriticalSpeeds(model, p, lugs, coarse);
+  const std::vector<CriticalSpeed> found = CriticalSpeeds(model, p, lugs, coarse, kMaxOrders);
   ASSERT_GE(found.size(), 5u);
   for (const CriticalSpeed& c : found) {
     const double order_hz = LugOrderHz(c.order, lugs, p[P::r_e0], c.speed_m_s);

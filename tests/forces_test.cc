@@ -3,11 +3,14 @@
 // the estimates are unbiased and spread as std_measurement says (a Monte
 // Carlo); sampling the parameters spreads them as the linearised std_total
 // says; the response dataset's reader keeps the error contract.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <random>
 
+#include <Eigen/SVD>
 #include <gtest/gtest.h>
 
 #include "datasets/response_dataset.h"
@@ -96,10 +99,100 @@ TEST(ForcesTest, WhatTheChannelsDoNotDetermineIsSaid) {
     for (const OrderForces& o : c.orders) {
       EXPECT_EQ(o.forces.size(), 2u);
       ASSERT_EQ(o.undetermined.count(LugForce::kFy), 1u);
-      EXPECT_NE(o.undetermined.at(LugForce::kFy).find("no measured channel"), std::string::npos);
+      EXPECT_NE(o.undetermined.at(LugForce::kFy).why.find("no measured channel"), std::string::npos);
+      EXPECT_FALSE(o.undetermined.at(LugForce::kFy).condition_number_with_it.has_value());
       EXPECT_FALSE(o.chi_square.has_value());
     }
   }
+}
+
+// The condition number an undetermined force is refused for is the one of
+// the kept forces with it, computed here from the SVD of the weighted
+// response: infinite with one channel for two forces (it said 1, the kept
+// force's alone), and the finite number where a channel's sigma makes two
+// forces nearly indistinguishable.
+TEST(ForcesTest, AnUndeterminedForceCarriesTheConditionNumberWithIt) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  ForcesResult r = Estimate(fp, Responses(fp.shared, {AxleChannel::kForceZ}, 0, nullptr));
+  for (const ConditionForces& c : r.conditions) {
+    for (const OrderForces& o : c.orders) {
+      ASSERT_EQ(o.forces.size(), 1u) << c.name << " order " << o.order;
+      ASSERT_EQ(o.undetermined.size(), 2u);
+      int conditioning = 0;
+      for (const auto& [f, u] : o.undetermined) {
+        if (!u.condition_number_with_it) continue;  // the force no channel responds to
+        ++conditioning;
+        EXPECT_TRUE(std::isinf(*u.condition_number_with_it)) << *u.condition_number_with_it;
+        EXPECT_NE(u.why.find("condition number with it infinite: 2 forces from 1 channel"),
+                  std::string::npos)
+            << u.why;
+      }
+      EXPECT_EQ(conditioning, 1) << c.name << " order " << o.order;
+    }
+  }
+  // axle_force_x with a sigma 1e9 times its amplitude: F_x and F_z are told
+  // apart by it alone, the condition number ~1e9.
+  ResponseDataset d = Responses(fp.shared, {AxleChannel::kForceX, AxleChannel::kForceZ}, 0, nullptr);
+  for (ResponseCondition& c : d.conditions) {
+    for (OrderResponse& o : c.orders) o.channels.at(AxleChannel::kForceX).sigma *= 1e9;
+  }
+  r = Estimate(fp, d);
+  const ResponseCondition& c = d.conditions[1];
+  const OrderResponse& order = c.orders[0];
+  AxleResponseMatrix H;
+  std::string why;
+  ASSERT_TRUE(AxleResponse(RigidRingModel(), fp.shared, c.speed_m_s,
+                           r.conditions[1].orders[0].frequency_hz, &H, &why))
+      << why;
+  Eigen::Matrix2cd A;  // rows axle_force_x, axle_force_z; columns F_x, F_z
+  for (int row = 0; row < 2; ++row) {
+    const AxleChannel ch = row ? AxleChannel::kForceZ : AxleChannel::kForceX;
+    for (int col = 0; col < 2; ++col) {
+      A(row, col) = H(static_cast<int>(ch), col) / order.channels.at(ch).sigma;
+    }
+  }
+  const Eigen::Vector2d s = Eigen::JacobiSVD<Eigen::Matrix2cd>(A).singularValues();
+  const OrderForces& o = r.conditions[1].orders[0];
+  ASSERT_EQ(o.forces.size(), 1u);
+  const auto refused = std::find_if(o.undetermined.begin(), o.undetermined.end(),
+                                    [](const auto& u) { return u.first != LugForce::kFy; });
+  ASSERT_NE(refused, o.undetermined.end());
+  ASSERT_TRUE(refused->second.condition_number_with_it.has_value());
+  EXPECT_GT(s(0) / s(1), 1e8);
+  EXPECT_NEAR(*refused->second.condition_number_with_it, s(0) / s(1), 1e-6 * s(0) / s(1));
+  char expected[80];
+  std::snprintf(expected, sizeof expected, "condition number with it %.3g, above 1e+06", s(0) / s(1));
+  EXPECT_NE(refused->second.why.find(expected), std::string::npos) << refused->second.why;
+}
+
+// Each condition's model range is 1.5 times the highest of the car tire's
+// standing modes (rotation_anti_phase, 117.888 Hz: `ringid predict`), and
+// every order above it is flagged, in the result and in its text.
+TEST(ForcesTest, TheOrdersAboveTheModelsRangeAreFlagged) {
+  ForceParameters fp;
+  fp.shared = ExampleCarTire();
+  const ForcesResult r = Estimate(fp, Responses(fp.shared, kAll, 0, nullptr));
+  int above = 0, within = 0;
+  for (const ConditionForces& c : r.conditions) {
+    EXPECT_NEAR(c.model_valid_below_hz, 1.5 * 117.888, 1.5 * 0.001) << c.name;
+    for (const OrderForces& o : c.orders) {
+      EXPECT_EQ(o.above_model_range, o.frequency_hz > c.model_valid_below_hz)
+          << c.name << " order " << o.order;
+      ++(o.above_model_range ? above : within);
+    }
+  }
+  EXPECT_GT(above, 0);
+  EXPECT_GT(within, 0);
+  // At 5 m/s (f_lug 53.05 Hz) orders 4 and 5 lie above 176.8 Hz.
+  const std::string text = r.FullReport();
+  EXPECT_NE(text.find("drum_5 at 5 m/s, f_lug 53.05 Hz (lugs V / (2 pi r_e0)); the model holds "
+                      "below 176.8 Hz"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("      4  212.21* F_z"), std::string::npos) << text;
+  EXPECT_NE(text.find("      3  159.15  F_z"), std::string::npos) << text;
+  EXPECT_NE(text.find("  * orders 4, 5: above the model's range"), std::string::npos) << text;
 }
 
 // 400 replicates at 20 dB (noise of |Y| / 10 on re and on im): per force and
@@ -249,6 +342,52 @@ TEST(ForcesTest, ACovarianceOfTheWrongSizeIsInvalidInput) {
   EstimateForces(RigidRingModel(), fp, Responses(fp.shared, kAll, 0.1, nullptr), ForcesOptions{}, &r);
   EXPECT_TRUE(r.status.invalid_input()) << r.status.message;
   EXPECT_NE(r.status.message.find("2 x 2"), std::string::npos) << r.status.message;
+}
+
+// The lug forces of the shipped examples: TrueForce at orders 1-5.
+LugForceSpectrum ShippedLugForces() {
+  LugForceSpectrum s;
+  s.name = "car_tire_lug_forces";
+  s.description =
+      "The lug forces of car_tire_lug_response.json (20 lugs; order k: F_x 300/k N at phase 0.7k "
+      "rad, F_z 900/k N at 0.7k + 1, F_y 150/k N at 0.7k + 2). Made by ringid's tests: see "
+      "datasets/examples/README.md.";
+  s.lugs_per_revolution = kLugs;
+  for (int k = 1; k <= 5; ++k) {
+    s.orders[k] = {TrueForce(LugForce::kFx, k), TrueForce(LugForce::kFz, k),
+                   TrueForce(LugForce::kFy, k)};
+  }
+  return s;
+}
+
+TEST(ResponseDatasetTest, TheShippedLugForcesAreThoseItsReadmeDescribes) {
+  const std::string path = testing::SourcePath("datasets/examples/car_tire_lug_forces.json");
+  const std::string text = LugForcesToJson(ShippedLugForces());
+  if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << text;
+  EXPECT_EQ(testing::ReadFile(path), text)
+      << "RINGID_REGENERATE=1 build/tests/forces_test --gtest_filter=*Shipped*";
+  LugForceSpectrum back;
+  LoadError e;
+  ASSERT_TRUE(LoadLugForces(path, &back, &e)) << e.OneLine();
+  EXPECT_EQ(LugForcesToJson(back), text);
+}
+
+// `ringid simulate --lug_forces` of the shipped lug forces, at the shipped
+// response's speeds, noise and seed, writes that response (its name and
+// description aside): both examples are ringid's.
+TEST(ForcesCommandTest, SimulateOfTheShippedLugForcesWritesTheShippedResponse) {
+  const std::string out = Scratch("shipped_response.json");
+  std::remove(out.c_str());
+  const RunResult r = Ringid(
+      "simulate --parameters=" + testing::SourcePath("datasets/examples/car_tire.json") +
+      " --lug_forces=" + testing::SourcePath("datasets/examples/car_tire_lug_forces.json") +
+      " --speeds=6,12,18 --response_noise=0.1 --seed=2026 --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json made = Json::parse(testing::ReadFile(out));
+  const Json shipped = Json::parse(
+      testing::ReadFile(testing::SourcePath("datasets/examples/car_tire_lug_response.json")));
+  EXPECT_EQ(made["conditions"], shipped["conditions"]);
+  EXPECT_EQ(made["lugs_per_revolution"], shipped["lugs_per_revolution"]);
 }
 
 TEST(ResponseDatasetTest, TheShippedExampleIsTheSimulationItsReadmeDescribes) {
@@ -412,6 +551,12 @@ TEST(ForcesCommandTest, SimulateWritesTheResponseToGivenLugForcesAndForcesRecove
   r = Ringid(base + " --speeds=0,8 --output=" + Scratch("lugs_zero.json"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("a lug order exists only rolling"), std::string::npos) << r.err;
+  // Without --speeds (whose default, 0, is standing) the speeds are asked for by name.
+  r = Ringid(base + " --output=" + Scratch("lugs_no_speeds.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "ringid: simulate --lug_forces needs --speeds=V1,V2,... (drum speeds in m/s, "
+                   "each > 0: a lug order exists only rolling)\n");
+  EXPECT_FALSE(testing::Exists(Scratch("lugs_no_speeds.json")));
   r = Ringid(base + " --speeds=8 --truth=" + Scratch("t.json") + " --output=" + Scratch("l2.json"));
   EXPECT_EQ(r.status, 2);
   std::string misspelt = lug_forces;
@@ -458,6 +603,78 @@ TEST(ForcesCommandTest, APerConditionValueComesFromTheFitsConditionOfThatName) {
                        " fitted F_cz0 per condition (drum_6_3000N, drum_6_4500N"),
             std::string::npos)
       << r.err;
+}
+
+// forces on the shipped response with axle_force_z alone: the report says
+// why F_x is not determined and with what condition number (infinite: null
+// in JSON), and flags the orders above the model's range.
+TEST(ForcesCommandTest, TheReportSaysTheConditionNumberWithTheForceAndTheModelsRange) {
+  Json d = Json::parse(
+      testing::ReadFile(testing::SourcePath("datasets/examples/car_tire_lug_response.json")));
+  for (Json& c : d["conditions"]) {
+    for (Json& o : c["orders"]) o["response"] = {{"axle_force_z", o["response"]["axle_force_z"]}};
+  }
+  const std::string data = Scratch("forces_z_only.json"), out = Scratch("forces_z_only_report.json");
+  std::ofstream(data) << d.dump(2);
+  std::remove(out.c_str());
+  const RunResult r = Ringid("forces --parameters=" +
+                             testing::SourcePath("datasets/examples/car_tire.json") +
+                             " --dataset=" + data + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("F_x   not determined: the measured channels cannot tell it from the forces "
+                       "kept (condition number with it infinite: 2 forces from 1 channel)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("condition number 1 with it"), std::string::npos) << r.out;
+  const Json report = Json::parse(testing::ReadFile(out));
+  const Json& order1 = report["conditions"][0]["orders"][0];
+  ASSERT_TRUE(order1["undetermined"]["F_x"].contains("condition_number_with_it")) << order1.dump();
+  EXPECT_TRUE(order1["undetermined"]["F_x"]["condition_number_with_it"].is_null());
+  EXPECT_FALSE(order1["undetermined"]["F_y"].contains("condition_number_with_it"));
+  // drum_18: f_lug 191 Hz, every order above 1.5 x 117.9 Hz.
+  const Json& drum_18 = report["conditions"][2];
+  EXPECT_NEAR(drum_18["model_valid_below_hz"].get<double>(), 176.83, 0.01);
+  for (const Json& o : drum_18["orders"]) EXPECT_TRUE(o["above_model_range"].get<bool>()) << o.dump();
+  EXPECT_FALSE(report["conditions"][0]["orders"][0]["above_model_range"].get<bool>());
+  ForcesReport back;
+  std::string error;
+  EXPECT_TRUE(ReadReport(report, &back, &error)) << error;
+}
+
+// predict --max_order bounds the orders whose critical speeds are listed
+// (default 5); the crossings kept are those of the full list up to it.
+TEST(ForcesCommandTest, PredictListsTheCriticalSpeedsUpToMaxOrder) {
+  const std::string base = "predict --parameters=" +
+                           testing::SourcePath("datasets/examples/car_tire.json") +
+                           " --speeds=0,0.1,5,10,15 --lugs_per_revolution=20 --output=";
+  const auto Listed = [&](const std::string& flag) {
+    const std::string out = Scratch("max_order.json");
+    std::remove(out.c_str());
+    const RunResult r = Ringid(base + out + flag);
+    EXPECT_EQ(r.status, 0) << flag << ": " << r.err;
+    return std::make_pair(r.out, Json::parse(testing::ReadFile(out)));
+  };
+  const auto [text, by_default] = Listed("");
+  const auto [all_text, all] = Listed(" --max_order=200");
+  EXPECT_EQ(by_default["max_order"], 5);
+  EXPECT_NE(text.find("critical speeds (20 lugs per revolution; orders 1 to 5, --max_order):"),
+            std::string::npos)
+      << text;
+  int highest = 0;
+  Json expected = Json::array();
+  for (const Json& c : all["critical_speeds"]) {
+    highest = std::max(highest, c["order"].get<int>());
+    if (c["order"].get<int>() <= 5) expected.push_back(c);
+  }
+  EXPECT_GT(highest, 50);  // slow speeds alone meet orders by the dozen
+  EXPECT_GT(all["critical_speeds"].size(), 5 * by_default["critical_speeds"].size());
+  EXPECT_EQ(by_default["critical_speeds"], expected);
+  EXPECT_LE(by_default["critical_speeds"].size(), 40u);
+  for (const std::string bad : {"0", "201"}) {
+    const RunResult r = Ringid(base + Scratch("max_order_bad.json") + " --max_order=" + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(r.err, "ringid: --max_order: must lie in [1, 200]\n") << bad;
+  }
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iterator>
+#include <sstream>
 #include <iostream>
 #include <map>
 #include <ostream>
@@ -26,6 +28,7 @@
 #include "estimation/statistics.h"
 #include "model/rigid_ring_model.h"
 #include "tests/browser_check.h"
+#include "apps/html/pages.h"
 #include "report/report.h"
 #include "validation/suites.h"
 #include "tests/test_support.h"
@@ -537,6 +540,79 @@ TEST(HtmlReportTest, IdentifyShowsTheReportsIntervalForEveryKindOfParameter) {
   }
 }
 
+// The interval figure draws, per parameter, the band its interval lies in
+// when it is classed yes, from the classification's own threshold: a
+// relative standard deviation of at most 0.354 (UncertaintyOptions), so
+// exp(+-1.96 x 0.354) = [0.49966, 2.00136] fitted in the log, 1 +- 0.69383
+// fitted linearly (an effect parameter). The page drew a factor 2 for every
+// parameter, which a linear one classed yes (std/value 0.30: 0.41 to 1.59)
+// crosses.
+TEST(HtmlReportTest, IdentifyDrawsTheBandOfClassYesFromTheClassifiersThreshold) {
+  using namespace ringid;  // NOLINT
+  IdentifyReport report;
+  IdentifyResult& r = report.body.result;
+  const auto add = [&](Param p, double value, double relative_std, bool log) {
+    ParameterEstimate q;
+    q.key.param = p;
+    q.value = value;
+    q.free = true;
+    q.std = relative_std * value;
+    const double z = 1.959963984540054;
+    const double half = z * relative_std;
+    q.interval_95 = log ? std::pair{value * std::exp(-half), value * std::exp(half)}
+                        : std::pair{value * (1 - half), value * (1 + half)};
+    q.identifiable =
+        relative_std <= 0.354 ? Identifiability::kYes : Identifiability::kPracticallyNo;
+    r.estimates.push_back(q);
+  };
+  add(Param::k_bx, 3e5, 0.30, true);
+  add(Param::k_by, 2e5, 0.40, true);
+  add(Param::s_h, 1e-7, 0.30, false);
+  add(Param::k_xy, 1e4, 0.40, false);
+  html::Page page;
+  html::IdentifyPage(report, &page);
+  const html::Figure* f = nullptr;
+  for (const html::Page::Block& b : page.blocks()) {
+    if (b.figure && b.figure->name == "identify-parameters") f = &*b.figure;
+  }
+  ASSERT_NE(f, nullptr);
+  // The rows of the data file a plot clause titled `title` reads.
+  const auto rows = [&](const std::string& title) {
+    const size_t at = f->script.find("title '" + title + "'");
+    EXPECT_NE(at, std::string::npos) << title << " in\n" << f->script;
+    if (at == std::string::npos) return std::vector<std::vector<double>>{};
+    const size_t d = f->script.rfind(" d", at);
+    const size_t index = std::stoul(f->script.substr(d + 2));
+    std::vector<std::vector<double>> out;
+    std::istringstream lines(f->data.at(index));
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream values(line);
+      out.emplace_back(std::istream_iterator<double>(values), std::istream_iterator<double>());
+    }
+    return out;
+  };
+  const std::vector<std::vector<double>> bands = rows("yes within");
+  ASSERT_EQ(bands.size(), 4u);
+  const double log_band[] = {0.49966, 2.00136}, linear_band[] = {1 - 0.69383, 1 + 0.69383};
+  for (int i = 0; i < 4; ++i) {
+    const double* band = i < 2 ? log_band : linear_band;
+    ASSERT_EQ(bands[i].size(), 3u);
+    EXPECT_EQ(bands[i][0], i);
+    EXPECT_NEAR(bands[i][1], band[0], 2e-5) << i;
+    EXPECT_NEAR(bands[i][2], band[1], 2e-5) << i;
+  }
+  // Each interval lies within its band exactly when it is classed yes.
+  for (const auto& [title, inside] : {std::pair{"yes", true}, std::pair{"practically_no", false}}) {
+    const std::vector<std::vector<double>> drawn = rows(title);
+    ASSERT_EQ(drawn.size(), 2u) << title;
+    for (const std::vector<double>& row : drawn) {
+      const std::vector<double>& band = bands.at(static_cast<size_t>(row.at(0)));
+      EXPECT_EQ(row[1] >= band[1] && row[2] <= band[2], inside) << title << " " << row[0];
+    }
+  }
+  EXPECT_NE(f->caption.find("at most 0.354"), std::string::npos) << f->caption;
+}
+
 // diagnose --level sets the level of every likelihood-ratio test; each
 // ranking row carries its threshold, the chi-square quantile at that level
 // (tables: 6.635, 9.210, 11.345 for 1-3 degrees of freedom at 0.01), and the
@@ -676,6 +752,29 @@ TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSp
     EXPECT_NE(m.html.find(speed), std::string::npos) << speed;
   }
   EXPECT_NE(m.html.find("Critical speeds"), std::string::npos);
+}
+
+// The forces page gives each condition's model range and flags the orders
+// above it: the shipped response under car_tire.json, whose range ends at
+// 1.5 x 117.888 Hz (drum_6: orders 3-5 above; drum_18: every order).
+TEST(HtmlReportTest, ForcesFlagsTheOrdersAboveTheModelsRange) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Make("forces_range", "forces --parameters=" +
+                                          Source("datasets/examples/car_tire.json") + " --dataset=" +
+                                          Source("datasets/examples/car_tire_lug_response.json"));
+  ExpectWellFormed(m.html, 3);
+  EXPECT_NE(m.html.find("model valid below (Hz)"), std::string::npos);
+  EXPECT_NE(m.html.find("<td>drum_6</td><td class=\"n\">6</td><td class=\"n\">63.66</td>"
+                        "<td class=\"n\">176.8</td><td>3, 4, 5</td>"),
+            std::string::npos)
+      << m.html;
+  EXPECT_NE(m.html.find("<td>drum_18</td><td class=\"n\">18</td><td class=\"n\">191</td>"
+                        "<td class=\"n\">176.8</td><td>1, 2, 3, 4, 5</td>"),
+            std::string::npos);
+  EXPECT_NE(m.html.find(">model range</th>"), std::string::npos);
+  EXPECT_NE(m.html.find("<td class=\"n\">190.99</td><td>above</td>"), std::string::npos);
+  EXPECT_NE(m.html.find("<td class=\"n\">63.66</td><td>within</td>"), std::string::npos);
+  EXPECT_NE(m.html.find("dashed: the condition&#39;s model_valid_below_hz"), std::string::npos);
 }
 
 TEST(HtmlReportTest, CampaignOfDiagnosesDrawsTheGapsAndTheVerdicts) {

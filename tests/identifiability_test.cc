@@ -4,6 +4,8 @@
 #include <map>
 #include <random>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -314,7 +316,7 @@ TEST(IdentifiabilityTest, ProfileBoundsAreRefittedCrossingsAndJumpsAreSaidApart)
 }
 
 // `identifiability --derivatives=analytic` on a new user's rolling dataset
-// (../shared/data/cases/newcomer_rolling.json, simulated without any effect): the
+// (tests/data/newcomer_rolling.json, simulated without any effect): the
 // K_cy profile's 2 delta cost went from 0.14 at 94827.55 to 797 at 94827.50,
 // and that jump was the lower bound. It was a refit that failed: a walk warm-
 // started from one point to the next finds 0.14 there. Further down, the
@@ -324,7 +326,7 @@ TEST(IdentifiabilityTest, ProfileBoundsAreRefittedCrossingsAndJumpsAreSaidApart)
 TEST(IdentifiabilityTest, AFailedRefitIsRetriedAndOnlyARealJumpIsSaid) {
   Dataset d;
   LoadError e;
-  ASSERT_TRUE(LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"), &d, &e))
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("tests/data/newcomer_rolling.json"), &d, &e))
       << e.OneLine();
   IdentifiabilityOptions o;
   o.fit.residuals.derivatives = Derivatives::kAnalytic;
@@ -678,6 +680,30 @@ TEST(IdentifiabilityTest, AdvisedDrumTestMakesTheRelaxationLengthIdentifiable) {
   ASSERT_TRUE(rolling.status.ok()) << rolling.status.message;
   EXPECT_EQ(Find(rolling, Param::sigma_cx).identifiable, Identifiability::kYes) << advised;
   EXPECT_EQ(Find(rolling, Param::K_cx).identifiable, Identifiability::kYes) << advised;
+}
+
+
+// The steps a progress line shows (IdentifiabilityOptions::on_step): from
+// none done to all, never back, over the fit, Table 1's 16 free coordinates'
+// profiles and the rest.
+TEST(IdentifiabilityTest, ItsStepsRunFromNoneToAllOverTheFitAndEachProfile) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
+  IdentifiabilityOptions o;
+  o.profile_steps = 0;
+  std::vector<std::pair<int, int>> steps;
+  o.on_step = [&](int done, int total) { steps.emplace_back(done, total); };
+  IdentifiabilityResult r;
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &r);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_GE(steps.size(), 3u);
+  EXPECT_EQ(steps.front(), std::make_pair(0, 16 + 2));
+  EXPECT_EQ(steps.back(), std::make_pair(16 + 2, 16 + 2));
+  for (size_t k = 1; k < steps.size(); ++k) {
+    EXPECT_GE(steps[k].first, steps[k - 1].first) << k;
+    EXPECT_EQ(steps[k].second, 18) << k;
+  }
 }
 
 }  // namespace

@@ -116,4 +116,27 @@ TEST(LayeringTest, PythonUsesOnlyThePublicLibrary) {
   EXPECT_GT(checked, 10);
 }
 
+// A user's clone has no shared folder beside it: only the corpus accessor of
+// tests/test_support.cc names it; every other test reads tests/data or skips
+// through testing::CorpusTest.
+TEST(LayeringTest, NoTestReadsTheSharedFolderButThroughTheCorpusAccessor) {
+  const std::string needle = std::string("..") + "/shared";  // not this line itself
+  int scanned = 0;
+  for (const char* folder : {"tests", "python", "benchmarks", "validation"}) {
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(RINGID_SOURCE_DIR) / folder)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext != ".h" && ext != ".cc" && ext != ".py" && ext != ".sh" && ext != ".txt") continue;
+      if (entry.path().stem() == "test_support") continue;
+      ++scanned;
+      std::ifstream in(entry.path());
+      std::string line;
+      for (int n = 1; std::getline(in, line); ++n) {
+        EXPECT_EQ(line.find(needle), std::string::npos)
+            << entry.path().string() << ":" << n << " reads the shared folder directly";
+      }
+    }
+  }
+  EXPECT_GT(scanned, 30);
+}
+
 }  // namespace

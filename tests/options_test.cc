@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/campbell.h"
 #include "operations/option_text.h"
 #include "operations/options.h"
 #include "report/report.h"
@@ -164,7 +165,7 @@ TEST(OptionsTest, MaxIterationsLimitsTheFit) {
   EXPECT_LT(evaluations(" --max_iterations=1"), evaluations(""));
   const RunResult r = Ringid(base + " --max_iterations=0");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "ringid: bad option: max_iterations must be at least 1\n");
+  EXPECT_EQ(r.err, "ringid: --max_iterations: must be at least 1\n");
 }
 
 // predict lists the critical speeds of the orders up to --max_order: the
@@ -181,7 +182,7 @@ TEST(OptionsTest, MaxOrderCutsTheCriticalSpeeds) {
     EXPECT_TRUE(ReadReport(Json::parse(ReadFile(out)), &report, &error)) << error;
     return report.body.critical_speeds.value_or(std::vector<CriticalSpeed>{});
   };
-  const std::vector<CriticalSpeed> all = critical(" --max_order=1000"), cut = critical("");
+  const std::vector<CriticalSpeed> all = critical(" --max_order=" + std::to_string(kMaxOrders)), cut = critical("");
   std::vector<CriticalSpeed> expected;
   for (const CriticalSpeed& c : all) {
     if (c.order <= PredictSettings().max_order) expected.push_back(c);
@@ -193,7 +194,7 @@ TEST(OptionsTest, MaxOrderCutsTheCriticalSpeeds) {
     EXPECT_EQ(cut[i].order, expected[i].order);
     EXPECT_EQ(cut[i].speed_m_s, expected[i].speed_m_s);
   }
-  EXPECT_EQ(Ringid(base + " --max_order=0").err, "ringid: --max_order: must be at least 1\n");
+  EXPECT_EQ(Ringid(base + " --max_order=0").err, "ringid: --max_order: must lie in [1, 200]\n");
 }
 
 // forces reads a .tir with --set giving what a .tir cannot hold, as it reads

@@ -1,5 +1,7 @@
 // Typed reports: each kind the tool writes reads back into its struct and
 // writes again byte for byte; the reader is strict; provenance is true.
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,12 @@
 #include "apps/reports.h"
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
+#include "datasets/parameter_files.h"
+#include "datasets/response_dataset.h"
+#include "datasets/uff_dataset.h"
+#include "estimation/fit.h"
+#include "estimation/starts.h"
+#include "model/effects.h"
 #include "report/schema.h"
 #include "report/report.h"
 #include "tests/round_trip.h"
@@ -254,9 +262,105 @@ TEST(ReportTest, DocsInputsMdIsTheGeneratedFieldList) {
       << "run: build/ringid inputs > docs/inputs.md";
 }
 
+// Each input file's section gives the `format` to write, the string its
+// reader checks (it said "string", or "derived from the fields above").
+TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
+  const std::string md = ringid::InputsMarkdown();
+  const std::vector<std::string> formats = {
+      ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kParameterSetFormat,
+      ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
+      ringid::kUffMapFormat};
+  size_t lines = 0;
+  for (size_t at = md.find("- `format`: "); at != std::string::npos;
+       at = md.find("- `format`: ", at + 1)) {
+    ++lines;
+  }
+  EXPECT_EQ(lines, formats.size()) << md;
+  for (const std::string& f : formats) {
+    EXPECT_NE(md.find("- `format`: `\"" + f + "\"` (this string exactly)\n"), std::string::npos)
+        << f;
+  }
+}
+
 TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
   EXPECT_EQ(ReadFile(Source("docs/reference.md")), ringid::ReferenceMarkdown())
       << "run: build/ringid reference > docs/reference.md";
+}
+
+// docs/development.md states figures of the code: each is said as built here
+// from its constant (whitespace and line breaks aside), so that changing the
+// constant without the text fails. It had said 0.001 for kStopChiSquare
+// (1e-4) and schema 4 (5).
+std::string Figure(double v) {  // 1e+12 as 1e12
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  std::string s = text;
+  const size_t e = s.find("e+");
+  if (e != std::string::npos) s.erase(e + 1, s.find_first_not_of("+0", e + 1) - e - 1);
+  return s;
+}
+std::string Word(int n) {
+  const char* words[] = {"zero", "one", "two", "three", "four", "five", "six",
+                         "seven", "eight", "nine", "ten", "eleven", "twelve"};
+  return n >= 0 && n <= 12 ? words[n] : std::to_string(n);
+}
+
+TEST(ReportTest, DocsDevelopmentMdStatesTheCodesFigures) {
+  using namespace ringid;  // NOLINT
+  std::string doc;
+  for (const char c : ReadFile(Source("docs/development.md"))) {
+    if (!std::isspace(static_cast<unsigned char>(c))) {
+      doc += c;
+    } else if (!doc.empty() && doc.back() != ' ') {
+      doc += ' ';
+    }
+  }
+  const std::string sizes = ReadFile(Source("scripts/check_sizes.py"));
+  const auto script = [&](const std::string& name) {  // "NAME = VALUE" on a line of its own
+    const size_t at = sizes.find("\n" + name + " = ");
+    if (at == std::string::npos) return std::string("(no " + name + ")");
+    const size_t from = at + name.size() + 4;
+    return sizes.substr(from, sizes.find('\n', from) - from);
+  };
+  const IdentifyOptions identify;
+  const UncertaintyOptions uncertainty;
+  const std::string stop = Figure(kStopChiSquare);
+  const std::vector<std::string> says = {
+      "`schema_version` (" + std::to_string(kReportSchemaVersion) + ", `kReportSchemaVersion`)",
+      "Schema " + std::to_string(kReportSchemaVersion) + " (",  // what the current one changed
+      "less than " + stop + " in χ² (`kStopChiSquare`)",
+      "the last " + std::to_string(internal::kShrinkingGains) + " successful steps",
+      "each at most " + Figure(internal::kGainShrink) + " times the one before",
+      "at least " + Figure(internal::kSlowestShrink) + ", `kSlowestShrink`) adds up to less than " +
+          stop + " in χ²",
+      "tolerances of " + Figure(internal::kCeresTolerance) + " (`kCeresTolerance`)",
+      "(" + std::to_string(identify.starts) + " by default,",
+      "at least " + Figure(internal::kOwnership) + " per row, `kOwnership`",
+      "up to " + Word(internal::kMatchRounds) + " times (`kMatchRounds`)",
+      "within a factor " + Figure(identify.start_factor) + " (`IdentifyOptions::start_factor`)",
+      "bounds of a factor " + Figure(identify.bound_factor) + " around the start "
+          "(`IdentifyOptions::bound_factor`",
+      "(within " + Figure(kSameOptimumChiSquare) + ", `kSameOptimumChiSquare`)",
+      "more than " + Figure(100 * kStartsDisagree) + " % (`kStartsDisagree`",
+      "is above " + Figure(uncertainty.practical_relative_std) +
+          " (`UncertaintyOptions::practical_relative_std`)",
+      "wider than a factor of " + Figure(std::round(uncertainty.PracticalBand(true).second)) +
+          " either way",
+      "over " + Word(kNumDofs) + " degrees of freedom",
+      "The " + Word(static_cast<int>(EffectCatalogue().size())) + " effects",
+      "files up to " + std::to_string(kMaxFileBytes >> 20) + " MiB",
+      "nested at most " + std::to_string(kMaxJsonDepth) + " deep",
+      "at most " + std::to_string(kMaxModes) + " modes",
+      "at most " + std::to_string(kNumDofs) + " shape components",
+      "outside " + Figure(kMinModeFrequencyHz) + "–" + Figure(kMaxModeFrequencyHz) + " Hz",
+      "beyond " + Figure(kMaxParameterMagnitude) + " in magnitude",
+      "generates " + std::to_string(ringid::testing::MalformedDatasets().size()) + " malformed",
+      "over " + script("MAX_FILE_LINES") + " lines and no function body over " +
+          script("MAX_FUNCTION_LINES"),
+  };
+  for (const std::string& text : says) {
+    EXPECT_NE(doc.find(text), std::string::npos) << "docs/development.md should say: " << text;
+  }
 }
 
 // The fields docs/conventions.md §6 promises other people's scripts, written

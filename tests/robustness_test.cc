@@ -1,6 +1,6 @@
 // One answer whatever the start (issue 21): the starts, the stopping rule and
 // the diagnosis checked on the datasets that exposed the defects
-// (../shared/data/cases, read in place) and on synthetic truths.
+// (tests/data, README.md there) and on synthetic truths.
 #include <cmath>
 #include <random>
 #include <string>
@@ -21,11 +21,11 @@ namespace {
 
 using testing::SourcePath;
 
-// A dataset written by a new user, kept beside the repository in shared/.
+// A dataset written by a new user, carried in tests/data (README.md there says where from).
 Dataset Case(const std::string& name) {
   Dataset d;
   LoadError e;
-  EXPECT_TRUE(LoadDataset(SourcePath("../shared/data/cases/" + name), &d, &e)) << e.message;
+  EXPECT_TRUE(LoadDataset(SourcePath("tests/data/" + name), &d, &e)) << e.message;
   return d;
 }
 

@@ -217,7 +217,7 @@ class ScatteredStarts {
  public:
   explicit ScatteredStarts(unsigned seed) : rng_(seed) {
     LoadError e;
-    loaded_ = LoadDataset(testing::SourcePath("../shared/data/cases/newcomer_rolling.json"),
+    loaded_ = LoadDataset(testing::SourcePath("tests/data/newcomer_rolling.json"),
                           &dataset_, &e);
     EXPECT_TRUE(loaded_) << e.message;
   }

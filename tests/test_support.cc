@@ -21,6 +21,21 @@ std::string SourcePath(const std::string& relative) {
   return std::string(RINGID_SOURCE_DIR) + "/" + relative;
 }
 
+std::string CorpusDir() {
+  const char* dir = std::getenv("RINGID_CORPUS_DIR");
+  return dir && *dir ? std::string(dir) : SourcePath("../shared/data");
+}
+
+std::string CorpusPath(const std::string& relative) { return CorpusDir() + "/" + relative; }
+
+void CorpusTest::SetUp() {
+  struct stat st;
+  if (stat(CorpusDir().c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+    GTEST_SKIP() << "the public corpus directory " << CorpusDir()
+                 << " is absent (set RINGID_CORPUS_DIR to read it elsewhere)";
+  }
+}
+
 Parameters Table2() {
   Parameters p;
   using P = Param;

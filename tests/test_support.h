@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "datasets/dataset.h"
 #include "model/parameters.h"
 #include "model/rigid_ring_model.h"
@@ -13,6 +15,18 @@
 namespace ringid::testing {
 
 std::string SourcePath(const std::string& relative);
+
+// The public third-party corpora (.tir and UFF files) are read in place, never
+// carried: from RINGID_CORPUS_DIR, by default ../shared/data beside the
+// checkout. A test that reads them derives its fixture from CorpusTest and is
+// named *CorpusTest: tests/CMakeLists.txt labels those `corpus` in ctest, and
+// each skips, naming the directory, where the corpus is absent.
+std::string CorpusDir();
+std::string CorpusPath(const std::string& relative);  // CorpusDir() + "/" + relative
+class CorpusTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+};
 // Table 2 of the paper (with its ties), typed in from the paper
 // (docs/model.md section 12).
 Parameters Table2();

@@ -1,4 +1,4 @@
-// Real .tir files (../shared/data/tir, read in place) and the contact values
+// Real .tir files (the public corpus, read in place: tests/test_support.h) and the contact values
 // of a full MF-Tyre/MF-Swift file (docs/tir.md): every public file with a
 // sound belt block reads to the values in its text; the rest are refused for
 // the right reason; sections ringid does not read are read leniently; the
@@ -26,9 +26,10 @@ namespace {
 using P = Param;
 constexpr double kTwoPi = 2 * M_PI;
 
-std::string Corpus(const std::string& name) {
-  return testing::SourcePath("../shared/data/tir/" + name + ".tir");
-}
+std::string Corpus(const std::string& name) { return testing::CorpusPath("tir/" + name + ".tir"); }
+
+using TirCorpusTest = testing::CorpusTest;
+using TirContactCorpusTest = testing::CorpusTest;
 
 // KEY's number as the text gives it: the first line "KEY = number", read
 // without the parser (comments after '$' or '!' ignored).
@@ -66,7 +67,7 @@ const std::vector<std::string> kSoundBelts = {
     "tyredyn__Bus_270_70R22", "tyredyn__Truck_430_50R38", "tyredyn__car145_70R13",
     "tyredyn__fsae190_50R10"};
 
-TEST(TirCorpusTest, EveryPublicFileWithASoundBeltBlockReadsToTheValuesInItsText) {
+TEST_F(TirCorpusTest, EveryPublicFileWithASoundBeltBlockReadsToTheValuesInItsText) {
   for (const std::string& name : kSoundBelts) {
     SCOPED_TRACE(name);
     const std::string text = testing::ReadFile(Corpus(name));
@@ -96,7 +97,7 @@ TEST(TirCorpusTest, EveryPublicFileWithASoundBeltBlockReadsToTheValuesInItsText)
   }
 }
 
-TEST(TirCorpusTest, FilesWithoutABeltBlockAreRefusedForThatBeforeAnythingElse) {
+TEST_F(TirCorpusTest, FilesWithoutABeltBlockAreRefusedForThatBeforeAnythingElse) {
   for (const std::string name :
        {"chrono__HMMWV_Pac02Tire", "chrono__VW_microbus_mf_185_80R14",
         "chrono__feda_335_65R22_5_G275MSA_60psi", "opentire_sandbox__MagicFormula52_Parameters",
@@ -114,7 +115,7 @@ TEST(TirCorpusTest, FilesWithoutABeltBlockAreRefusedForThatBeforeAnythingElse) {
   EXPECT_NE(e.message.find("must be positive, not 0"), std::string::npos) << e.OneLine();
 }
 
-TEST(TirCorpusTest, SectionsRingidDoesNotReadAreSkippedWithANoteAndTheRestStaysStrict) {
+TEST_F(TirCorpusTest, SectionsRingidDoesNotReadAreSkippedWithANoteAndTheRestStaysStrict) {
   TirFile file;
   LoadError e;
   ASSERT_TRUE(LoadTir(Corpus("opentire_sandbox__harty_dunlop_F_100_90_19_D401"), &file, &e,
@@ -203,7 +204,7 @@ std::map<Param, double> Independent(const Tno& t, const Parameters& belt, double
   return v;
 }
 
-TEST(TirContactTest, TheContactValuesOfTheTnoTireEqualAnIndependentEvaluationOfTheFormulas) {
+TEST_F(TirContactCorpusTest, TheContactValuesOfTheTnoTireEqualAnIndependentEvaluationOfTheFormulas) {
   const std::string tno = testing::ReadFile(Corpus("opentire_sandbox__TNO_car205_60R15"));
   // The text with KEY's line (its value `from`) giving `to` instead.
   const auto with = [](std::string text, const std::string& key, const std::string& from,
@@ -284,7 +285,7 @@ TEST(TirContactTest, ExportAndImportAgreeOnTheContactValuesAndRelaxationLengths)
   }
 }
 
-TEST(TirContactTest, AConsistentFullFileGivesACompleteSetWithOnlyTheRimsInertiaGiven) {
+TEST_F(TirContactCorpusTest, AConsistentFullFileGivesACompleteSetWithOnlyTheRimsInertiaGiven) {
   for (const std::string name :
        {"opentire_sandbox__TNO_car205_60R15", "vhc_sem__TNO_car205_60R15",
         "opentire_sandbox__reference_tire_tvd3", "opentire_sandbox__FSAE_Defaults",
@@ -311,7 +312,7 @@ TEST(TirContactTest, AConsistentFullFileGivesACompleteSetWithOnlyTheRimsInertiaG
   EXPECT_NE(Joined(notes).find("Q_BVT = 0.065"), std::string::npos);
 }
 
-TEST(TirContactTest, WhereCarcassAndBeltDisagreeTheRelaxationLengthIsLeftToTheUserAndSaid) {
+TEST_F(TirContactCorpusTest, WhereCarcassAndBeltDisagreeTheRelaxationLengthIsLeftToTheUserAndSaid) {
   for (const std::string name :
        {"opentire_sandbox__MagicFormula61_Parameters", "mfeval_julia__MagicFormula62_Parameters",
         "tyredyn__Truck_430_50R38"}) {
@@ -330,7 +331,7 @@ TEST(TirContactTest, WhereCarcassAndBeltDisagreeTheRelaxationLengthIsLeftToTheUs
   }
 }
 
-TEST(TirContactTest, BadMagicFormulaKeysAreRefusedNamingTheKey) {
+TEST_F(TirContactCorpusTest, BadMagicFormulaKeysAreRefusedNamingTheKey) {
   const std::string tno = testing::ReadFile(Corpus("vhc_sem__TNO_car205_60R15"));
   const auto refused = [&](const std::string& from, const std::string& to) {
     std::string text = tno;

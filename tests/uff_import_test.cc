@@ -32,9 +32,9 @@ using testing::Ringid;
 using testing::RunResult;
 using testing::Scratch;
 
-std::string Corpus(const std::string& name) {
-  return testing::SourcePath("../shared/data/uff/" + name);
-}
+std::string Corpus(const std::string& name) { return testing::CorpusPath("uff/" + name); }
+
+using UffImportCorpusTest = testing::CorpusTest;
 
 UffMap Map(const std::string& json) {
   UffMap map;
@@ -51,7 +51,7 @@ double ShapeOf(const MeasuredMode& m, Dof dof) {
   return NAN;
 }
 
-TEST(UffImportTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
+TEST_F(UffImportCorpusTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
@@ -85,7 +85,7 @@ TEST(UffImportTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
   EXPECT_NE(in.notes.front().find("no dataset 164"), std::string::npos) << in.notes.front();
 }
 
-TEST(UffImportTest, AComplexEigenvalueGivesTheDampedFrequencyAndItsRatio) {
+TEST_F(UffImportCorpusTest, AComplexEigenvalueGivesTheDampedFrequencyAndItsRatio) {
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_sample_test_record10.uff"), &file, &e)) << e.OneLine();
@@ -128,6 +128,47 @@ std::string Record55(int number, std::complex<double> lambda,
     out += "\n";
   }
   return out + "    -1\n";
+}
+
+// The import keeps the damping ratios the JSON loader takes, the open (0, 1)
+// of DampingRatioProblem: a lightly damped mode of zeta = 1e-7 (from the
+// eigenvalue -zeta w + i w sqrt(1 - zeta^2), 6 digits written) keeps its
+// ratio, as the same ratio in a JSON dataset loads (the import had dropped
+// ratios below 1e-6); an unstable eigenvalue (zeta = -0.1) is left out with a
+// note, as the loader refuses its ratio.
+TEST(UffImportTest, KeepsEveryDampingRatioTheJsonLoaderTakes) {
+  const UffMap map = Map(R"({"format": "ringid-uff-map/1", "name": "d",
+      "channels": [{"node": 1, "direction": 3, "dof": "z_b"}],
+      "labels": [{"mode": 1, "label": "vertical"}]})");
+  const double w = 2 * M_PI * 50;
+  for (const double zeta : {1e-7, -0.1}) {
+    const std::complex<double> lambda(-zeta * w, w * std::sqrt(1 - zeta * zeta));
+    UffFile file;
+    LoadError e;
+    ASSERT_TRUE(ParseUff(Record55(1, lambda, {{1, {0.0, 0.0, 1.0}}}), "d.uff", &file, &e))
+        << e.OneLine();
+    UffImport in;
+    ASSERT_TRUE(UffToDataset(file, map, nullptr, &in, &e)) << e.OneLine();
+    const std::optional<double> read = in.dataset.modes.at(0).damping_ratio;
+    const double written = -lambda.real() / std::abs(lambda);
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.17g", written);
+    Dataset json;
+    const std::string text =
+        R"({"format": "ringid-modal-dataset/1", "name": "d", "modes": [{"label": "vertical",
+            "frequency_hz": 50, "damping_ratio": )" + std::string(ratio) + "}]}";
+    const bool loads = ParseDataset(text, "d.json", &json, &e);
+    EXPECT_EQ(read.has_value(), loads) << zeta << ": " << e.OneLine();
+    if (zeta > 0) {
+      ASSERT_TRUE(read) << zeta;
+      EXPECT_NEAR(*read, zeta, 1e-5 * zeta);
+    } else {
+      EXPECT_FALSE(read);
+      bool noted = false;
+      for (const std::string& note : in.notes) noted |= note.find("left out") != std::string::npos;
+      EXPECT_TRUE(noted);
+    }
+  }
 }
 
 // The car tire's modes written as a lab would: node 1 holds the belt's
@@ -293,6 +334,10 @@ TEST(UffImportTest, BadMapsAndUnlabelledModesAreRefusedNamingTheField) {
     EXPECT_EQ(e.field, field) << json << ": " << e.OneLine();
     EXPECT_EQ(e.OneLine().find('\n'), std::string::npos);
   }
+}
+
+TEST_F(UffImportCorpusTest, UnlabelledAndMissingModesOfAPublicFileAreRefusedNamingTheField) {
+  const std::string head = R"({"format": "ringid-uff-map/1", "name": "m", )";
   UffFile file;
   LoadError e;
   ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
@@ -337,6 +382,99 @@ TEST(UffImportTest, TheCommandWritesADatasetIdentifyReadsAndNothingOnBadInput) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(testing::Exists(out)) << args;
   }
+}
+
+
+// A map channel on a node the file's modes do not hold would drop that degree
+// of freedom from every shape: it is refused, naming the node, its direction
+// and the file, exit 2, nothing written.
+TEST(UffImportTest, AMappedNodeTheFileDoesNotHoldIsRefusedNamingIt) {
+  const Parameters p = ExampleCarTire();
+  ModalSolution s;
+  std::vector<ModeLabel> truth;
+  const UffFile file = ReadLabFile(p, &s, &truth);  // nodes 1, 2 and 3 (LabFile)
+  std::string json = kLabMap;
+  const std::string extra = R"({"node": 9, "direction": 2, "dof": "y_a"}, )";
+  json.insert(json.find("{\"node\": 1"), extra);
+  const UffMap map = Map(json);
+  UffImport in;
+  LoadError e;
+  EXPECT_FALSE(UffToDataset(file, map, &p, &in, &e));
+  EXPECT_EQ(e.file, "lab.uff");
+  EXPECT_NE(e.message.find("node 9 direction 2"), std::string::npos) << e.OneLine();
+  EXPECT_NE(e.message.find("channels[0]"), std::string::npos) << e.OneLine();
+  EXPECT_NE(e.message.find("its nodes: 1, 2, 3"), std::string::npos) << e.OneLine();
+  // A direction the node does not hold (LabFile writes three values a node).
+  std::string beyond = kLabMap;
+  beyond.replace(beyond.find(R"("direction": 2, "dof": "theta_a")"), 14, R"("direction": 5)");
+  EXPECT_FALSE(UffToDataset(file, Map(beyond), &p, &in, &e));
+  EXPECT_NE(e.message.find("node 3 direction 5"), std::string::npos) << e.OneLine();
+  // The command: exit 2, one line naming the node and the file, no dataset.
+  const std::string uff = Scratch("lab_node.uff"), map_path = Scratch("lab_node_map.json");
+  const std::string out = Scratch("lab_node_dataset.json");
+  std::ofstream(uff) << LabFile(s, &truth);
+  std::ofstream(map_path) << json;
+  std::remove(out.c_str());
+  const RunResult r = Ringid("import --uff=" + uff + " --map=" + map_path + " --parameters=" +
+                             testing::SourcePath("datasets/examples/car_tire.json") +
+                             " --output=" + out);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(uff), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("node 9 direction 2"), std::string::npos) << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+}
+
+// Without --map the command lists the nodes of the modes and the directions
+// each holds, what a map's channels name: LabFile writes nodes 1, 2 and 3,
+// three values each, in all seven modes.
+TEST(UffImportTest, TheListingGivesTheNodesAndDirectionsAMapNames) {
+  std::vector<ModeLabel> truth;
+  const std::string uff = Scratch("lab_list.uff");
+  std::ofstream(uff) << LabFile(RigidRingModel().Solve(ExampleCarTire()), &truth);
+  const RunResult r = Ringid("import --uff=" + uff);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("nodes 1-3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("directions 1-3, in every mode"), std::string::npos) << r.out;
+}
+
+// A map that swaps the belt's x and z channels: the shapes match no model
+// mode well, and the labels that rest on them are said to (exit 0, with a
+// warning); the right map of the same file says nothing of the kind.
+TEST(UffImportTest, LabelsThatRestOnAPoorMatchAreAWarning) {
+  const Parameters p = ExampleCarTire();
+  ModalSolution s;
+  std::vector<ModeLabel> truth;
+  const UffFile file = ReadLabFile(p, &s, &truth);
+  std::string swapped = kLabMap;
+  swapped.replace(swapped.find(R"("direction": 1, "dof": "x_b")"), 28, R"("direction": 1, "dof": "z_b")");
+  swapped.replace(swapped.find(R"("direction": 3, "dof": "z_b")"), 28, R"("direction": 3, "dof": "x_b")");
+  IdentifyOptions o;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  UffImport good, poor;
+  LoadError e;
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(kLabMap), p, o, &good, &e)) << e.OneLine();
+  EXPECT_TRUE(good.warnings.empty()) << good.warnings.front();
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(swapped), p, o, &poor, &e)) << e.OneLine();
+  ASSERT_EQ(poor.warnings.size(), 1u);
+  EXPECT_NE(poor.warnings[0].find("poor match"), std::string::npos) << poor.warnings[0];
+  // The thresholds: a MAC under 0.8 named with its mode, or p under 1e-3.
+  bool low_mac = false;
+  for (const UffModelLabel& l : poor.by_model) low_mac |= l.mac && *l.mac < 0.8;
+  EXPECT_EQ(low_mac, poor.warnings[0].find("MAC") != std::string::npos) << poor.warnings[0];
+  for (const UffModelLabel& l : good.by_model) EXPECT_GT(*l.mac, 1 - 1e-6);
+  // The command prints it and still writes the dataset.
+  const std::string uff = Scratch("lab_poor.uff"), map = Scratch("lab_poor_map.json");
+  const std::string out = Scratch("lab_poor_dataset.json");
+  std::ofstream(uff) << LabFile(s, &truth);
+  std::ofstream(map) << swapped;
+  std::remove(out.c_str());
+  const RunResult r = Ringid("import --uff=" + uff + " --map=" + map + " --parameters=" +
+                             testing::SourcePath("datasets/examples/car_tire.json") +
+                             " --output=" + out);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("warning: the labels rest on a poor match"), std::string::npos) << r.out;
+  EXPECT_TRUE(testing::Exists(out));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The Universal File Format reader (datasets/uff.h): every file of the public
-// corpus (../shared/data/uff, pyuff's test files) reads, with the values the
-// files' text holds (typed in below from the files, not from this reader);
+// corpus (CorpusPath("uff"), pyuff's test files; skipped where absent) reads,
+// with the values the files' text holds (typed in below from the files, not from this reader);
 // 58b reads in both byte orders; and malformed input is refused with one line
 // naming the dataset and record.
 #include <algorithm>
@@ -25,9 +25,9 @@
 namespace ringid {
 namespace {
 
-std::string Corpus(const std::string& name) {
-  return testing::SourcePath("../shared/data/uff/" + name);
-}
+std::string Corpus(const std::string& name) { return testing::CorpusPath("uff/" + name); }
+
+using UffCorpusTest = testing::CorpusTest;
 
 UffFile Load(const std::string& name) {
   UffFile f;
@@ -124,7 +124,7 @@ std::string Binary58(const std::vector<double>& values, int type, int spacing, b
   return s + "    -1\n";
 }
 
-TEST(UffReaderTest, ReadsEveryFileOfTheCorpusAsTheSequenceOfItsDatasets) {
+TEST_F(UffCorpusTest, ReadsEveryFileOfTheCorpusAsTheSequenceOfItsDatasets) {
   EXPECT_EQ(Numbers(Load("uff55_translation.uff")), (std::vector<int>{55, 55, 55}));
   EXPECT_EQ(Numbers(Load("uff55_translation_rotation.uff")), (std::vector<int>{55}));
   EXPECT_EQ(Numbers(Load("uff55_sample_test_record10.uff")), (std::vector<int>{55}));
@@ -144,7 +144,7 @@ TEST(UffReaderTest, ReadsEveryFileOfTheCorpusAsTheSequenceOfItsDatasets) {
   EXPECT_FALSE(Load("Sample_UFF58_ascii.uff").datasets[0].binary);
 }
 
-TEST(UffReaderTest, ReadsDataset55NormalModesAsWrittenInTheFile) {
+TEST_F(UffCorpusTest, ReadsDataset55NormalModesAsWrittenInTheFile) {
   const UffFile f = Load("uff55_translation.uff");
   ASSERT_EQ(f.modal_data.size(), 3u);
   const double freq[] = {1.00000e+01, 1.20000e+01, 1.30000e+01};
@@ -175,7 +175,7 @@ TEST(UffReaderTest, ReadsDataset55NormalModesAsWrittenInTheFile) {
   }
 }
 
-TEST(UffReaderTest, ReadsSixValuesPerNodeOfTranslationAndRotation) {
+TEST_F(UffCorpusTest, ReadsSixValuesPerNodeOfTranslationAndRotation) {
   const UffModalData d = Load("uff55_translation_rotation.uff").modal_data.at(0);
   EXPECT_EQ(d.data_characteristic, 3);
   EXPECT_EQ(d.values_per_node, 6);
@@ -194,7 +194,7 @@ TEST(UffReaderTest, ReadsSixValuesPerNodeOfTranslationAndRotation) {
 
 // Record 8 and the node values run together ("4.111111E+03-3.111111E+03"):
 // the fields are read by column.
-TEST(UffReaderTest, ReadsComplexEigenvalueModeWithFieldsRunTogether) {
+TEST_F(UffCorpusTest, ReadsComplexEigenvalueModeWithFieldsRunTogether) {
   const UffModalData d = Load("uff55_sample_test_record10.uff").modal_data.at(0);
   EXPECT_EQ(d.id[0], "TESTTEST:Cfg=0:C1:trans:111121");
   EXPECT_EQ(d.id[4], "999999         3         8        13");
@@ -215,7 +215,7 @@ TEST(UffReaderTest, ReadsComplexEigenvalueModeWithFieldsRunTogether) {
   EXPECT_NEAR(*d.FrequencyHz(), 6.5431, 1e-4);
 }
 
-TEST(UffReaderTest, ReadsDataset58AsciiFunctionAsWrittenInTheFile) {
+TEST_F(UffCorpusTest, ReadsDataset58AsciiFunctionAsWrittenInTheFile) {
   const UffFunction f = Load("Sample_UFF58_ascii.uff").functions.at(0);
   EXPECT_FALSE(f.binary);
   EXPECT_EQ(f.id[0], "Mic 01.0Scalar");
@@ -248,7 +248,7 @@ TEST(UffReaderTest, ReadsDataset58AsciiFunctionAsWrittenInTheFile) {
 
 // The two samples hold the same microphone signal: the binary file as
 // floats, the ASCII file as the same values to 6 significant digits.
-TEST(UffReaderTest, Reads58bSingleValuesThatAgreeWithTheAsciiSample) {
+TEST_F(UffCorpusTest, Reads58bSingleValuesThatAgreeWithTheAsciiSample) {
   const UffFunction b = Load("Sample_UFF58b_bin.uff").functions.at(0);
   const UffFunction a = Load("Sample_UFF58_ascii.uff").functions.at(0);
   EXPECT_TRUE(b.binary);
@@ -273,7 +273,7 @@ TEST(UffReaderTest, Reads58bSingleValuesThatAgreeWithTheAsciiSample) {
   }
 }
 
-TEST(UffReaderTest, Reads58bEightByteValues) {
+TEST_F(UffCorpusTest, Reads58bEightByteValues) {
   const UffFunction f = Load("binary8byte.uff").functions.at(0);
   EXPECT_EQ(f.ordinate_type, 4);
   EXPECT_EQ(f.data_bytes, 2000);
@@ -310,7 +310,7 @@ std::string BigEndianCopy(const std::string& bytes, size_t value_size) {
   return big;
 }
 
-TEST(UffReaderTest, BigEndianCopiesOfThe58bFilesReadTheSameValues) {
+TEST_F(UffCorpusTest, BigEndianCopiesOfThe58bFilesReadTheSameValues) {
   for (const auto& [name, size] : {std::pair<std::string, size_t>{"Sample_UFF58b_bin.uff", 4},
                                    {"binary8byte.uff", 8}}) {
     const UffFunction little = Load(name).functions.at(0);
@@ -324,7 +324,7 @@ TEST(UffReaderTest, BigEndianCopiesOfThe58bFilesReadTheSameValues) {
   }
 }
 
-TEST(UffReaderTest, ReadsTestLabHeaderUnitsCoordinateSystemsNodesAndTraceLines) {
+TEST_F(UffCorpusTest, ReadsTestLabHeaderUnitsCoordinateSystemsNodesAndTraceLines) {
   const UffFile f = Load("TestLab_161_164_18_15_82.uff");
   const UffHeader& h = f.headers.at(0);
   EXPECT_EQ(h.model_name, "AME_Test");
@@ -600,7 +600,7 @@ TEST(UffReaderTest, LoadRefusesAFileLargerThanItsCapNamingTheSize) {
   EXPECT_NE(e.message.find("268435457 bytes, more than the 268435456"), std::string::npos)
       << e.OneLine();
   std::filesystem::remove(path);
-  EXPECT_FALSE(LoadUff(Corpus("no-such.uff"), &f, &e));
+  EXPECT_FALSE(LoadUff(testing::Scratch("no-such.uff"), &f, &e));
   EXPECT_EQ(e.message, "cannot open file");
 }
 

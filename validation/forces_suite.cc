@@ -169,7 +169,7 @@ Status RunForcesSuite(const SuiteOptions& o, ForcesSuite* suite) {
   std::vector<double> grid;
   for (int i = 1; i <= 60; ++i) grid.push_back(0.5 * i);
   double resonance = NAN;
-  for (const CriticalSpeed& c : CriticalSpeeds(model, truth, kLugs, grid)) {
+  for (const CriticalSpeed& c : CriticalSpeeds(model, truth, kLugs, grid, 1)) {
     if (c.order == 1 && c.label == ModeLabel::kVertical) resonance = c.speed_m_s;
   }
   if (!std::isfinite(resonance)) return Status::Failed("order 1 meets no vertical mode below 30 m/s");
@@ -219,7 +219,7 @@ Status RunForcesSuite(const SuiteOptions& o, ForcesSuite* suite) {
         // The same identified response, unweighted.
         const Parameters p = identified.In(rc);
         AxleResponseMatrix H;
-        const double hz = k * kLugs * rc.speed_m_s / (2 * M_PI * p[Param::r_e0]);
+        const double hz = LugOrderHz(k, kLugs, p[Param::r_e0], rc.speed_m_s);
         if (!AxleResponse(model, p, rc.speed_m_s, hz, &H, &why)) continue;
         const OrderResponse& order = rc.orders[k - 1];
         Eigen::MatrixXcd A(order.channels.size(), kNumLugForces);

@@ -80,9 +80,8 @@ void GapFigure(const std::vector<CampaignRow>& datasets, Page* page) {
   }
   g << "\n";
   f.script = g.str();
-  f.caption =
-      "The gap of each dataset before and after adding the effect of its verdict, as χ² in "
-      "excess of its degrees of freedom (0 is a fit as good as the noise).";
+  f.caption = std::string("The gap of each dataset before and after adding the effect of its "
+                          "verdict. ") + kCampaignGapMeaning + ".";
   page->AddFigure(std::move(f));
 }
 

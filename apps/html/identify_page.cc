@@ -22,6 +22,9 @@ struct Intervals {
   std::vector<std::string> names;
   std::vector<std::pair<double, double>> bounds;  // low, high relative to the value
   std::vector<Identifiability> classes;
+  // Where each interval lies when its parameter is classed yes
+  // (UncertaintyOptions::PracticalBand, relative to the value).
+  std::vector<std::pair<double, double>> yes_bands;
   std::vector<std::string> clipped;      // cut at kClipFactor
   std::vector<std::string> without_std;  // free, not drawn
   std::vector<std::string> not_positive;  // an interval reaching 0 or below: not drawn
@@ -131,6 +134,9 @@ Row ParameterRow(const ParameterEstimate& q, bool priors, Intervals* intervals) 
     intervals->names.push_back(name);
     intervals->bounds.push_back({std::max(low, 1 / kClipFactor), std::min(high, kClipFactor)});
     intervals->classes.push_back(q.identifiable);
+    const auto [yes_low, yes_high] = UncertaintyOptions().PracticalBand(positive);
+    intervals->yes_bands.push_back(
+        {std::max(yes_low, 1 / kClipFactor), std::min(yes_high, kClipFactor)});
   } else if (q.free && interval) {
     intervals->not_positive.push_back(name);
   } else if (q.free) {
@@ -274,23 +280,28 @@ void MacFigure(const std::vector<ModeFit>& modes, Page* page) {
 }
 
 std::string IntervalScript(Figure* f, const Intervals& intervals) {
-  double low = 0.5, high = 2;
+  double low = 1, high = 1;
   std::map<Identifiability, Series> by_class;
+  Series bands;
   for (size_t i = 0; i < intervals.names.size(); ++i) {
     const auto [from, to] = intervals.bounds[i];
-    low = std::min(low, from);
-    high = std::max(high, to);
+    const auto [yes_from, yes_to] = intervals.yes_bands[i];
+    low = std::min({low, from, yes_from});
+    high = std::max({high, to, yes_to});
     by_class[intervals.classes[i]].Row({static_cast<double>(i), from, to});
+    bands.Row({static_cast<double>(i), yes_from, yes_to});
   }
   std::ostringstream g;
   g << "set logscale y\nset format y '%g'\nset yrange [" << low / 1.4 << ":" << high * 1.4 << "]\n"
+    << "set y" << LogTics(low / 1.4, high * 1.4).substr(5)
     << "set xrange [-0.7:" << static_cast<double>(intervals.names.size()) - 0.3 << "]\n"
     << CategoryXTics(intervals.names, f->width - 250.0, -35)
     << "set grid ytics\nset ylabel 'interval / value (log scale)'\n"
     << "set key outside right top title 'identifiable' noenhanced\n"
-    << HorizontalLine(1, "2", kDashedGrey) << HorizontalLine(2, "0.5", kDashedGrey)
-    << HorizontalLine(3, "1", "lc rgb '#bbbbbb'");
-  std::vector<std::string> parts;
+    << HorizontalLine(1, "1", "lc rgb '#bbbbbb'");
+  std::vector<std::string> parts = {
+      f->AddData(bands) + " using 1:(1):($1-0.4):($1+0.4):2:3 with boxxyerror fs solid 0.3 "
+                          "noborder lc rgb '#bbbbbb' title 'yes within'"};
   for (auto [identifiable, color] :
        {std::pair<Identifiability, const char*>{Identifiability::kYes, kBlue},
         {Identifiability::kPracticallyNo, kOrange},
@@ -315,11 +326,17 @@ void IntervalFigure(const Intervals& intervals, Page* page) {
            std::clamp(300 + 45 * static_cast<int>(intervals.names.size()), 600, 1000), 420);
   f.script = IntervalScript(&f, intervals);
   const std::string z = Format(kNormal95, "%.2f");
+  const UncertaintyOptions classed;
+  const double t = classed.practical_relative_std;
   f.caption = "95 % interval of each free parameter relative to its value (the report's "
               "interval_95: value × exp(± " + z + " std/value) for a positive parameter, fitted "
               "in its log), on a log axis (dimensionless). "
-              "Dashed lines: a factor 2 either way, beyond which a parameter is practically "
-              "not identifiable.";
+              "Grey bands: where the interval lies when the parameter is classed yes, its "
+              "relative standard deviation at most " + Format(t, "%g") + " (exp(± " + z + " × " +
+              Format(t, "%g") + "), a factor " +
+              Format(classed.PracticalBand(true).second, "%.2f") +
+              " either way, fitted in its log; 1 ± " + Format(kNormal95 * t, "%.2f") +
+              " fitted linearly); beyond it a determined parameter is practically_no.";
   if (!intervals.not_positive.empty()) {
     f.caption += " Not drawn, their interval reaching 0 or below (fitted in linear "
                  "coordinates; see the table): " + Join(intervals.not_positive, ", ") + ".";

@@ -168,6 +168,24 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         from_file["dataset"] = from_result["dataset"]
         self.assertSameReport(from_result, from_file, tolerance=0)
 
+    def test_forces_refuse_set_over_a_fit_as_the_command_line(self):
+        # A fit's values carry its covariance: set= over them is refused, from
+        # the result held as from its report on the command line.
+        fit = ringid.identify(ROLLING, starts=1)
+        with tempfile.TemporaryDirectory() as scratch:
+            path = os.path.join(scratch, "fit.json")
+            with open(path, "w") as f:
+                f.write(fit.to_json())
+            line = cli_error("forces", "--parameters=" + path, "--set=I_ay=0.4",
+                             "--dataset=" + LUG_RESPONSE)
+            with self.assertRaises(ringid.Error) as caught:
+                ringid.forces(path, LUG_RESPONSE, set={"I_ay": 0.4})
+            self.assertEqual(str(caught.exception), line)
+        self.assertTrue(line.startswith("--set: not over an identify report"), line)
+        with self.assertRaises(ringid.Error) as caught:
+            ringid.forces(fit, LUG_RESPONSE, set={"I_ay": 0.4})
+        self.assertEqual(caught.exception.field, "set")
+
 
     def test_simulate_equals_the_command_line(self):
         with tempfile.TemporaryDirectory() as scratch:
