@@ -2,10 +2,9 @@
 
 #include <gflags/gflags.h>
 
-#include "estimation/fit.h"
-#include "estimation/residuals.h"
 #include "model/effects.h"
 #include "model/spelling.h"
+#include "operations/option_text.h"
 #include "validation/suites.h"
 
 namespace ringid {
@@ -89,11 +88,7 @@ std::string Usage(const Command& c) {
 }  // namespace
 
 std::vector<std::string> FlagValues(const std::string& flag) {
-  if (flag == "method") return NamesOf<Method>();
-  if (flag == "weighting") return NamesOf<FrequencyWeighting>();
-  if (flag == "shape_convention") return NamesOf<ShapeConvention>();
-  if (flag == "derivatives") return NamesOf<Derivatives>();
-  if (flag == "effects") return EffectNames(EffectCatalogue());
+  if (const OptionInfo* o = FindOption(flag)) return o->choices;
   if (flag == "format") return {"tir", "json"};  // export's
   if (flag == "suite") {
     std::vector<std::string> names;

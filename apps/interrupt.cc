@@ -8,13 +8,14 @@
 #include <cstring>
 #include <thread>
 
+#include "operations/files.h"
+
 namespace ringid {
 namespace {
 
 // Never destroyed: the watcher may run while static objects are torn down.
+// The files written and their lock are the library's (operations/files.h).
 struct State {
-  std::recursive_mutex mutex;
-  std::vector<std::string> written;
   KeptNote::Describe describe;
 };
 State& Shared() {
@@ -45,8 +46,8 @@ void Watch() {
   while (::read(signal_pipe[0], &signo, 1) != 1) {
   }
   State& s = Shared();
-  s.mutex.lock();  // never released: the process ends here
-  const std::string kept = s.describe ? s.describe(s.written) : Kept(s.written);
+  HoldFileWrites().release();  // never released: the process ends here
+  const std::string kept = s.describe ? s.describe(FilesWritten()) : Kept(FilesWritten());
   const std::string line = std::string(isatty(STDERR_FILENO) ? "\r\033[K" : "") +
                            "ringid: interrupted (" + (signo == SIGINT ? "SIGINT" : "SIGTERM") +
                            "): " + kept + "\n";
@@ -69,11 +70,7 @@ void ExitOnInterrupt() {
   for (int signo : {SIGINT, SIGTERM}) ::sigaction(signo, &action, nullptr);
 }
 
-std::unique_lock<std::recursive_mutex> HoldInterruption() {
-  return std::unique_lock<std::recursive_mutex>(Shared().mutex);
-}
-
-void NoteWritten(const std::string& path) { Shared().written.push_back(path); }
+std::unique_lock<std::recursive_mutex> HoldInterruption() { return HoldFileWrites(); }
 
 KeptNote::KeptNote(Describe describe) {
   const auto hold = HoldInterruption();

@@ -14,16 +14,14 @@ namespace ringid {
 
 // Installs the handlers (once, before any thread starts). The line is
 // "ringid: interrupted (SIGINT): " and what was kept: nothing, or the files
-// NoteWritten recorded, or what the KeptNote in force says.
+// written whole (operations/files.h), or what the KeptNote in force says.
 void ExitOnInterrupt();
 
 // While held, an interruption waits: the files being written are finished
 // (all of a group or none) before the process ends, and no temporary file is
-// left behind. Recursive, so that one holder may write several groups.
+// left behind (operations/files.h, HoldFileWrites). Recursive, so that one
+// holder may write several groups.
 std::unique_lock<std::recursive_mutex> HoldInterruption();
-
-// Records a file written whole; call while holding HoldInterruption.
-void NoteWritten(const std::string& path);
 
 // While in scope, what an interruption says was kept, made from the files
 // written so far (a campaign names its finished reports and the summary it

@@ -1,4 +1,6 @@
-// Parameter-set files and atomic writes of the files a command makes.
+// The checks on the files a command makes, before it makes them; the
+// writing itself, and the parameter set of --save_parameters, are the
+// library's (operations/files.h, operations/fit.h).
 #ifndef RINGID_APPS_REPORTS_H_
 #define RINGID_APPS_REPORTS_H_
 
@@ -11,30 +13,15 @@
 #include "datasets/dataset.h"
 #include "datasets/parameter_files.h"
 #include "estimation/identify.h"
+#include "operations/files.h"
+#include "operations/fit.h"
 
 namespace ringid {
-
-// The shared values of a fit as a parameter set (--save_parameters), with
-// their standard deviations and what the data determined of them.
-ParameterSet IdentifiedParameterSet(const IdentifyResult& s, const std::string& name,
-                                    const std::string& description);
 
 // A report as text. Paths and names from the command line need not be UTF-8:
 // invalid bytes become U+FFFD instead of an exception.
 std::string JsonText(const nlohmann::json& report);
 
-// Writes via a temporary file beside `path` and a rename: a reader never sees
-// a half-written report. False with a one-line message on failure.
-bool WriteFileAtomically(const std::string& path, const std::string& text,
-                         std::string* error);
-// Several files, all or none (e.g. a dataset and its truth): each is written
-// to a temporary file and renamed only once every one is complete; if a rename
-// fails, the files renamed before it are put back as they were (an existing
-// file from a hard link kept beside it, a new one removed). A path named
-// twice is refused before anything is written. Not atomic against a crash
-// between two renames; an interruption (apps/interrupt.h) waits for the group.
-bool WriteFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files,
-                          std::string* error);
 // Whether `path` could be written, checked before a long run starts: not a
 // directory, and a probe file beside it can be made (and is removed).
 bool CanWrite(const std::string& path, std::string* error);

@@ -30,7 +30,6 @@
 #include "apps/reports.h"
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
-#include "apps/simulate_command.h"
 #include "report/report.h"
 #include "validation/suites.h"
 #include "datasets/dataset.h"
@@ -43,31 +42,35 @@
 #include "model/effects.h"
 #include "model/spelling.h"
 #include "model/rigid_ring_model.h"
+#include "operations/fit.h"
+#include "operations/simulate.h"
 
 namespace ringid {
 namespace {
 
 int IdentifyCommand(int argc, char** argv) {
   std::string error;
+  FitSettings settings;
   IdentifyOptions o;
-  std::vector<const Effect*> effects;
   if (!FLAGS_output_dir.empty()) {
-    if (!ReadFitOptions(&o, &effects, &error)) return Usage(error);
+    if (!ReadFitOptions(&settings, &o, &error)) return Usage(error);
     if (!FLAGS_save_parameters.empty()) return Usage("--save_parameters: not in a campaign");
-    const RigidRingModel model(effects);
+    const RigidRingModel model(settings.effects);
     return Campaign(
-        argc, argv, ReportKind::kIdentify, model,
+        argc, argv, ReportKind::kIdentify, model, settings,
         [&](const Dataset& d, const std::string& file) {
           IdentifyResult s;
           Identify(model, d, o, &s);
           return CampaignItem{
-              ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, s}}),
+              ReportText(IdentifyReport{ThisRun(argc, argv, settings.seed, file), {d.name, s}}),
               IdentifyRow(s)};
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o, &effects, &d, &error, true)) return Usage(error);
-  const RigidRingModel model(effects);
+  if (!ReadFitOptions(&settings, &o, &error) || !ReadFitDataset(settings, &d, &error, true)) {
+    return Usage(error);
+  }
+  const RigidRingModel model(settings.effects);
   IdentifyResult s;
   Identify(model, d, o, &s);
   if (s.status.invalid_input()) return Usage(FLAGS_dataset + ": " + s.status.message);
@@ -75,7 +78,7 @@ int IdentifyCommand(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> files;
   if (!FLAGS_output.empty()) {
     files.emplace_back(FLAGS_output,
-                       ReportText(IdentifyReport{ThisRun(argc, argv, FLAGS_seed), {d.name, s}}));
+                       ReportText(IdentifyReport{ThisRun(argc, argv, settings.seed), {d.name, s}}));
   }
   if (!FLAGS_save_parameters.empty() && s.status.ok()) {
     files.emplace_back(FLAGS_save_parameters,
@@ -87,11 +90,13 @@ int IdentifyCommand(int argc, char** argv) {
 
 int IdentifiabilityCommand(int argc, char** argv) {
   std::string error;
+  FitSettings settings;
   IdentifiabilityOptions o;
-  std::vector<const Effect*> effects;
   Dataset d;
-  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
-  const RigidRingModel model(effects);
+  if (!ReadFitOptions(&settings, &o.fit, &error) || !ReadFitDataset(settings, &d, &error)) {
+    return Usage(error);
+  }
+  const RigidRingModel model(settings.effects);
   IdentifiabilityResult r;
   {
     Progress progress("identifiability", 0, kProgressAfterSeconds);
@@ -103,11 +108,13 @@ int IdentifiabilityCommand(int argc, char** argv) {
 
 int CompareCommand(int argc, char** argv) {
   std::string error;
+  FitSettings settings;
   CompareOptions o;
-  std::vector<const Effect*> effects;
   Dataset d;
-  if (!ReadFitInputs(&o.fit, &effects, &d, &error)) return Usage(error);
-  const RigidRingModel model(effects);
+  if (!ReadFitOptions(&settings, &o.fit, &error) || !ReadFitDataset(settings, &d, &error)) {
+    return Usage(error);
+  }
+  const RigidRingModel model(settings.effects);
   ComparisonResult r;
   {
     Progress progress("compare", 2 * o.fit.starts);
@@ -117,14 +124,23 @@ int CompareCommand(int argc, char** argv) {
   return Finish<CompareReport>(argc, argv, d, r);
 }
 
-int SimulateCommand(int argc, char** argv) {
-  if (!FLAGS_lug_forces.empty()) return SimulateResponsesCommand(argc, argv);
+int SimulateCommand(int, char**) {
   std::string error;
+  SimulateSettings settings;
+  if (!ReadSettings(&settings, &error)) return Usage(error);
+  if (!settings.lug_forces.empty()) return SimulateResponsesCommand(settings);
+  if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
+    return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
+  }
+  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, Inputs(), &error)) {
+    return Usage(error);
+  }
   Simulated s;
+  InputError bad;
   bool failed = false;
-  if (!SimulateFromFlags(true, &s, &error, &failed)) {
-    if (!failed) return Usage(error);
-    std::fprintf(stderr, "ringid: simulate: %s\n", error.c_str());
+  if (!SimulateDataset(FLAGS_parameters, FLAGS_output, settings, &s, &bad, &failed)) {
+    if (!failed) return Usage(bad.line);
+    std::fprintf(stderr, "ringid: simulate: %s\n", bad.line.c_str());
     return kExitFailure;
   }
   const Dataset& d = s.dataset;
@@ -144,26 +160,24 @@ int SimulateCommand(int argc, char** argv) {
 
 int DiagnoseCommand(int argc, char** argv) {
   std::string error;
+  DiagnoseSettings settings;
   DiagnoseOptions o;
-  if (!(FLAGS_level > 0 && FLAGS_level < 1)) return Usage("--level: must lie in (0, 1)");
-  o.effect_significance = FLAGS_level;
-  std::vector<const Effect*> effects;
+  if (!ReadDiagnoseOptions(&settings, &o, &error)) return Usage(error);
   if (!FLAGS_output_dir.empty()) {
-    if (!ReadFitOptions(&o.fit, &effects, &error)) return Usage(error);
-    const RigidRingModel baseline(effects);
+    const RigidRingModel baseline(settings.fit.effects);
     return Campaign(
-        argc, argv, ReportKind::kDiagnose, baseline,
+        argc, argv, ReportKind::kDiagnose, baseline, settings.fit,
         [&](const Dataset& d, const std::string& file) {
           DiagnosisResult r;
           Diagnose(baseline, d, o, &r);
           return CampaignItem{
-              ReportText(DiagnoseReport{ThisRun(argc, argv, FLAGS_seed, file), {d.name, r}}),
+              ReportText(DiagnoseReport{ThisRun(argc, argv, settings.fit.seed, file), {d.name, r}}),
               DiagnoseRow(r)};
         });
   }
   Dataset d;
-  if (!ReadFitInputs(&o.fit, &effects, &d, &error, true)) return Usage(error);
-  const RigidRingModel baseline(effects);
+  if (!ReadFitDataset(settings.fit, &d, &error, true)) return Usage(error);
+  const RigidRingModel baseline(settings.fit.effects);
   DiagnosisResult r;
   {
     Progress progress("diagnose", 0, kProgressAfterSeconds);
@@ -180,9 +194,9 @@ int BenchCommand(int argc, char** argv) {
     return Usage(error);
   }
   SuiteOptions o;
-  if (!ParseFlag("derivatives", FLAGS_derivatives, &o.derivatives, &error)) return Usage(error);
+  if (!ReadFlag("derivatives", &o.derivatives, &error)) return Usage(error);
   o.replicates = FLAGS_replicates;
-  o.seed = static_cast<unsigned>(FLAGS_seed);
+  o.seed = static_cast<unsigned>(SeedFlag());
   o.source_dir = DataDir();  // from any working directory
   Progress progress(FLAGS_suite + " suite");
   o.on_case = [&](int done, int total) { progress.Set(done, total); };
@@ -194,7 +208,7 @@ int BenchCommand(int argc, char** argv) {
   if (!suite) {
     return Usage("--suite: " + UnknownName("suite", FLAGS_suite, FlagValues("suite")));
   }
-  const SuiteOutput r = suite->run(o, ThisRun(argc, argv, FLAGS_seed));
+  const SuiteOutput r = suite->run(o, ThisRun(argc, argv, SeedFlag()));
   if (r.status.invalid_input()) return Usage("--suite: " + r.status.message);
   if (!r.status.ok()) {
     std::fprintf(stderr, "ringid: bench: %s\n", r.status.message.c_str());
@@ -260,7 +274,7 @@ int ExportCommand(int, char**) {
     return Usage("--format: " + UnknownName("format", FLAGS_format, formats));
   }
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
-  std::map<Param, double> set;
+  ParameterValues set;
   if (!ParseSet(&set, &error)) return Usage(error);
   Parameters p;
   LoadError load;
@@ -275,8 +289,9 @@ int ExportCommand(int, char**) {
     std::fprintf(FLAGS_output.empty() ? stderr : stdout, "%s%s\n", kParameterNotePrefix,
                  note.c_str());
   }
+  const std::string set_text = FlagText("set");
   const std::string source =
-      FLAGS_parameters + (FLAGS_set.empty() ? "" : " with --set=" + FLAGS_set);
+      FLAGS_parameters + (set_text.empty() ? "" : " with --set=" + set_text);
   const std::string name = std::filesystem::path(FLAGS_parameters).stem().string();
   std::string text;
   if (FLAGS_format == "json") {

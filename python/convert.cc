@@ -7,27 +7,24 @@
 #include <filesystem>
 #include <fstream>
 
-#include "apps/command_line.h"
-#include "apps/flags.h"
+#include "datasets/parameter_files.h"
 #include "datasets/tir_parameters.h"
 
 namespace ringid::python {
 
-Error Error::Of(const LoadError& e) { return {e.OneLine(), e.file, e.field, e.message}; }
+Error Error::Of(const LoadError& e) { return Of(InputError::Of(e)); }
 
-Error Error::Usage(const std::string& line) {
-  std::string field;
-  if (line.rfind("--", 0) == 0) field = line.substr(2, line.find(':') - 2);
-  return {line, "", field, line};
-}
+Error Error::Of(const InputError& e) { return {e.line, e.file, e.field, e.message}; }
+
+Error Error::Usage(const std::string& line) { return Of(InputError::Option(line)); }
 
 void RegisterError(py::module_& m) {
   py::exec(R"(
 class Error(ValueError):
     """A bad input or option: str(e) is the line `ringid` prints after "ringid: ".
 
-    file: the file read ("" for options), field: the JSON path or the flag's
-    name ("" where none), message: what is wrong with it.
+    file: the file read ("" for options), field: the JSON path or key in it,
+    or the option's name ("" where none), message: what is wrong with it.
     """
 
     def __init__(self, line, file="", field="", message=None):
@@ -50,15 +47,15 @@ class Error(ValueError):
 
 namespace {
 
-std::string Join(py::handle items, const std::string& flag) {
+std::string Join(py::handle items, const std::string& name) {
   std::string out;
-  for (py::handle item : items) out += (out.empty() ? "" : ",") + FlagText(flag, item);
+  for (py::handle item : items) out += (out.empty() ? "" : ",") + OptionTextOf(name, item);
   return out;
 }
 
 }  // namespace
 
-std::string FlagText(const std::string& flag, py::handle value) {
+std::string OptionTextOf(const std::string& name, py::handle value) {
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::int_>(value)) return py::str(value);
   if (py::isinstance<py::float_>(value)) return py::repr(value);
@@ -69,68 +66,50 @@ std::string FlagText(const std::string& flag, py::handle value) {
     for (auto [k, v] : value.cast<py::dict>()) {
       out += (out.empty() ? "" : ",") + py::str(k).cast<std::string>();
       if (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v)) {
-        for (py::handle bound : v) out += ":" + FlagText(flag, bound);
+        for (py::handle bound : v) out += ":" + OptionTextOf(name, bound);
       } else {
-        out += "=" + FlagText(flag, v);
+        out += "=" + OptionTextOf(name, v);
       }
     }
     return out;
   }
-  if (py::isinstance<py::sequence>(value)) return Join(value, flag);
+  if (py::isinstance<py::sequence>(value)) return Join(value, name);
   try {  // numpy scalars and the like
     return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
   } catch (const py::error_already_set&) {
-    throw Error::Usage("--" + flag + ": cannot read a " +
+    throw Error::Usage("--" + name + ": cannot read a " +
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   }
 }
 
-FlagScope::FlagScope(const std::string& command, const std::vector<std::string>& allowed,
-                     const py::kwargs& kwargs) {
-  argv_ = {"ringid." + command};
-  for (auto [key, value] : kwargs) {
-    const std::string name = py::str(key);
-    if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
-      throw py::type_error("ringid." + command + "() got an unexpected keyword argument '" + name +
-                           "' (it takes " + [&] {
-                             std::string list;
-                             for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-                             return list;
-                           }() + ")");
-    }
-    const std::string text = FlagText(name, value);
-    std::string error;
-    if (!SetFlagValue(name, text, &error)) throw Error::Usage(error);
-    argv_.push_back("--" + name + "=" + text);
-  }
+py::type_error UnexpectedKeyword(const std::string& command, const std::string& name,
+                                 const std::vector<OptionInfo>& options) {
+  std::string list;
+  for (const OptionInfo& o : options) list += (list.empty() ? "" : ", ") + o.name;
+  return py::type_error("ringid." + command + "() got an unexpected keyword argument '" + name +
+                        "' (it takes " + list + ")");
 }
 
-Provenance FlagScope::Run(std::optional<long> seed) const {
-  std::vector<char*> argv;
-  for (const std::string& a : argv_) argv.push_back(const_cast<char*>(a.c_str()));
-  return ThisRun(static_cast<int>(argv.size()), argv.data(), seed);
-}
-
-std::string FlagsDoc(const std::vector<std::string>& names) {
+std::string OptionsDoc(const std::vector<OptionInfo>& options) {
   std::string doc;
-  for (const std::string& name : names) {
-    gflags::CommandLineFlagInfo info;
-    if (!gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
-    const std::string value = info.type == "string" ? "'" + info.default_value + "'"
-                              : info.type == "bool" ? (info.default_value == "true" ? "True" : "False")
-                                                    : info.default_value;
-    doc += "    " + name + "=" + value + ": " + info.description + "\n";
+  for (const OptionInfo& o : options) {
+    const std::string value = o.kind == OptionKind::kText ? "'" + o.default_text + "'"
+                              : o.kind == OptionKind::kBool
+                                  ? (o.default_text == "true" ? "True" : "False")
+                                  : o.default_text;
+    doc += "    " + o.name + "=" + value + ": " + o.help + "\n";
   }
   return doc;
 }
 
-std::vector<std::string> Without(const std::vector<std::string>& names,
-                                 const std::vector<std::string>& drop) {
-  std::vector<std::string> out;
-  for (const std::string& n : names) {
-    if (std::find(drop.begin(), drop.end(), n) == drop.end()) out.push_back(n);
-  }
-  return out;
+Provenance RunOf(const std::vector<std::string>& argv,
+                 const std::vector<std::pair<std::string, std::string>>& inputs,
+                 std::optional<long> seed, Derivatives derivatives) {
+  std::vector<const char*> args;
+  for (const std::string& a : argv) args.push_back(a.c_str());
+  Provenance p = MakeProvenance(static_cast<int>(args.size()), args.data(), inputs, seed);
+  p.derivatives = derivatives;
+  return p;
 }
 
 std::optional<std::string> PathOf(py::handle source) {
@@ -193,7 +172,7 @@ std::shared_ptr<const LoadedResponses> LoadResponsesFrom(py::handle source) {
 }
 
 std::shared_ptr<const LoadedParameters> LoadParametersFrom(py::handle source,
-                                                           const std::map<Param, double>& set) {
+                                                           const ParameterValues& set) {
   auto in = std::make_shared<LoadedParameters>();
   LoadError error;
   if (const auto path = PathOf(source)) {

@@ -17,7 +17,8 @@ import sys
 
 MAX_FILE_LINES = 700
 MAX_FUNCTION_LINES = 120
-FOLDERS = ["model", "datasets", "estimation", "report", "apps", "validation", "benchmarks", "python"]
+FOLDERS = ["model", "datasets", "estimation", "report", "operations", "apps", "validation",
+           "benchmarks", "python"]
 MARKER = "size-check: data table"
 SCOPE = re.compile(r"^(inline\s+)?namespace\b|^extern$")  # `extern "C"`: its string is blanked
 FUNCTION_END = re.compile(

@@ -40,5 +40,34 @@ module=$(find "$prefix" -name 'ringid.cpython-*.so' -path '*dist-packages*' | he
 if [ -n "$module" ]; then
   PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c \
     "import ringid; ringid.identify('datasets/paper/table1.json', starts=1)"
+  # The module's sources build against the installed headers alone (issue 34):
+  # python/ copied away from the tree, so that no header of the tree is found.
+  mkdir -p "$work/module/src"
+  cp -r python "$work/module/src/"
+  cat > "$work/module/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.16)
+project(module LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 17)
+set(Python_EXECUTABLE /usr/bin/python3)
+set(PYBIND11_FINDPYTHON ON)
+find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
+find_package(pybind11 CONFIG REQUIRED)
+find_package(ringid REQUIRED)
+find_package(glog REQUIRED)
+file(GLOB sources src/python/*.cc)
+pybind11_add_module(ringid_module ${sources})
+set_target_properties(ringid_module PROPERTIES OUTPUT_NAME ringid)
+target_include_directories(ringid_module PRIVATE src)
+target_link_libraries(ringid_module PRIVATE ringid::ringid glog::glog)
+target_compile_definitions(ringid_module PRIVATE RINGID_VERSION="installed")
+CMAKE
+  cmake -S "$work/module" -B "$work/build-module" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+  cmake --build "$work/build-module" -j"$(nproc)" > /dev/null
+  PYTHONPATH="$work/build-module" /usr/bin/python3 -c "
+import ringid
+assert ringid.__version__ == 'installed', ringid.__file__
+p = ringid.Problem('datasets/paper/table1.json')
+assert p.jacobian(p.start).shape == (p.num_residuals, len(p.start))
+ringid.identify('datasets/paper/table1.json', starts=1)"
 fi
-echo "install check: examples and README snippet built against $prefix and ran"
+echo "install check: examples, README snippet and Python module built against $prefix and ran"

@@ -19,14 +19,26 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"datasets", {"model"}},
     {"estimation", {"model", "datasets"}},
     {"report", {"model", "datasets", "estimation"}},
+    {"operations", {"model", "datasets", "estimation", "report"}},
     {"validation", {"model", "datasets", "estimation", "report"}},
-    {"apps", {"model", "datasets", "estimation", "report", "validation"}},
+    {"apps", {"model", "datasets", "estimation", "report", "operations", "validation"}},
     // validation/: the speed cases shared with `ringid bench --suite=speed`.
     {"benchmarks", {"model", "datasets", "estimation", "report", "validation"}},
-    {"examples", {"model", "datasets", "estimation", "report"}},
-    // The Python module: the command line's flags and commands, in-process.
-    {"python", {"model", "datasets", "estimation", "report", "validation", "apps"}},
+    {"examples", {"model", "datasets", "estimation", "report", "operations"}},
+    // The Python module: the library's operations, in-process; only its
+    // public headers (PythonUsesOnlyThePublicLibrary).
+    {"python", {"model", "datasets", "estimation", "report", "operations"}},
 };
+
+// The project headers listed in cmake/public_headers.txt.
+std::set<std::string> PublicHeaders() {
+  std::ifstream list(fs::path(RINGID_SOURCE_DIR) / "cmake/public_headers.txt");
+  std::set<std::string> is_public;
+  for (std::string line; std::getline(list, line);) {
+    if (!line.empty() && line[0] != '#') is_public.insert(line);
+  }
+  return is_public;
+}
 
 TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {
   const std::regex include(R"re(^\s*#\s*include\s+[<"](?:ringid/)?([a-z_]+)/)re");
@@ -58,12 +70,7 @@ TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {
 // The installed headers (cmake/public_headers.txt) include only each other:
 // the install tree compiles, and no internal unit leaks into the API.
 TEST(LayeringTest, PublicHeadersIncludeOnlyPublicHeaders) {
-  std::ifstream list(fs::path(RINGID_SOURCE_DIR) / "cmake/public_headers.txt");
-  ASSERT_TRUE(list.good());
-  std::set<std::string> is_public;
-  for (std::string line; std::getline(list, line);) {
-    if (!line.empty() && line[0] != '#') is_public.insert(line);
-  }
+  const std::set<std::string> is_public = PublicHeaders();
   ASSERT_GT(is_public.size(), 20u);
   const std::regex include(R"re(^\s*#\s*include\s+"([a-z_]+/[a-z_]+\.h)")re");
   int checked = 0;
@@ -80,6 +87,33 @@ TEST(LayeringTest, PublicHeadersIncludeOnlyPublicHeaders) {
     }
   }
   EXPECT_GT(checked, 30);
+}
+
+// The Python module is written against the installed library (issue 34): it
+// includes only public headers, so it builds against an install, and never
+// the command line's flags (gflags), which are process-wide.
+TEST(LayeringTest, PythonUsesOnlyThePublicLibrary) {
+  const std::set<std::string> is_public = PublicHeaders();
+  const std::regex project(R"re(^\s*#\s*include\s+[<"](?:ringid/)?([a-z_]+/[a-z_]+\.h)[>"])re");
+  const std::regex gflags(R"re(gflags|GFLAGS|DEFINE_[a-z]|DECLARE_[a-z])re");
+  int checked = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(RINGID_SOURCE_DIR) / "python")) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".h" && ext != ".cc") continue;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::smatch m;
+      EXPECT_FALSE(std::regex_search(line, gflags)) << entry.path().string() << ":" << n << ": " << line;
+      if (!std::regex_search(line, m, project)) continue;
+      const std::string folder = m[1].str().substr(0, m[1].str().find('/'));
+      if (folder == "python" || !kMayInclude.count(folder)) continue;  // itself, or a library
+      ++checked;
+      EXPECT_TRUE(is_public.count(m[1])) << entry.path().string() << ":" << n << " includes "
+                                         << m[1] << ", which is not installed";
+    }
+  }
+  EXPECT_GT(checked, 10);
 }
 
 // A user's clone has no shared folder beside it: only the corpus accessor of

@@ -168,6 +168,24 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         from_file["dataset"] = from_result["dataset"]
         self.assertSameReport(from_result, from_file, tolerance=0)
 
+    def test_forces_refuse_set_over_a_fit_as_the_command_line(self):
+        # A fit's values carry its covariance: set= over them is refused, from
+        # the result held as from its report on the command line.
+        fit = ringid.identify(ROLLING, starts=1)
+        with tempfile.TemporaryDirectory() as scratch:
+            path = os.path.join(scratch, "fit.json")
+            with open(path, "w") as f:
+                f.write(fit.to_json())
+            line = cli_error("forces", "--parameters=" + path, "--set=I_ay=0.4",
+                             "--dataset=" + LUG_RESPONSE)
+            with self.assertRaises(ringid.Error) as caught:
+                ringid.forces(path, LUG_RESPONSE, set={"I_ay": 0.4})
+            self.assertEqual(str(caught.exception), line)
+        self.assertTrue(line.startswith("--set: not over an identify report"), line)
+        with self.assertRaises(ringid.Error) as caught:
+            ringid.forces(fit, LUG_RESPONSE, set={"I_ay": 0.4})
+        self.assertEqual(caught.exception.field, "set")
+
 
     def test_simulate_equals_the_command_line(self):
         with tempfile.TemporaryDirectory() as scratch:
@@ -278,6 +296,97 @@ class InputsAndResults(ReportTestCase):
     def test_an_unknown_keyword_is_a_type_error(self):
         with self.assertRaises(TypeError):
             ringid.identify(TABLE1, start=1)
+
+
+LUG_FORCES = """{"format": "ringid-lug-forces/1", "name": "tread", "lugs_per_revolution": 20,
+  "orders": [{"order": 1, "forces": {"F_x": {"re": 300, "im": 0}, "F_z": {"re": 0, "im": 900},
+                                     "F_y": {"re": -150, "im": 50}}},
+             {"order": 3, "forces": {"F_z": {"re": 200, "im": -100}}}]}"""
+GIVEN_FORCES = {1: {"F_x": 300, "F_z": 900j, "F_y": -150 + 50j}, 3: {"F_z": 200 - 100j}}
+# What the .tir cannot hold or does not give, from the car tire (as predict's test).
+TIR_REST = ["I_ay", "F_cz0", "c_bx", "c_bz", "c_btheta", "K_cx", "sigma_cx", "r_e0", "k_cz",
+            "c_by", "c_bgamma", "c_bpsi", "K_cy", "sigma_cy", "r_l0", "t_0"]
+
+
+class WhatTheModuleLacked(ReportTestCase):
+    """Issue 34: what the module could not do that the command line does."""
+
+    def test_simulate_with_lug_forces_equals_the_command_line_and_forces_recover_them(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            lugs, out = os.path.join(scratch, "lugs.json"), os.path.join(scratch, "response.json")
+            with open(lugs, "w") as f:
+                f.write(LUG_FORCES)
+            done = subprocess.run(
+                [BINARY, "simulate", "--parameters=" + CAR_TIRE, "--lug_forces=" + lugs,
+                 "--speeds=8,14", "--response_noise=1e-6", "--seed=3", "--output=" + out],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(out) as f:
+                cli = json.load(f)
+            r = ringid.simulate(CAR_TIRE, lug_forces=lugs, speeds=[8, 14], response_noise=1e-6,
+                                seed=3)
+        self.assertEqual(r.to_dict(), {"dataset": cli})
+        self.assertIsNone(r.truth)
+        forces = ringid.forces(CAR_TIRE, r.dataset).to_dict()
+        self.assertEqual(len(forces["conditions"]), 2)
+        for condition in forces["conditions"]:
+            self.assertEqual([o["order"] for o in condition["orders"]], [1, 3])
+            for o in condition["orders"]:
+                for name, estimate in o["forces"].items():
+                    truth = GIVEN_FORCES[o["order"]].get(name, 0)
+                    self.assertLess(abs(complex(estimate["re"], estimate["im"]) - truth), 1e-3 * 900)
+
+    def test_predict_gives_the_frequencies_at_every_speed(self):
+        r = ringid.predict(parameters=PARAMETERS, speeds=[20, 0, 10])
+        cli = cli_report("predict", "--parameters=" + PARAMETERS, "--speeds=20,0,10")
+        np.testing.assert_array_equal(r.speeds_m_s, [0, 10, 20])
+        self.assertEqual(r.frequencies.shape, (3, len(r.labels)))
+        self.assertEqual(r.damping_ratios.shape, (3, len(r.labels)))
+        for i, at in enumerate(cli["speeds"]):
+            self.assertEqual(at["speed_m_s"], r.speeds_m_s[i])
+            for j, label in enumerate(r.labels):
+                hz, zeta = at["modes"][label]
+                self.assertLessEqual(abs(r.frequencies[i, j] - hz), 1e-12 * hz)
+                self.assertLessEqual(abs(r.damping_ratios[i, j] - zeta), 1e-12)
+        np.testing.assert_allclose(r.frequencies[0], [m["model_hz"] for m in cli["modes"]],
+                                   rtol=1e-12)
+        standing = ringid.predict(parameters=PARAMETERS)
+        self.assertEqual(standing.frequencies.shape, (len(standing.labels),))
+
+    def test_a_tir_error_names_the_file_and_the_field(self):
+        for call, flags in [(lambda: ringid.predict(parameters=TIR), ["predict", "--parameters=" + TIR]),
+                            (lambda: ringid.forces(TIR, LUG_RESPONSE),
+                             ["forces", "--parameters=" + TIR, "--dataset=" + LUG_RESPONSE])]:
+            with self.subTest(command=flags[0]):
+                with self.assertRaises(ringid.Error) as caught:
+                    call()
+                e = caught.exception
+                self.assertEqual(str(e), cli_error(*flags))
+                self.assertEqual(e.file, TIR)
+                self.assertEqual(e.field, "I_ay")
+                self.assertTrue(e.message.startswith("missing (the model needs it; "), e.message)
+
+    def test_forces_take_set_over_a_tir_as_the_command_line(self):
+        car = ringid.load_parameters(CAR_TIRE)
+        given = {name: car[name] for name in TIR_REST}
+        r = ringid.forces(TIR, LUG_RESPONSE, set=given)
+        self.assertSameReport(r.to_dict(), cli_report(
+            "forces", "--parameters=" + TIR, "--dataset=" + LUG_RESPONSE,
+            "--set=" + ",".join("%s=%r" % (k, v) for k, v in given.items())))
+        loaded = ringid.forces(ringid.load_parameters(TIR, set=given), LUG_RESPONSE)
+        self.assertEqual(loaded.to_dict()["conditions"], r.to_dict()["conditions"])
+
+    def test_problem_jacobian_with_priors_matches_central_differences(self):
+        problem = ringid.Problem(os.path.join(SOURCE, "datasets", "paper", "table1_priors.json"))
+        x = problem.start
+        j = problem.jacobian(x)
+        self.assertEqual(j.shape, (problem.num_residuals, len(x)))
+        h = 1e-6
+        for i in range(len(x)):
+            e = np.zeros_like(x)
+            e[i] = h
+            column = (problem.residuals(x + e) - problem.residuals(x - e)) / (2 * h)
+            np.testing.assert_allclose(j[:, i], column, rtol=1e-5, atol=1e-6)
 
 
 class Installed(unittest.TestCase):
