@@ -1,6 +1,7 @@
 // The layers of the source tree: each folder includes only the folders below
 // it (README, "Architecture"), so the library never depends on the tool.
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -40,29 +41,37 @@ std::set<std::string> PublicHeaders() {
   return is_public;
 }
 
+// Calls line(path, number, text) for every line of the sources below
+// `folder` whose extension is one of `extensions`; the number of files read.
+int ForEachLine(const std::string& folder, const std::set<std::string>& extensions,
+                const std::function<void(const fs::path&, int, const std::string&)>& line) {
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(RINGID_SOURCE_DIR) / folder)) {
+    if (!extensions.count(entry.path().extension().string())) continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::string text;
+    for (int n = 1; std::getline(in, text); ++n) line(entry.path(), n, text);
+  }
+  return files;
+}
+
 TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {
   const std::regex include(R"re(^\s*#\s*include\s+[<"](?:ringid/)?([a-z_]+)/)re");
   int checked = 0;
   for (const auto& [folder, allowed] : kMayInclude) {
     const fs::path dir = fs::path(RINGID_SOURCE_DIR) / folder;
     ASSERT_TRUE(fs::is_directory(dir)) << dir;
-    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-      const std::string ext = entry.path().extension().string();
-      if (ext != ".h" && ext != ".cc") continue;
-      std::ifstream in(entry.path());
-      std::string line;
-      for (int n = 1; std::getline(in, line); ++n) {
-        std::smatch m;
-        if (!std::regex_search(line, m, include)) continue;
-        const std::string target = m[1];
-        if (target == folder) continue;
-        if (target == "tests") ADD_FAILURE() << entry.path().string() << ":" << n << " includes tests/";
-        if (!kMayInclude.count(target)) continue;  // a library
-        ++checked;
-        EXPECT_TRUE(allowed.count(target))
-            << entry.path().string() << ":" << n << " includes " << target << "/";
-      }
-    }
+    ForEachLine(folder, {".h", ".cc"}, [&](const fs::path& path, int n, const std::string& line) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) return;
+      const std::string target = m[1];
+      if (target == folder) return;
+      if (target == "tests") ADD_FAILURE() << path.string() << ":" << n << " includes tests/";
+      if (!kMayInclude.count(target)) return;  // a library
+      ++checked;
+      EXPECT_TRUE(allowed.count(target)) << path.string() << ":" << n << " includes " << target << "/";
+    });
   }
   EXPECT_GT(checked, 50);  // the scan found the includes it is about
 }
@@ -97,22 +106,16 @@ TEST(LayeringTest, PythonUsesOnlyThePublicLibrary) {
   const std::regex project(R"re(^\s*#\s*include\s+[<"](?:ringid/)?([a-z_]+/[a-z_]+\.h)[>"])re");
   const std::regex gflags(R"re(gflags|GFLAGS|DEFINE_[a-z]|DECLARE_[a-z])re");
   int checked = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(fs::path(RINGID_SOURCE_DIR) / "python")) {
-    const std::string ext = entry.path().extension().string();
-    if (ext != ".h" && ext != ".cc") continue;
-    std::ifstream in(entry.path());
-    std::string line;
-    for (int n = 1; std::getline(in, line); ++n) {
-      std::smatch m;
-      EXPECT_FALSE(std::regex_search(line, gflags)) << entry.path().string() << ":" << n << ": " << line;
-      if (!std::regex_search(line, m, project)) continue;
-      const std::string folder = m[1].str().substr(0, m[1].str().find('/'));
-      if (folder == "python" || !kMayInclude.count(folder)) continue;  // itself, or a library
-      ++checked;
-      EXPECT_TRUE(is_public.count(m[1])) << entry.path().string() << ":" << n << " includes "
-                                         << m[1] << ", which is not installed";
-    }
-  }
+  ForEachLine("python", {".h", ".cc"}, [&](const fs::path& path, int n, const std::string& line) {
+    std::smatch m;
+    EXPECT_FALSE(std::regex_search(line, gflags)) << path.string() << ":" << n << ": " << line;
+    if (!std::regex_search(line, m, project)) return;
+    const std::string folder = m[1].str().substr(0, m[1].str().find('/'));
+    if (folder == "python" || !kMayInclude.count(folder)) return;  // itself, or a library
+    ++checked;
+    EXPECT_TRUE(is_public.count(m[1])) << path.string() << ":" << n << " includes " << m[1]
+                                       << ", which is not installed";
+  });
   EXPECT_GT(checked, 10);
 }
 
@@ -123,18 +126,12 @@ TEST(LayeringTest, NoTestReadsTheSharedFolderButThroughTheCorpusAccessor) {
   const std::string needle = std::string("..") + "/shared";  // not this line itself
   int scanned = 0;
   for (const char* folder : {"tests", "python", "benchmarks", "validation"}) {
-    for (const auto& entry : fs::recursive_directory_iterator(fs::path(RINGID_SOURCE_DIR) / folder)) {
-      const std::string ext = entry.path().extension().string();
-      if (ext != ".h" && ext != ".cc" && ext != ".py" && ext != ".sh" && ext != ".txt") continue;
-      if (entry.path().stem() == "test_support") continue;
-      ++scanned;
-      std::ifstream in(entry.path());
-      std::string line;
-      for (int n = 1; std::getline(in, line); ++n) {
-        EXPECT_EQ(line.find(needle), std::string::npos)
-            << entry.path().string() << ":" << n << " reads the shared folder directly";
-      }
-    }
+    scanned += ForEachLine(folder, {".h", ".cc", ".py", ".sh", ".txt"},
+                           [&](const fs::path& path, int n, const std::string& line) {
+                             if (path.stem() == "test_support") return;
+                             EXPECT_EQ(line.find(needle), std::string::npos)
+                                 << path.string() << ":" << n << " reads the shared folder directly";
+                           });
   }
   EXPECT_GT(scanned, 30);
 }
