@@ -47,6 +47,14 @@ def cli_error(command, *flags):
     return done.stderr.strip()[len("ringid: "):]
 
 
+def written(folder, name, text):
+    """The path of file NAME in FOLDER, holding TEXT."""
+    path = os.path.join(folder, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def without_run(report):
     """The report less its provenance and its timings."""
     report = copy.deepcopy(report)
@@ -160,9 +168,7 @@ class OperationsEqualTheCommandLine(ReportTestCase):
     def test_forces_from_an_identify_result_equal_those_from_its_report(self):
         fit = ringid.identify(ROLLING, starts=1)
         with tempfile.TemporaryDirectory() as scratch:
-            path = os.path.join(scratch, "fit.json")
-            with open(path, "w") as f:
-                f.write(fit.to_json())
+            path = written(scratch, "fit.json", fit.to_json())
             from_file = ringid.forces(path, LUG_RESPONSE).to_dict()
         from_result = ringid.forces(fit, LUG_RESPONSE).to_dict()
         from_file["dataset"] = from_result["dataset"]
@@ -173,9 +179,7 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         # the result held as from its report on the command line.
         fit = ringid.identify(ROLLING, starts=1)
         with tempfile.TemporaryDirectory() as scratch:
-            path = os.path.join(scratch, "fit.json")
-            with open(path, "w") as f:
-                f.write(fit.to_json())
+            path = written(scratch, "fit.json", fit.to_json())
             line = cli_error("forces", "--parameters=" + path, "--set=I_ay=0.4",
                              "--dataset=" + LUG_RESPONSE)
             with self.assertRaises(ringid.Error) as caught:
@@ -185,7 +189,6 @@ class OperationsEqualTheCommandLine(ReportTestCase):
         with self.assertRaises(ringid.Error) as caught:
             ringid.forces(fit, LUG_RESPONSE, set={"I_ay": 0.4})
         self.assertEqual(caught.exception.field, "set")
-
 
     def test_simulate_equals_the_command_line(self):
         with tempfile.TemporaryDirectory() as scratch:
