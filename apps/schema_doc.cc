@@ -44,8 +44,9 @@ std::string ReportsMarkdown() {
 }
 
 std::string InputsMarkdown() {
-  DatasetFields format1, format2;
+  DatasetFields format1, format2, format3;
   format2.format = kDatasetFormat2;
+  format3.format = kDatasetFormat3;
   return std::string("# The input files of ringid\n\n") +
          "Made by `ringid inputs` from the files' own field lists; a test keeps this file\n"
          "equal to its output. The rules these types cannot say (ranges, names, what one\n"
@@ -56,7 +57,11 @@ std::string InputsMarkdown() {
          "## Modal dataset, format 1 (`" + kDatasetFormat1 + "`)\n\nRead by `--dataset`, written by "
          "`simulate --output`.\n\n" + InputSchema(format1) + "\n" +
          "## Modal dataset, format 2 (`" + kDatasetFormat2 + "`)\n\nSeveral conditions, rolling, "
-         "priors (conventions.md §7).\n\n" + InputSchema(format2) + "\n" +
+         "priors (conventions.md §7); a condition's `modes` are required, `static` is format 3's.\n\n" +
+         InputSchema(format2) + "\n" +
+         "## Dataset, format 3 (`" + kDatasetFormat3 + "`)\n\nFormat 2's fields, each condition "
+         "holding any of `modes` and `static` (static stiffnesses,\nstanding only; contract §10), at "
+         "least one.\n\n" + InputSchema(format3) + "\n" +
          "## Parameter set (`" + kParameterSetFormat + "`)\n\nRead by `--parameters`, written by "
          "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
          "value, a file without `format`, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +

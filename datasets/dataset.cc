@@ -265,6 +265,31 @@ void Priors(const std::map<std::string, PriorFields>& priors, Dataset* d) {
   }
 }
 
+// The static stiffnesses at `field` of a condition at `speed`, appended to
+// d->statics (contract §10): standing only, one per direction.
+void Statics(const std::vector<StaticFields>& statics, const std::string& field, int condition,
+             double speed, Dataset* d) {
+  if (statics.empty()) Fail(field, "must be a non-empty array");
+  if (speed > 0) {
+    Fail(field, "a static stiffness is measured standing: this condition's speed_m_s is not 0 "
+                "(contract §10)");
+  }
+  std::set<StaticDirection> seen;
+  for (size_t i = 0; i < statics.size(); ++i) {
+    const std::string f = field + "[" + std::to_string(i) + "]";
+    MeasuredStatic m;
+    m.direction = statics[i].kind;
+    m.value = Positive(statics[i].value, f + ".value");
+    if (std::abs(m.value) > kMaxParameterMagnitude) Fail(f + ".value", "is absurd: beyond " + Magnitude());
+    if (statics[i].sigma) m.sigma = Positive(*statics[i].sigma, f + ".sigma");
+    m.condition = condition;
+    if (!seen.insert(m.direction).second) {
+      Fail(f + ".kind", std::string("'") + ToString(m.direction) + "' appears twice");
+    }
+    d->statics.push_back(m);
+  }
+}
+
 // One element of "conditions", appended to d->conditions and its modes to
 // d->modes.
 void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* d) {
@@ -298,7 +323,16 @@ void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* 
   }
   const int index = static_cast<int>(d->conditions.size());
   d->conditions.push_back(c);
-  Modes(j.modes, field + ".modes", index, d);
+  if (d->format == 2 && !j.modes) Fail(field + ".modes", "missing");
+  if (d->format == 2 && j.statics) {
+    Fail(field + ".static", std::string("static stiffnesses need format \"") + kDatasetFormat3 +
+                                "\" (contract §10)");
+  }
+  if (j.modes) Modes(*j.modes, field + ".modes", index, d);
+  if (j.statics) Statics(*j.statics, field + ".static", index, c.speed_m_s, d);
+  if (!j.modes && !j.statics) {
+    Fail(field, "holds no measurement: give it modes or static (contract §10)");
+  }
 }
 
 // What the field list cannot say of a file the archive has read.
@@ -311,7 +345,7 @@ void Check(const DatasetFields& j, Dataset* d) {
     Modes(j.modes, "modes", 0, d);
     return;
   }
-  d->format = 2;
+  d->format = j.format == kDatasetFormat3 ? 3 : 2;
   if (j.per_condition) PerCondition(*j.per_condition, d);
   if (j.priors) Priors(*j.priors, d);
   if (j.conditions.empty()) Fail("conditions", "must be a non-empty array");
@@ -333,12 +367,13 @@ void CheckKind(const json& j) {
   }
   if (!j.contains("format")) Fail("format", "missing");
   const std::string format = String(j["format"], "format");
-  if (format != kDatasetFormat1 && format != kDatasetFormat2) {
-    Fail("format", std::string("must be \"") + kDatasetFormat1 + "\" or \"" + kDatasetFormat2 + "\"");
+  if (format != kDatasetFormat1 && format != kDatasetFormat2 && format != kDatasetFormat3) {
+    Fail("format", std::string("must be \"") + kDatasetFormat1 + "\", \"" + kDatasetFormat2 +
+                       "\" or \"" + kDatasetFormat3 + "\"");
   }
-  if (format == kDatasetFormat2 && j.contains("modes")) {
-    Fail("modes", "not used in format 2: each condition gives its own modes "
-                  "(conditions[i].modes)");
+  if (format != kDatasetFormat1 && j.contains("modes")) {
+    Fail("modes", "not used in format " + format.substr(format.size() - 1) +
+                      ": each condition gives its own modes (conditions[i].modes)");
   }
 }
 

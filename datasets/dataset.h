@@ -12,6 +12,7 @@
 
 #include "model/names.h"
 #include "model/parameters.h"
+#include "model/static_stiffness.h"
 
 namespace ringid {
 
@@ -25,6 +26,17 @@ struct MeasuredMode {
   std::optional<double> shape_sigma;
   int condition = 0;  // index into Dataset::conditions
 };
+
+// A static stiffness measured in a standing condition (contract §10): the
+// force at the contact per unit road displacement in `direction` (N/m).
+struct MeasuredStatic {
+  StaticDirection direction = StaticDirection::kVertical;
+  double value = 0;
+  std::optional<double> sigma;  // kDefaultStaticRelativeSigma of value where absent
+  int condition = 0;            // index into Dataset::conditions
+};
+// Contract §10: without `sigma`, 2 % of the value.
+inline constexpr double kDefaultStaticRelativeSigma = 0.02;
 
 // One test condition of docs/conventions.md §7: a speed and the values of the
 // per-condition parameters that are known or seeded there.
@@ -54,25 +66,31 @@ struct Dataset {
   std::map<Param, double> known;
   std::map<Param, double> initial;
   std::map<Param, Param> ties;  // parameter -> the one whose value it shares
-  int format = 1;               // 1 or 2 (docs/conventions.md §3, §7)
+  int format = 1;               // 1, 2 or 3 (docs/conventions.md §3, §7, §10)
   std::map<Param, Prior> priors;
   std::vector<Param> per_condition;  // catalogue order; one value per condition
   // At least one; a format-1 file has one, "standing" at speed 0.
   std::vector<Condition> conditions = {Condition{}};
   // Every measured mode of every condition, each naming its condition.
   std::vector<MeasuredMode> modes;
+  // Every static stiffness of every condition (format 3), each naming its
+  // condition.
+  std::vector<MeasuredStatic> statics;
 
   bool IsPerCondition(Param p) const;
+  // Whether the conditions are named in reports (formats 2 and 3).
+  bool NamesConditions() const { return format >= 2; }
 };
 
 // The "format" of each kind of file (docs/conventions.md §3, §7).
 inline constexpr char kDatasetFormat1[] = "ringid-modal-dataset/1";
 inline constexpr char kDatasetFormat2[] = "ringid-modal-dataset/2";
+inline constexpr char kDatasetFormat3[] = "ringid-dataset/3";
 inline constexpr char kParameterSetFormat[] = "ringid-parameters/1";
 
 // Limits the loader enforces (README "Limits").
 // At most one measured mode per mode label of docs/conventions.md §1, one
-// shape component per degree of freedom.
+// shape component per degree of freedom, one static stiffness per direction.
 inline constexpr int kMaxModes = 7;
 inline constexpr int kMaxJsonDepth = 16;
 inline constexpr long kMaxFileBytes = 4 << 20;

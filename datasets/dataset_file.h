@@ -57,11 +57,28 @@ struct PriorFields {
   }
 };
 
+// A static stiffness (contract §10).
+struct StaticFields {
+  StaticDirection kind = StaticDirection::kVertical;
+  double value = 0;
+  std::optional<double> sigma;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("kind", &kind);
+    a->Visit("value", &value);
+    a->VisitIfSet("sigma", &sigma);
+  }
+};
+
+// A condition: format 2 requires its modes (the loader says so); format 3
+// holds any of modes and static, at least one measurement in all.
 struct ConditionFields {
   std::string name;
   std::optional<double> speed_m_s;  // 0 when absent
   std::optional<ParameterValues> known, initial;
-  std::vector<ModeFields> modes;
+  std::optional<std::vector<ModeFields>> modes;
+  std::optional<std::vector<StaticFields>> statics;  // "static", format 3
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -69,7 +86,8 @@ struct ConditionFields {
     a->VisitIfSet("speed_m_s", &speed_m_s);
     a->VisitIfSet("known", &known);
     a->VisitIfSet("initial", &initial);
-    a->Visit("modes", &modes);
+    a->VisitIfSet("modes", &modes);
+    a->VisitIfSet("static", &statics);
   }
 };
 
@@ -92,7 +110,7 @@ struct DatasetFields {
     a->VisitIfSet("known", &known);
     a->VisitIfSet("initial", &initial);
     a->VisitIfSet("ties", &ties);
-    if (format != kDatasetFormat2) {
+    if (format != kDatasetFormat2 && format != kDatasetFormat3) {
       a->Visit("modes", &modes);
       return;
     }

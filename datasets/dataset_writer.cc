@@ -52,6 +52,9 @@ bool NeedsFormat2(const Dataset& d) {
          !c.known.empty() || !c.initial.empty();
 }
 
+// Whether formats 1 and 2 cannot hold `d`.
+bool NeedsFormat3(const Dataset& d) { return d.format == 3 || !d.statics.empty(); }
+
 }  // namespace
 
 std::string ParameterSetToJson(const Parameters& p, const std::string& name,
@@ -67,7 +70,9 @@ std::string ParameterSetToJson(const Parameters& p, const std::string& name,
 
 DatasetFields FieldsOf(const Dataset& d) {
   DatasetFields j;
-  j.format = NeedsFormat2(d) ? kDatasetFormat2 : kDatasetFormat1;
+  j.format = NeedsFormat3(d)   ? kDatasetFormat3
+             : NeedsFormat2(d) ? kDatasetFormat2
+                               : kDatasetFormat1;
   j.name = d.name;
   if (!d.description.empty()) j.description = d.description;
   j.known = GivenValues(d.known);
@@ -102,8 +107,16 @@ DatasetFields FieldsOf(const Dataset& d) {
     o.known = GivenValues(c.known);
     o.initial = GivenValues(c.initial);
     for (const MeasuredMode& m : d.modes) {
-      if (m.condition == static_cast<int>(i)) o.modes.push_back(FieldsOf(m));
+      if (m.condition != static_cast<int>(i)) continue;
+      if (!o.modes) o.modes.emplace();
+      o.modes->push_back(FieldsOf(m));
     }
+    for (const MeasuredStatic& m : d.statics) {
+      if (m.condition != static_cast<int>(i)) continue;
+      if (!o.statics) o.statics.emplace();
+      o.statics->push_back({m.direction, m.value, m.sigma});
+    }
+    if (j.format == kDatasetFormat2 && !o.modes) o.modes.emplace();  // a condition's modes are required
     j.conditions.push_back(o);
   }
   return j;

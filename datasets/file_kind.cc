@@ -43,6 +43,7 @@ SniffedFile SniffFile(const std::string& path, const std::string& text) {
 FileKind FormatKind(const std::string& format) {
   static const std::pair<const char*, FileKind> kFormats[] = {
       {kDatasetFormat1, FileKind::kModalDataset},    {kDatasetFormat2, FileKind::kModalDataset},
+      {kDatasetFormat3, FileKind::kModalDataset},
       {kParameterSetFormat, FileKind::kParameterSet}, {kTruthFormat, FileKind::kTruth},
       {kResponseFormat, FileKind::kResponseDataset},  {kLugForcesFormat, FileKind::kLugForces},
       {kUffMapFormat, FileKind::kUffMap},

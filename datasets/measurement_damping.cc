@@ -6,10 +6,13 @@
 namespace ringid {
 namespace {
 
-class Damping : public Measurement {
+class Damping : public ModeQuantity {
  public:
   Quantity quantity() const override { return Quantity::kDamping; }
   const char* description() const override { return "damping ratio"; }
+  const char* unit() const override { return "-"; }
+  std::string Count(int n) const override { return std::to_string(n) + " damping ratios"; }
+  bool SetByDampers() const override { return true; }
   bool In(const MeasuredMode& m) const override { return m.damping_ratio.has_value(); }
   int Rows(const MeasuredMode& m, const MeasurementOptions& o) const override {
     return o.use_damping && In(m) ? 1 : 0;
@@ -21,6 +24,9 @@ class Damping : public Measurement {
     if (!params) return;
     for (int p : *params) dr(0, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
   }
+  void AddMisfit(const MeasuredMode&, int, double r, ModeMisfit* w) const override {
+    w->damping_sigma = r;
+  }
   bool Scalar(const MeasuredMode& m, const MeasurementOptions& o, double* value,
               double* sigma) const override {
     *value = *m.damping_ratio;
@@ -30,8 +36,9 @@ class Damping : public Measurement {
   void Measure(const Mode& mode, const MeasurementOptions&, MeasuredMode* m) const override {
     if (In(*m)) m->damping_ratio = Clamped(mode.damping_ratio);
   }
-  void Add(const Mode& mode, const MeasurementOptions&, double sigma,
+  void Add(const Mode& mode, const MeasurementOptions&, const AdviceSigmas& sigmas,
            MeasuredMode* m) const override {
+    const double sigma = sigmas.damping;
     m->damping_ratio = Clamped(mode.damping_ratio);
     m->damping_sigma = sigma;
   }
@@ -56,7 +63,7 @@ class Damping : public Measurement {
 
 }  // namespace
 
-const Measurement& DampingMeasurement() {
+const ModeQuantity& DampingMeasurement() {
   static const Damping unit;
   return unit;
 }

@@ -4,10 +4,12 @@
 namespace ringid {
 namespace {
 
-class Frequency : public Measurement {
+class Frequency : public ModeQuantity {
  public:
   Quantity quantity() const override { return Quantity::kFrequency; }
   const char* description() const override { return "natural frequency"; }
+  const char* unit() const override { return "Hz"; }
+  std::string Count(int n) const override { return std::to_string(n) + " frequencies"; }
   bool In(const MeasuredMode&) const override { return true; }
   int Rows(const MeasuredMode&, const MeasurementOptions&) const override { return 1; }
   void Evaluate(const MeasuredMode& m, const Mode& mode, const MeasurementOptions& o, double* r,
@@ -16,6 +18,9 @@ class Frequency : public Measurement {
     r[0] = (mode.frequency_hz - m.frequency_hz) / sigma;
     if (!params) return;
     for (int p : *params) dr(0, p) = mode.derivatives->Frequency(p) / sigma;
+  }
+  void AddMisfit(const MeasuredMode&, int, double r, ModeMisfit* w) const override {
+    w->frequency_sigma = r;
   }
   bool Scalar(const MeasuredMode& m, const MeasurementOptions& o, double* value,
               double* sigma) const override {
@@ -26,8 +31,9 @@ class Frequency : public Measurement {
   void Measure(const Mode& mode, const MeasurementOptions&, MeasuredMode* m) const override {
     m->frequency_hz = mode.frequency_hz;
   }
-  void Add(const Mode& mode, const MeasurementOptions& o, double sigma,
+  void Add(const Mode& mode, const MeasurementOptions& o, const AdviceSigmas& sigmas,
            MeasuredMode* m) const override {
+    const double sigma = sigmas.frequency_relative * mode.frequency_hz;
     m->frequency_hz = mode.frequency_hz;
     m->frequency_sigma_hz = sigma;
   }
@@ -47,7 +53,7 @@ double FrequencySigma(const MeasuredMode& m, const MeasurementOptions& o) {
   return o.relative_sigma * m.frequency_hz;
 }
 
-const Measurement& FrequencyMeasurement() {
+const ModeQuantity& FrequencyMeasurement() {
   static const Frequency unit;
   return unit;
 }

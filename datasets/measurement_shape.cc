@@ -8,13 +8,19 @@
 namespace ringid {
 namespace {
 
-class Shape : public Measurement {
+class Shape : public ModeQuantity {
  public:
   Quantity quantity() const override { return Quantity::kShape; }
   const char* description() const override { return "mode shape"; }
+  const char* unit() const override { return "-"; }
+  std::string Count(int n) const override { return std::to_string(n) + " shape components beyond their scales"; }
   bool In(const MeasuredMode& m) const override { return !m.shape.empty(); }
   int Rows(const MeasuredMode& m, const MeasurementOptions& o) const override {
     return o.use_shapes ? static_cast<int>(m.shape.size()) : 0;
+  }
+  // The scale is fitted: a shape of n components observes n - 1 numbers.
+  int Scales(const MeasuredMode& m, const MeasurementOptions& o) const override {
+    return Rows(m, o) > 0 ? 1 : 0;
   }
   // The measured shape scaled to a largest component of 1, the model shape by
   // least squares onto it.
@@ -54,12 +60,20 @@ class Shape : public Measurement {
       }
     }
   }
+  void AddMisfit(const MeasuredMode& m, int component, double r, ModeMisfit* w) const override {
+    w->shape_chi2 += r * r;
+    if (std::abs(r) > std::abs(w->worst_component_sigma)) {
+      w->worst_component_sigma = r;
+      w->worst_component = DofName(m.shape[component].first);
+    }
+  }
   void Measure(const Mode& mode, const MeasurementOptions& o, MeasuredMode* m) const override {
     const RealShapeVector u = ComparableShape(mode, o.shape_convention);
     for (auto& [dof, v] : m->shape) v = u[static_cast<int>(dof)];
   }
-  void Add(const Mode& mode, const MeasurementOptions& o, double sigma,
+  void Add(const Mode& mode, const MeasurementOptions& o, const AdviceSigmas& sigmas,
            MeasuredMode* m) const override {
+    const double sigma = sigmas.shape;
     m->shape.clear();
     for (int d = 0; d < kNumDofs; ++d) {
       if (DofPlane(static_cast<Dof>(d)) == mode.plane()) m->shape.emplace_back(static_cast<Dof>(d), 0);
@@ -77,7 +91,7 @@ class Shape : public Measurement {
 
 }  // namespace
 
-const Measurement& ShapeMeasurement() {
+const ModeQuantity& ShapeMeasurement() {
   static const Shape unit;
   return unit;
 }

@@ -12,11 +12,20 @@
 
 namespace ringid {
 
+double SimulateOptions::Noise(Quantity q) const {
+  const double noise[] = {frequency_noise, damping_noise, shape_noise, static_noise};
+  static_assert(sizeof noise / sizeof noise[0] == EnumNames<Quantity>::kNames.size());
+  return noise[static_cast<int>(q)];
+}
+
 bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& o, std::mt19937_64* rng, Dataset* d,
               std::string* error) {
   std::normal_distribution<double> n(0, 1);
   d->modes.clear();
+  d->statics.clear();
+  const bool standing_statics = !o.statics.empty();
+  if (standing_statics) d->format = 3;  // what a dataset with statics reads back as
   for (int c = 0; c < static_cast<int>(d->conditions.size()); ++c) {
   const Condition& condition = d->conditions[c];
   Parameters p = truth;
@@ -48,14 +57,26 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
       const int dofs = o.hub_components ? kNumDofs : static_cast<int>(Dof::kXa);
       for (int i = 0; i < dofs; ++i) mm.shape.emplace_back(static_cast<Dof>(i), 0);
     }
-    const std::map<Quantity, double> noise = {{Quantity::kFrequency, o.frequency_noise},
-                                              {Quantity::kDamping, o.damping_noise},
-                                              {Quantity::kShape, o.shape_noise}};
-    for (const Measurement* unit : Measurements()) {
+    for (const ModeQuantity* unit : ModeQuantities()) {
       unit->Measure(*m, MeasurementOptions{}, &mm);
-      unit->AddNoise(noise.at(unit->quantity()), [&] { return n(*rng); }, &mm);
+      unit->AddNoise(o.Noise(unit->quantity()), [&] { return n(*rng); }, &mm);
     }
     d->modes.push_back(mm);
+  }
+  // The static stiffnesses asked for, in a standing condition (contract §10).
+  if (condition.speed_m_s == 0) {
+    const Measurement& unit = MeasurementOf(Quantity::kStatic);
+    const ModelAt at{&model, &p, &s, nullptr};
+    for (StaticDirection direction : o.statics) {
+      d->statics.push_back({direction, 0, std::nullopt, c});
+      const int i = static_cast<int>(d->statics.size()) - 1;
+      if (!unit.Measure(at, i, MeasurementOptions{}, d)) {
+        *error = std::string("the truth's static ") + ToString(direction) + " stiffness" + where +
+                 " cannot be solved";
+        return false;
+      }
+      unit.AddNoise(o.Noise(Quantity::kStatic), [&] { return n(*rng); }, i, d);
+    }
   }
   }
   return true;

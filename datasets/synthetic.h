@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "datasets/measurement.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
@@ -17,17 +18,23 @@ struct SimulateOptions {
   double frequency_noise = 0.0025;
   double damping_noise = 0.10;
   double shape_noise = 0.02;
+  double static_noise = 0.02;  // static stiffness, relative sd
   bool damping = true;
   bool shapes = true;
   // Shapes on all seven belt and rim degrees of freedom plus the hub's x_a,
   // z_a, y_a, as rim accelerometers give them.
   bool hub_components = true;
+  // Static stiffnesses measured in each standing condition (contract §10).
+  std::vector<StaticDirection> statics;
+  // The noise level of quantity q (above).
+  double Noise(Quantity q) const;
 };
 
 // Measures the seven modes of docs/conventions.md §1 of `truth` under
 // `model` in each condition of `dataset` (at its speed, with its own known
-// values): fills `dataset->modes` (sigmas equal to the noise levels) and
-// leaves its other fields as they are. False with a reason when the truth
+// values), and the static stiffnesses asked for in each standing one: fills
+// `dataset->modes` and `dataset->statics` (sigmas equal to the noise levels)
+// and leaves its other fields as they are. False with a reason when the truth
 // model cannot be solved or one of those modes is overdamped.
 bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& options, std::mt19937_64* rng,

@@ -34,10 +34,12 @@ bool Remeasure(const ModalModel& model, const Parameters& truth, const Dataset& 
     if (!solutions.back().ok) return false;
   }
   *out = dataset;
-  for (MeasuredMode& m : out->modes) {
-    const Mode* mode = solutions[m.condition].Find(m.label);
-    if (!mode) return false;
-    for (const Measurement* unit : Measurements()) unit->Measure(*mode, options, &m);
+  for (const Measurement* unit : Measurements()) {
+    for (int i = 0; i < unit->records().Items(*out); ++i) {
+      const int c = unit->records().ConditionOf(*out, i);
+      const ModelAt at{&model, &truth, &solutions[c], nullptr};  // modes by label
+      if (!unit->Measure(at, i, options, out)) return false;
+    }
   }
   return true;
 }

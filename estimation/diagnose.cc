@@ -25,33 +25,17 @@ using internal::ParameterSetup;
 
 namespace {
 
-// The weighted residuals of `dataset` under `model` at `p`, per slot.
-// Per measured mode: its residuals in sigma, by observable.
-std::vector<ModeMisfit> Misfits(const std::vector<ModalResiduals::Slot>& slots,
-                                const std::vector<double>& res, const Dataset& dataset) {
-  std::vector<ModeMisfit> where;
-  for (size_t i = 0; i < dataset.modes.size(); ++i) {
-    ModeMisfit w;
-    w.label = dataset.modes[i].label;
-    if (dataset.format == 2) w.condition = dataset.conditions[dataset.modes[i].condition].name;
-    for (size_t k = 0; k < slots.size(); ++k) {
-      if (slots[k].mode != static_cast<int>(i)) continue;
-      w.chi2 += res[k] * res[k];
-      switch (slots[k].measurement->quantity()) {
-        case Quantity::kFrequency: w.frequency_sigma = res[k]; break;
-        case Quantity::kDamping: w.damping_sigma = res[k]; break;
-        case Quantity::kShape:
-          w.shape_chi2 += res[k] * res[k];
-          if (std::abs(res[k]) > std::abs(w.worst_component_sigma)) {
-            w.worst_component_sigma = res[k];
-            w.worst_component = DofName(dataset.modes[i].shape[slots[k].component].first);
-          }
-          break;
-      }
+// Per measured mode (and other measurement): its residuals in sigma, by
+// observable (Measurement::AddMisfit).
+MisfitTable Misfits(const std::vector<ModalResiduals::Slot>& slots,
+                    const std::vector<double>& res, const Dataset& dataset) {
+  MisfitTable table;
+  for (size_t k = 0; k < slots.size(); ++k) {
+    if (slots[k].measurement) {
+      slots[k].measurement->AddMisfit(dataset, slots[k].item, slots[k].component, res[k], &table);
     }
-    where.push_back(w);
   }
-  return where;
+  return table;
 }
 
 // The weighted residuals of `dataset` under `model` at the coordinates x of
@@ -71,7 +55,9 @@ std::vector<double> ModeChi2(const std::vector<ModalResiduals::Slot>& slots,
                              const std::vector<double>& r, size_t modes) {
   std::vector<double> chi2(modes, 0);
   for (size_t k = 0; k < slots.size(); ++k) {
-    if (slots[k].mode >= 0) chi2[slots[k].mode] += r[k] * r[k];
+    if (slots[k].measurement && &slots[k].measurement->records() == &ModeRecords()) {
+      chi2[slots[k].item] += r[k] * r[k];
+    }
   }
   return chi2;
 }
@@ -348,7 +334,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   std::vector<double> er;
   if (ResidualsAt(model, dataset, s.x, &es, &er, o.fit.residuals)) {
     f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
-    f.where = Misfits(es, er, dataset);
+    f.where = Misfits(es, er, dataset).modes;
   }
   if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
   f.minimal_detectable =
@@ -523,7 +509,9 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     return;
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
-  r->where = Misfits(slots, res, dataset);
+  MisfitTable table = Misfits(slots, res, dataset);
+  r->where = std::move(table.modes);
+  if (!table.others.empty()) r->where_else = std::move(table.others);
 
   // Which effect: ranked by AIC.
   std::vector<int> order(r->ranking.size());
@@ -586,6 +574,12 @@ std::string DiagnosisResult::FullReport() const {
                   w.frequency_sigma, w.damping_sigma ? std::to_string(*w.damping_sigma).substr(0, 6).c_str() : "-",
                   w.shape_chi2, w.worst_component.c_str(), w.worst_component_sigma,
                   i < mode_shrink.size() ? ("   shrink " + std::to_string(static_cast<int>(std::round(100 * mode_shrink[i]))) + " %").c_str() : "");
+    o << line;
+  }
+  for (const ItemMisfit& w : where_else.value_or(std::vector<ItemMisfit>{})) {
+    std::snprintf(line, sizeof line, "  %-*s %7.1f  (%+.2f sigma)\n", width,
+                  ((w.condition ? *w.condition + " " : "") + w.name).c_str(), w.sigma * w.sigma,
+                  w.sigma);
     o << line;
   }
   for (const std::string& a : absorbed) o << "  absorbed: " << a << "\n";

@@ -47,34 +47,6 @@ struct DiagnoseOptions {
   bool IsValid(std::string* why) const;
 };
 
-struct ModeMisfit {
-  std::optional<std::string> condition;  // format 2: the condition's name
-  ModeLabel label;
-  double chi2 = 0;                      // all its residuals, in sigma^2
-  double frequency_sigma = 0;           // (model - measured) / sigma
-  std::optional<double> damping_sigma;  // likewise
-  double shape_chi2 = 0;
-  std::string worst_component;          // the shape component furthest off
-  double worst_component_sigma = 0;
-
-  // "label", or "condition label" for format 2.
-  std::string Name() const {
-    return condition ? *condition + " " + LabelName(label) : std::string(LabelName(label));
-  }
-
-  template <class Archive>
-  void Serialize(Archive* a) {
-    a->VisitIfSet("condition", &condition);
-    a->Visit("label", &label);
-    a->Visit("chi2", &chi2);
-    a->Visit("frequency_sigma", &frequency_sigma);
-    a->Visit("damping_sigma", &damping_sigma);
-    a->Visit("shape_chi2", &shape_chi2);
-    a->Visit("worst_component", &worst_component);
-    a->Visit("worst_component_sigma", &worst_component_sigma);
-  }
-};
-
 inline constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN();
 
 struct EffectFit {
@@ -142,8 +114,9 @@ struct DiagnosisResult {
   std::optional<double> p_value;  // none when no degree of freedom is left
   bool significant = false;
   double gap_before = 0;          // chi2 in excess of its dof
-  // Where it lies.
+  // Where it lies: per measured mode, and per other measurement where any.
   std::vector<ModeMisfit> where;
+  std::optional<std::vector<ItemMisfit>> where_else;
   // Baseline parameters that had absorbed part of the gap: moved beyond
   // absorbed_factor by the verdict's fit, or beyond kPriorConflictZ of a
   // declared prior where there is no verdict.
@@ -173,6 +146,7 @@ struct DiagnosisResult {
       g->Visit("excess", &gap_before);
     });
     a->Visit("where", &where);
+    a->VisitIfSet("where_else", &where_else);
     a->Visit("mode_shrink", &mode_shrink);
     a->Visit("absorbed", &absorbed);
     a->Visit("ranking", &ranking);

@@ -320,43 +320,52 @@ struct Candidate {
   Eigen::MatrixXd extra;
 };
 
-// The standard error advice assumes of a quantity the test could add.
-double AdviceSigma(const Measurement& unit, const IdentifiabilityOptions& o) {
-  return unit.quantity() == Quantity::kDamping ? o.advice_damping_sigma : o.advice_shape_sigma;
+// The standard errors advice assumes of what the test could add.
+AdviceSigmas SigmasOf(const IdentifiabilityOptions& o) {
+  AdviceSigmas sigmas;
+  sigmas.damping = o.advice_damping_sigma;
+  sigmas.shape = o.advice_shape_sigma;
+  return sigmas;
 }
 
-// The dataset with every damping ratio and shape the model predicts at its
-// fitted modes, where the test did not measure (or the fit did not use) them.
-Dataset WithEveryObservation(const Dataset& dataset, const std::vector<ModalSolution>& solutions,
+// The dataset with every observation the model predicts at xhat where the
+// test did not measure (or the fit did not use) it: damping ratios and
+// shapes of the fitted modes, static stiffnesses of a standing condition.
+Dataset WithEveryObservation(const Problem& problem, const Eigen::VectorXd& xhat,
+                             const std::vector<ModalSolution>& solutions,
                              const std::vector<int>& pairs, const IdentifiabilityOptions& o) {
-  Dataset more = dataset;
-  for (size_t m = 0; m < more.modes.size(); ++m) {
-    MeasuredMode& mm = more.modes[m];
-    const Mode& mode = solutions[mm.condition].modes[pairs[m]];
+  Dataset more = problem.dataset();
+  for (int c = 0; c < static_cast<int>(more.conditions.size()); ++c) {
+    const Parameters p = problem.setup().Decode(xhat.data(), c);
+    const ModelAt at{&problem.model(), &p, &solutions[c], &pairs};
     for (const Measurement* unit : Measurements()) {
-      if (unit->Rows(mm, o.fit.residuals) == 0) unit->Add(mode, o.fit.residuals, AdviceSigma(*unit, o), &mm);
+      unit->AddUnmeasured(at, c, o.fit.residuals, SigmasOf(o), &more);
     }
   }
   return more;
 }
 
-// The candidates: each unmeasured damping ratio and shape (rows of the
-// augmented problem), and a known value of each free parameter.
+// The candidates: each observation the augmented problem adds (its rows),
+// and a known value of each free parameter.
 std::vector<Candidate> Candidates(const Dataset& dataset, const Problem& augmented,
                                   const Eigen::VectorXd& xhat, const IdentifiabilityOptions& o) {
   std::vector<Candidate> candidates;
   const auto& slots = augmented.residuals().slots();
+  const Dataset& more = augmented.dataset();
   const ParameterSetup& setup = augmented.setup();
-  for (size_t m = 0; m < dataset.modes.size(); ++m) {
-    const std::string label = LabelName(dataset.modes[m].label);
-    const MeasuredMode& original = dataset.modes[m];
-    for (const Measurement* unit : Measurements()) {
-      if (unit->Rows(original, o.fit.residuals) > 0) continue;  // measured and used
-      Candidate more{std::string(unit->description()) + " of the " + label + " mode", {}, {}};
-      for (size_t k = 0; k < slots.size(); ++k) {
-        if (slots[k].mode == static_cast<int>(m) && slots[k].measurement == unit) more.rows.push_back(k);
+  for (const MeasurementRecords* records : Records()) {
+    for (int i = 0; i < records->Items(more); ++i) {
+      for (const Measurement* unit : Measurements()) {
+        if (&unit->records() != records) continue;
+        if (i < records->Items(dataset) && unit->Rows(dataset, i, o.fit.residuals) > 0) {
+          continue;  // measured and used
+        }
+        Candidate added{unit->Addition(more, i), {}, {}};
+        for (size_t k = 0; k < slots.size(); ++k) {
+          if (slots[k].measurement == unit && slots[k].item == i) added.rows.push_back(k);
+        }
+        if (!added.rows.empty()) candidates.push_back(added);
       }
-      if (!more.rows.empty()) candidates.push_back(more);
     }
   }
   const int n = setup.size();
@@ -385,7 +394,7 @@ std::optional<Candidate> ConditionCandidate(const Problem& problem, const Eigen:
     if (c.speed_m_s == speed && load_factor == 1) return std::nullopt;  // measured already
   }
   Dataset more = d;
-  more.format = 2;
+  more.format = std::max(more.format, 2);
   Condition added;
   char name[64];
   std::snprintf(name, sizeof name, "candidate_%g", speed);
@@ -409,15 +418,12 @@ std::optional<Candidate> ConditionCandidate(const Problem& problem, const Eigen:
   if (!s.ok) return std::nullopt;
   const int index = static_cast<int>(more.conditions.size());
   more.conditions.push_back(added);
-  for (const MeasuredMode& m : d.modes) {
-    const Mode* mode = m.condition == 0 ? s.Find(m.label) : nullptr;
-    if (!mode) continue;
-    MeasuredMode mm = m;
-    mm.condition = index;
-    for (const Measurement* unit : Measurements()) unit->Measure(*mode, o.fit.residuals, &mm);
-    // A frequency's sigma keeps its share of the frequency.
-    if (m.frequency_sigma_hz) mm.frequency_sigma_hz = *m.frequency_sigma_hz / m.frequency_hz * mode->frequency_hz;
-    more.modes.push_back(mm);
+  const ModelAt at{&problem.model(), &p, &s, nullptr};  // modes by label
+  for (const MeasurementRecords* records : Records()) records->Repeat(at, 0, index, speed, &more);
+  for (const Measurement* unit : Measurements()) {
+    for (int i = 0; i < unit->records().Items(more); ++i) {
+      if (unit->records().ConditionOf(more, i) == index) unit->Measure(at, i, o.fit.residuals, &more);
+    }
   }
   Status status;
   const auto augmented = Problem::Create(problem.model(), more, o.fit.residuals, &status);
@@ -444,7 +450,7 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
   all.use_damping = all.use_shapes = true;
   Status status;
   const auto augmented = Problem::Create(
-      problem.model(), WithEveryObservation(problem.dataset(), solutions, pairs, o), all, &status);
+      problem.model(), WithEveryObservation(problem, xhat, solutions, pairs, o), all, &status);
   Eigen::MatrixXd Ja;
   if (!augmented || !EvaluateJacobian(augmented->residuals(), xhat, &Ja)) return {};
   std::vector<Candidate> candidates = Candidates(problem.dataset(), *augmented, xhat, o);

@@ -324,34 +324,34 @@ std::string IdentifyResult::OnBounds() const {
 namespace {
 
 // Data with fewer observables than free parameters cannot set them all: said
-// in one sentence, empty otherwise. A shape's scale is fitted, so a shape of n
-// components observes n - 1 numbers.
+// in one sentence, empty otherwise. A measurement's fitted scales (a shape's)
+// are not observed (Measurement::Scales).
 std::string FewObservables(const ModalResiduals& residuals) {
-  int frequencies = 0, dampings = 0, components = 0, priors = 0;
-  std::set<int> shaped;
-  for (const ModalResiduals::Slot& slot : residuals.slots()) {
-    if (!slot.measurement) {
-      ++priors;
-      continue;
+  const Dataset& d = residuals.dataset();
+  const MeasurementOptions& o = residuals.options();
+  int observables = 0, priors = 0;
+  std::vector<std::string> counts;
+  for (const ModalResiduals::Slot& slot : residuals.slots()) priors += slot.measurement ? 0 : 1;
+  for (const Measurement* unit : Measurements()) {
+    int n = 0;
+    for (int i = 0; i < unit->records().Items(d); ++i) {
+      const int rows = unit->Rows(d, i, o);
+      n += rows > 0 ? rows - unit->Scales(d, i, o) : 0;
     }
-    switch (slot.measurement->quantity()) {
-      case Quantity::kFrequency: ++frequencies; break;
-      case Quantity::kDamping: ++dampings; break;
-      case Quantity::kShape: ++components, shaped.insert(slot.mode); break;
-    }
+    observables += n;
+    if (unit->records().Items(d) > 0) counts.push_back(unit->Count(n));  // a kind the data hold
   }
-  const int shapes = static_cast<int>(shaped.size());
-  const int observables = frequencies + dampings + components - shapes;
   const int free = residuals.num_parameters();
   if (observables >= free) return "";
-  std::ostringstream o;
-  o << residuals.dataset().modes.size() << " measured mode(s) give " << observables
-    << " observable(s) (" << frequencies << " frequencies, " << dampings << " damping ratios, "
-    << components - shapes << " shape components beyond their scales) for " << free
-    << " free parameters: they cannot set them all";
-  if (priors > 0) o << " (" << priors << " prior(s) add what they say)";
-  o << "; fix what you know (known, --fix) or measure more modes";
-  return o.str();
+  std::ostringstream o2;
+  o2 << d.modes.size() << " measured mode(s)";
+  if (!d.statics.empty()) o2 << " and " << d.statics.size() << " static stiffness(es)";
+  o2 << " give " << observables << " observable(s) (";
+  for (size_t k = 0; k < counts.size(); ++k) o2 << (k ? ", " : "") << counts[k];
+  o2 << ") for " << free << " free parameters: they cannot set them all";
+  if (priors > 0) o2 << " (" << priors << " prior(s) add what they say)";
+  o2 << "; fix what you know (known, --fix) or measure more modes";
+  return o2.str();
 }
 
 // The multistart: the starts PlanStarts gives, each fitted on its own copy
@@ -407,11 +407,11 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
 // says the start may be to blame, not the model.
 FitQuality JudgeFit(const ModalResiduals& residuals, double cost, const Uncertainty& u,
                     const StartAgreement& agreement) {
-  std::set<int> shapes;
-  for (const ModalResiduals::Slot& slot : residuals.slots()) {
-    if (slot.Is(Quantity::kShape)) shapes.insert(slot.mode);
+  int scales = 0;
+  const Dataset& d = residuals.dataset();
+  for (const Measurement* unit : Measurements()) {
+    for (int i = 0; i < unit->records().Items(d); ++i) scales += unit->Scales(d, i, residuals.options());
   }
-  const int scales = static_cast<int>(shapes.size());
   FitQuality fit = u.ok ? AssessFit(cost, static_cast<int>(u.jacobian.rows()), u.rank, scales)
                         : AssessFit(cost, residuals.num_residuals(), residuals.setup().size(),
                                     scales);
@@ -442,7 +442,7 @@ void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const Ide
       const ModalSolution& solution = solutions[m.condition];
       const Mode& mode = solution.modes[pairs[i]];
       ModeFit f;
-      if (dataset.format == 2) {
+      if (dataset.NamesConditions()) {
         f.condition = dataset.conditions[m.condition].name;
         f.speed_m_s = dataset.conditions[m.condition].speed_m_s;
       }
@@ -461,6 +461,25 @@ void ModeFits(const Dataset& dataset, const ModalResiduals& residuals, const Ide
         }
       }
       s->modes.push_back(f);
+    }
+    for (int c = 0; c < static_cast<int>(dataset.conditions.size()); ++c) {
+      const Parameters p = residuals.setup().Decode(x.data(), c);
+      const ModelAt at{&residuals.model(), &p, &solutions[c], &pairs};
+      for (const Measurement* unit : Measurements()) {
+        for (int i = 0; i < unit->records().Items(dataset); ++i) {
+          MeasurementFit f;
+          if (unit->records().ConditionOf(dataset, i) != c ||
+              !unit->Compared(dataset, i, at, &f.measured, &f.sigma, &f.model)) {
+            continue;
+          }
+          f.quantity = unit->quantity();
+          f.name = unit->records().ItemName(dataset, i);
+          if (dataset.NamesConditions()) f.condition = dataset.conditions[c].name;
+          f.unit = unit->unit();
+          if (!s->measurements) s->measurements.emplace();
+          s->measurements->push_back(f);
+        }
+      }
     }
     internal::RelativeErrors(dataset, solutions, pairs, &s->relative_error_in_plane,
                              &s->relative_error_out_of_plane);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "datasets/measurement.h"
 #include "estimation/options.h"
 #include "estimation/status.h"
 #include "estimation/types.h"
@@ -167,6 +168,30 @@ struct ModeFit {
   }
 };
 
+// A measurement other than a mode's (a static stiffness) against the fitted
+// model (Measurement::Compared).
+struct MeasurementFit {
+  Quantity quantity = Quantity::kStatic;
+  std::string name;                      // "static vertical stiffness"
+  std::optional<std::string> condition;  // formats 2 and 3: the condition's name
+  double measured = 0;
+  double sigma = 0;  // the sigma it was weighted by
+  double model = 0;
+  std::string unit;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("quantity", &quantity);
+    a->Visit("name", &name);
+    a->VisitIfSet("condition", &condition);
+    a->Visit("measured", &measured);
+    a->Visit("sigma", &sigma);
+    a->Visit("model", &model);
+    a->Visit("unit", &unit);
+    a->Derived("residual_sigma", (model - measured) / sigma);
+  }
+};
+
 // One mode of the fitted model against forward speed (a Campbell diagram).
 struct SpeedCurve {
   ModeLabel label;
@@ -263,6 +288,8 @@ struct IdentifyResult {
   Uncertainty uncertainty;
   std::vector<std::string> coordinate_names;
   std::vector<ModeFit> modes;
+  // Format 3: the other measurements (static stiffnesses); unset where none.
+  std::optional<std::vector<MeasurementFit>> measurements;
   // Format 2 with a condition at speed: every mode of the fitted model (the
   // first condition's values) from standstill to 1.25 times the highest
   // speed; empty otherwise.
@@ -307,6 +334,7 @@ struct IdentifyResult {
       uncertainty.Serialize(g);
     });
     a->Visit("modes", &modes);
+    a->VisitIfSet("measurements", &measurements);
     a->Visit("speed_curves", &speed_curves);
   }
 };

@@ -29,15 +29,18 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
                                const ParameterSetup& setup,
                                const ResidualOptions& options)
     : model_(model), dataset_(dataset), setup_(setup), options_(options) {
-  // Modes are listed condition by condition (the loader's order).
+  // Condition by condition, record by record (a measured mode, a static
+  // stiffness), each record's measurements in registry order.
   for (int c = 0; c < static_cast<int>(dataset.conditions.size()); ++c) {
     row_begin_.push_back(static_cast<int>(slots_.size()));
-    for (int i = 0; i < static_cast<int>(dataset.modes.size()); ++i) {
-      const MeasuredMode& m = dataset.modes[i];
-      if (m.condition != c) continue;
-      for (const Measurement* unit : Measurements()) {
-        const int rows = unit->Rows(m, options_);
-        for (int k = 0; k < rows; ++k) slots_.push_back({i, unit, k});
+    for (const MeasurementRecords* records : Records()) {
+      for (int i = 0; i < records->Items(dataset); ++i) {
+        if (records->ConditionOf(dataset, i) != c) continue;
+        for (const Measurement* unit : Measurements()) {
+          if (&unit->records() != records) continue;
+          const int rows = unit->Rows(dataset, i, options_);
+          for (int k = 0; k < rows; ++k) slots_.push_back({i, unit, k});
+        }
       }
     }
   }
@@ -225,25 +228,23 @@ bool ModalResiduals::Pair(const double* x, std::vector<ModalSolution>* solutions
   return true;
 }
 
-bool ModalResiduals::Rows(int c, const ModalSolution& solution, double* r,
+bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution& solution, double* r,
                           Eigen::Ref<RowMatrix> dr) const {
   std::vector<int> pairs(dataset_.modes.size(), -1);
   std::string why;
   if (!solution.ok || !PairCondition(c, solution, &pairs, &why)) return false;
+  const ModelAt at{&model_, &p, &solution, &pairs};
   const bool derive = dr.size() > 0;
   const int end = row_begin_[c + 1];
   for (int k = row_begin_[c]; k < end;) {
     const Slot& slot = slots_[k];
-    const MeasuredMode& m = dataset_.modes[slot.mode];
-    const Mode& mode = solution.modes[pairs[slot.mode]];
     const int row = k - row_begin_[c];
-    if (derive && !mode.derivatives) return false;
-    const int n = slot.measurement->Rows(m, options_);
-    if (derive) {
-      slot.measurement->Evaluate(m, mode, options_, r + row, &derived_, dr.middleRows(row, n));
-    } else {
-      slot.measurement->Evaluate(m, mode, options_, r + row, nullptr, dr);
-    }
+    const int n = slot.measurement->Rows(dataset_, slot.item, options_);
+    const bool done = derive ? slot.measurement->Evaluate(dataset_, slot.item, at, options_,
+                                                          r + row, &derived_, dr.middleRows(row, n))
+                             : slot.measurement->Evaluate(dataset_, slot.item, at, options_,
+                                                          r + row, nullptr, dr);
+    if (!done) return false;
     k += n;
   }
   for (int k = row_begin_[c]; k < end; ++k) {
@@ -265,7 +266,7 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
   const double speed = dataset_.conditions[c].speed_m_s;
   const ModalSolution solution = near ? model_.SolveFrom(*near, p, speed) : model_.Solve(p, speed);
   RowMatrix none;
-  return Rows(c, solution, r, none);
+  return Rows(c, p, solution, r, none);
 }
 
 bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, const double* own,
@@ -273,15 +274,15 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
                                                double* jacobian_own, bool* defined) const {
   ++evaluations_;
   *defined = false;
-  const ModalSolution solution =
-      model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s, true);
+  const Parameters p = setup_.Decode(shared, own, c);
+  const ModalSolution solution = model_.Solve(p, dataset_.conditions[c].speed_m_s, true);
   const int rows = row_begin_[c + 1] - row_begin_[c];
   RowMatrix dr = RowMatrix::Zero(rows, kNumParams);
   if (!solution.derivatives_undefined.empty()) {
     RowMatrix none;
-    return Rows(c, solution, r, none);
+    return Rows(c, p, solution, r, none);
   }
-  if (!Rows(c, solution, r, dr)) return false;
+  if (!Rows(c, p, solution, r, dr)) return false;
   *defined = true;
   // Chain rule through the coordinates: coordinate i sets free()[i] and every
   // parameter tied to it, d value / d x = PhysicalStd(i, x, 1).

@@ -101,13 +101,17 @@ class ModalResiduals {
   // nearest model modes.
   std::vector<std::string> PairingWarnings(const double* x, bool start) const;
 
-  // Which residuals belong to which measured mode and quantity.
+  // Which residuals belong to which measurement and item (datasets/measurement.h).
   struct Slot {
-    int mode = -1;                            // index into dataset.modes; -1 for a prior
+    int item = -1;                             // of measurement->records(); -1 for a prior
     const Measurement* measurement = nullptr;  // null for a prior
-    int component = 0;                        // the row within the measurement's
-    int prior = -1;                           // for a prior: index into priors()
+    int component = 0;                         // the row within the item's
+    int prior = -1;                            // for a prior: index into priors()
     bool Is(Quantity q) const { return measurement && measurement->quantity() == q; }
+    // Whether it is a row of item `item` of `records`.
+    bool Of(const MeasurementRecords& records, int i) const {
+      return measurement && &measurement->records() == &records && item == i;
+    }
   };
   const std::vector<Slot>& slots() const { return slots_; }
 
@@ -119,9 +123,11 @@ class ModalResiduals {
   const Dataset& dataset_;
   const ParameterSetup& setup_;
   ResidualOptions options_;
-  // Condition c's rows from its model solution and, where dr is not empty,
-  // their derivatives with respect to each catalogue parameter.
-  bool Rows(int c, const ModalSolution& solution, double* r, Eigen::Ref<RowMatrix> dr) const;
+  // Condition c's rows from its parameters p and model solution and, where
+  // dr is not empty, their derivatives with respect to each catalogue
+  // parameter.
+  bool Rows(int c, const Parameters& p, const ModalSolution& solution, double* r,
+            Eigen::Ref<RowMatrix> dr) const;
   // Pairs the measured modes of condition c with `solution`'s
   // (datasets/pairing.h).
   bool PairCondition(int c, const ModalSolution& solution, std::vector<int>* pairs,

@@ -32,7 +32,7 @@ bool ParameterSetup::Build(const ModalModel& model, const Dataset& dataset,
   };
   const int nc = static_cast<int>(dataset.conditions.size());
   for (int c = 0; c < nc; ++c) {
-    s->conditions_.push_back(nc > 1 || dataset.format == 2 ? dataset.conditions[c].name : "");
+    s->conditions_.push_back(nc > 1 || dataset.NamesConditions() ? dataset.conditions[c].name : "");
     s->start_.push_back(InitialParameters(dataset, c));
   }
   for (const auto& [from, to] : dataset.ties) {

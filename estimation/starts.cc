@@ -33,16 +33,16 @@ std::vector<LogRow> LogRows(const ModalResiduals& residuals, const Eigen::Vector
   for (size_t k = 0; k < slots.size(); ++k) {
     const ModalResiduals::Slot& slot = slots[k];
     double measured = 0, sigma = 0;
+    ModeLabel label;
+    bool damping = false;
     if (!slot.measurement ||
-        !slot.measurement->Scalar(residuals.dataset().modes[slot.mode], residuals.options(),
-                                  &measured, &sigma)) {
+        !slot.measurement->Scalar(residuals.dataset(), slot.item, residuals.options(), &measured,
+                                  &sigma, &label, &damping)) {
       continue;
     }
-    const MeasuredMode& m = residuals.dataset().modes[slot.mode];
-    const bool damping = slot.Is(Quantity::kDamping);
     const double model = measured + r[k] * sigma;  // r = (model - measured) / sigma
     if (!(model > 0 && measured > 0)) continue;
-    rows.push_back({m.label, damping, std::log(measured / model), J.row(k) * (sigma / model)});
+    rows.push_back({label, damping, std::log(measured / model), J.row(k) * (sigma / model)});
   }
   return rows;
 }

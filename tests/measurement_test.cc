@@ -34,7 +34,7 @@ std::vector<Mode> Modes(bool derivatives = false) {
 MeasuredMode Measured(const Mode& mode, const MeasurementOptions& o) {
   MeasuredMode m;
   m.label = mode.label;
-  for (const Measurement* unit : Measurements()) unit->Add(mode, o, 0.01, &m);
+  for (const ModeQuantity* unit : ModeQuantities()) unit->Add(mode, o, AdviceSigmas{}, &m);
   return m;
 }
 
@@ -53,7 +53,7 @@ TEST(MeasurementTest, AModeMeasuredWithoutNoiseFitsItselfUnderEitherConvention) 
     o.shape_convention = convention;
     for (const Mode& mode : Modes()) {
       const MeasuredMode m = Measured(mode, o);
-      for (const Measurement* unit : Measurements()) {
+      for (const ModeQuantity* unit : ModeQuantities()) {
         const int rows = unit->Rows(m, o);
         ASSERT_GT(rows, 0) << ToString(unit->quantity());
         std::vector<double> r(rows, NAN);
@@ -75,8 +75,8 @@ TEST(MeasurementTest, MeasuringAgainChangesNothingButTheValues) {
   for (size_t i = 0; i + 1 < modes.size(); ++i) {
     MeasuredMode m = Measured(modes[i], o);
     const MeasuredMode before = m;
-    for (const Measurement* unit : Measurements()) unit->Measure(modes[i + 1], o, &m);
-    for (const Measurement* unit : Measurements()) unit->Measure(modes[i], o, &m);
+    for (const ModeQuantity* unit : ModeQuantities()) unit->Measure(modes[i + 1], o, &m);
+    for (const ModeQuantity* unit : ModeQuantities()) unit->Measure(modes[i], o, &m);
     EXPECT_DOUBLE_EQ(m.frequency_hz, before.frequency_hz);
     EXPECT_EQ(m.frequency_sigma_hz, before.frequency_sigma_hz);
     EXPECT_EQ(m.damping_sigma, before.damping_sigma);
@@ -97,7 +97,7 @@ TEST(MeasurementTest, TheNoiseOfEachQuantityHasTheSigmaItStates) {
   std::normal_distribution<double> n(0, 1);
   const std::vector<Mode> modes = Modes();
   for (const Mode& mode : {modes[0], modes[3], modes[9]}) {
-    for (const Measurement* unit : Measurements()) {
+    for (const ModeQuantity* unit : ModeQuantities()) {
       const double noise = unit->quantity() == Quantity::kShape ? 0.003 : 0.01;
       const MeasuredMode truth = Measured(mode, o);
       const int rows = unit->Rows(truth, o);
