@@ -60,8 +60,8 @@ std::string InputsMarkdown() {
          "priors (conventions.md §7); a condition's `modes` are required, `static` is format 3's.\n\n" +
          InputSchema(format2) + "\n" +
          "## Dataset, format 3 (`" + kDatasetFormat3 + "`)\n\nFormat 2's fields, each condition "
-         "holding any of `modes` and `static` (static stiffnesses,\nstanding only; contract §10), at "
-         "least one.\n\n" + InputSchema(format3) + "\n" +
+         "holding any of `modes`, `frf` (frequency response functions,\ncontract §9) and `static` "
+         "(static stiffnesses, standing only; contract §10), at least one.\n\n" + InputSchema(format3) + "\n" +
          "## Parameter set (`" + kParameterSetFormat + "`)\n\nRead by `--parameters`, written by "
          "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
          "value, a file without `format`, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +

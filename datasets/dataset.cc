@@ -324,14 +324,23 @@ void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* 
   const int index = static_cast<int>(d->conditions.size());
   d->conditions.push_back(c);
   if (d->format == 2 && !j.modes) Fail(field + ".modes", "missing");
-  if (d->format == 2 && j.statics) {
-    Fail(field + ".static", std::string("static stiffnesses need format \"") + kDatasetFormat3 +
-                                "\" (contract §10)");
+  for (const auto& [given, name] : {std::pair{j.statics.has_value(), "static"},
+                                     std::pair{j.frf.has_value(), "frf"}}) {
+    if (d->format == 2 && given) {
+      Fail(field + "." + name, std::string("needs format \"") + kDatasetFormat3 + "\" (contract §10)");
+    }
   }
   if (j.modes) Modes(*j.modes, field + ".modes", index, d);
+  if (j.frf) {
+    LoadError error;
+    d->conditions.back().frf.emplace();
+    if (!ReadFrf(*j.frf, c.speed_m_s, d->path, field + ".frf", &*d->conditions.back().frf, &error)) {
+      Fail(error.field, error.message);
+    }
+  }
   if (j.statics) Statics(*j.statics, field + ".static", index, c.speed_m_s, d);
-  if (!j.modes && !j.statics) {
-    Fail(field, "holds no measurement: give it modes or static (contract §10)");
+  if (!j.modes && !j.statics && !j.frf) {
+    Fail(field, "holds no measurement: give it modes, frf or static (contract §10)");
   }
 }
 

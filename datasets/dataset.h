@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "datasets/frf.h"
 #include "model/names.h"
 #include "model/parameters.h"
 #include "model/static_stiffness.h"
@@ -45,6 +46,9 @@ struct Condition {
   double speed_m_s = 0;
   std::map<Param, double> known;    // per_condition parameters only
   std::map<Param, double> initial;  // per_condition parameters only
+  // Format 3: the condition's frequency response functions (contract §9),
+  // read and written; fitted from issue 36 on.
+  std::optional<Frf> frf;
 };
 
 // A prior of docs/conventions.md §7, in the units of its parameter.

@@ -72,13 +72,14 @@ struct StaticFields {
 };
 
 // A condition: format 2 requires its modes (the loader says so); format 3
-// holds any of modes and static, at least one measurement in all.
+// holds any of modes, frf and static, at least one measurement in all.
 struct ConditionFields {
   std::string name;
   std::optional<double> speed_m_s;  // 0 when absent
   std::optional<ParameterValues> known, initial;
   std::optional<std::vector<ModeFields>> modes;
   std::optional<std::vector<StaticFields>> statics;  // "static", format 3
+  std::optional<FrfFields> frf;                      // format 3 (contract §9)
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -87,6 +88,7 @@ struct ConditionFields {
     a->VisitIfSet("known", &known);
     a->VisitIfSet("initial", &initial);
     a->VisitIfSet("modes", &modes);
+    a->VisitIfSet("frf", &frf);
     a->VisitIfSet("static", &statics);
   }
 };

@@ -1,5 +1,6 @@
 // Writes datasets and parameter sets back as the JSON the loader reads
 // (docs/conventions.md §3, §7): format 1 where it can hold the dataset.
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -53,7 +54,11 @@ bool NeedsFormat2(const Dataset& d) {
 }
 
 // Whether formats 1 and 2 cannot hold `d`.
-bool NeedsFormat3(const Dataset& d) { return d.format == 3 || !d.statics.empty(); }
+bool NeedsFormat3(const Dataset& d) {
+  return d.format == 3 || !d.statics.empty() ||
+         std::any_of(d.conditions.begin(), d.conditions.end(),
+                     [](const Condition& c) { return c.frf.has_value(); });
+}
 
 }  // namespace
 
@@ -111,6 +116,7 @@ DatasetFields FieldsOf(const Dataset& d) {
       if (!o.modes) o.modes.emplace();
       o.modes->push_back(FieldsOf(m));
     }
+    if (c.frf) o.frf = FieldsOf(*c.frf);
     for (const MeasuredStatic& m : d.statics) {
       if (m.condition != static_cast<int>(i)) continue;
       if (!o.statics) o.statics.emplace();

@@ -52,6 +52,8 @@ std::string ParamText(Param p) { return ParamName(p); }
 
 }  // namespace
 
+std::vector<std::string> OptionItems(const std::string& text) { return Items(text); }
+
 // gflags' own rules (FlagValue::ParseFrom), so that a keyword argument is
 // refused exactly where the flag would be.
 bool OfKind(OptionKind kind, const std::string& text) {

@@ -7,6 +7,7 @@
 #ifndef RINGID_OPERATIONS_OPTION_TEXT_H_
 #define RINGID_OPERATIONS_OPTION_TEXT_H_
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -64,6 +65,25 @@ bool OptionFromText(const std::string& name, const std::string& text, E* value,
   return parsed.has_value();
 }
 
+// NAME,...: names of the enum, none twice (an empty text: none).
+std::vector<std::string> OptionItems(const std::string& text);
+template <class E, class = std::enable_if_t<std::is_enum_v<E>>>
+bool OptionFromText(const std::string& name, const std::string& text, std::vector<E>* value,
+                    std::string* error) {
+  std::vector<E> list;
+  for (const std::string& item : OptionItems(text)) {
+    E e;
+    if (!OptionFromText(name, item, &e, error)) return false;
+    if (std::find(list.begin(), list.end(), e) != list.end()) {
+      *error = "--" + name + ": '" + item + "' given twice";
+      return false;
+    }
+    list.push_back(e);
+  }
+  *value = list;
+  return true;
+}
+
 // A value's text, which OptionFromText reads back (numbers as gflags
 // writes them, %.17g).
 std::string OptionText(bool value);
@@ -79,6 +99,16 @@ template <class E, class = std::enable_if_t<std::is_enum_v<E>>>
 std::string OptionText(E value) {
   return ToString(value);
 }
+template <class E, class = std::enable_if_t<std::is_enum_v<E>>>
+std::string OptionText(const std::vector<E>& value) {
+  std::string text;
+  for (E e : value) text += (text.empty() ? "" : ",") + std::string(ToString(e));
+  return text;
+}
+
+template <class T> struct IsEnumList : std::false_type {};
+template <class E, class A>
+struct IsEnumList<std::vector<E, A>> : std::is_enum<E> {};
 
 // The values an option takes where the library names them (an enum's names,
 // the effects of the catalogue); empty for a free value.
@@ -86,6 +116,8 @@ template <class T>
 std::vector<std::string> OptionChoices() {
   if constexpr (std::is_enum_v<T>) {
     return NamesOf<T>();
+  } else if constexpr (IsEnumList<T>::value) {
+    return NamesOf<typename T::value_type>();
   } else if constexpr (std::is_same_v<T, std::vector<const Effect*>>) {
     return EffectNames(EffectCatalogue());
   } else {

@@ -169,6 +169,8 @@ struct SimulateSettings {
   double frequency_noise = SimulateOptions().frequency_noise;
   double damping_noise = SimulateOptions().damping_noise;
   double shape_noise = SimulateOptions().shape_noise;
+  std::vector<StaticDirection> statics;
+  double static_noise = SimulateOptions().static_noise;
   double prior_spread = 0.1;
   std::vector<Param> fix;
   int seed = FitSettings().seed;
@@ -187,6 +189,10 @@ struct SimulateSettings {
     a->Visit("frequency_noise", &frequency_noise, "relative frequency noise (sd)");
     a->Visit("damping_noise", &damping_noise, "relative damping-ratio noise (sd)");
     a->Visit("shape_noise", &shape_noise, "shape component noise (sd, shapes scaled to 1)");
+    a->Visit("static", &statics,
+             "KIND,...: static stiffnesses (vertical, longitudinal, lateral) measured in each "
+             "standing condition (contract §10); the dataset is then format 3");
+    a->Visit("static_noise", &static_noise, "relative static-stiffness noise (sd)");
     a->Visit("prior_spread", &prior_spread,
              "log-normal spread of the dataset's initial values around the truth");
     option::Fix(a, &fix);

@@ -18,7 +18,8 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
     *error = InputError::Option(line);
     return false;
   };
-  for (double v : {s.frequency_noise, s.damping_noise, s.shape_noise, s.prior_spread}) {
+  for (double v : {s.frequency_noise, s.damping_noise, s.shape_noise, s.static_noise,
+                   s.prior_spread}) {
     if (!(v >= 0) || !std::isfinite(v)) {
       return Fail("noise levels and --prior_spread must be finite and not negative");
     }
@@ -67,6 +68,8 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
   so.frequency_noise = s.frequency_noise;
   so.damping_noise = s.damping_noise;
   so.shape_noise = s.shape_noise;
+  so.static_noise = s.static_noise;
+  so.statics = s.statics;
   if (!Simulate(model, truth, so, &rng, &d, &line)) {
     *failed = true;
     return Fail(line);

@@ -309,6 +309,74 @@ struct RollingSuite {
   }
 };
 
+// --- static: issue 35's Monte Carlo. Synthetic standing tires (the car
+// tire's stiffnesses, dampers and contact scattered log-normally), each
+// measured by its seven modes (frequencies, damping ratios, shapes) and its
+// three static stiffnesses, identified from initial values scattered
+// log-uniformly within start_factor of its truth.
+struct StaticParameter {
+  Param param = Param::m_b;
+  int yes = 0, practically_no = 0, no = 0;  // fits classing it so
+  long intervals = 0;      // fits that classed it yes and gave it a std
+  double coverage_95 = 0;  // of those intervals, the share holding the truth
+  double mean_z = 0, rms_z = 0;  // as RollingParameter's
+  template <class Archive>  // keyed by param
+  void Serialize(Archive* a) {
+    a->Visit("yes", &yes);
+    a->Visit("practically_no", &practically_no);
+    a->Visit("no", &no);
+    a->Visit("intervals", &intervals);
+    a->Visit("coverage_95", &coverage_95);
+    a->Visit("mean_z", &mean_z);
+    a->Visit("rms_z", &rms_z);
+  }
+};
+
+struct StaticSuite {
+  int tires = 0;
+  double tire_spread = 0;   // log-sd of each scattered parameter around the car tire's
+  double start_factor = 0;  // initial values within this factor of each truth
+  double frequency_noise = 0, damping_noise = 0, shape_noise = 0, static_noise = 0;
+  std::vector<StaticParameter> parameters;  // the free ones
+  int failed_fits = 0;
+  double seconds = 0, seconds_per_fit = 0;
+  // The criterion: each parameter classed yes in at least identifiable_share
+  // of the fits has its 95 % intervals (those classed yes) cover within
+  // coverage_range.
+  double identifiable_share = 0.5;
+  std::pair<double, double> coverage_range{0.90, 0.99};
+
+  std::vector<Param> Identifiable() const;
+  std::vector<Param> OutsideCoverageRange() const;  // of Identifiable()
+  bool Pass() const { return failed_fits == 0 && OutsideCoverageRange().empty(); }
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("tires", &tires);
+    a->Visit("tire_spread", &tire_spread);
+    a->Visit("start_factor", &start_factor);
+    a->Group("noise", [&](auto* g) {
+      g->Visit("frequency_relative", &frequency_noise);
+      g->Visit("damping_relative", &damping_noise);
+      g->Visit("shape", &shape_noise);
+      g->Visit("static_relative", &static_noise);
+    });
+    a->VisitKeyed("parameters", &parameters, &StaticParameter::param);
+    a->Visit("failed_fits", &failed_fits);
+    a->Visit("seconds", &seconds);
+    a->Visit("seconds_per_fit", &seconds_per_fit);
+    a->Group("criteria", [&](auto* g) {
+      g->Visit("identifiable_share", &identifiable_share);
+      g->Visit("coverage_95_range", &coverage_range);
+    });
+    a->Group("checks", [&](auto* g) {
+      g->Derived("identifiable", Identifiable());
+      g->Derived("outside_coverage_range", OutsideCoverageRange());
+    });
+    a->Derived("pass", Pass());
+  }
+};
+
 // --- forces: issue 23's Monte Carlo. The car tire's lug forces recovered
 // from noisy axle responses at three speeds (one where order 1 meets the
 // vertical mode), with the true parameters and with those identified from
@@ -502,6 +570,7 @@ using BenchDiagnosisReport = Report<ReportKind::kBenchDiagnosis, DiagnosisSuite>
 using BenchRollingReport = Report<ReportKind::kBenchRolling, RollingSuite>;
 using BenchSpeedReport = Report<ReportKind::kBenchSpeed, SpeedSuite>;
 using BenchForcesReport = Report<ReportKind::kBenchForces, ForcesSuite>;
+using BenchStaticReport = Report<ReportKind::kBenchStatic, StaticSuite>;
 
 Status RunPaperSuite(const SuiteOptions& o, PaperSuite* suite);
 Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite);
@@ -510,6 +579,7 @@ Status RunDiagnosisSuite(const SuiteOptions& o, DiagnosisSuite* suite);
 Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite);
 Status RunSpeedSuite(const SuiteOptions& o, SpeedSuite* suite);
 Status RunForcesSuite(const SuiteOptions& o, ForcesSuite* suite);
+Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite);
 
 // A suite by name, run into its report's JSON text and Markdown table.
 struct SuiteOutput {

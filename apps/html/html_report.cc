@@ -52,6 +52,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchRolling, Typed<BenchRollingReport, html::BenchRollingPage>},
     {ReportKind::kBenchSpeed, Typed<BenchSpeedReport, html::BenchSpeedPage>},
     {ReportKind::kBenchForces, Typed<BenchForcesReport, html::BenchForcesPage>},
+    {ReportKind::kBenchStatic, Typed<BenchStaticReport, html::BenchStaticPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

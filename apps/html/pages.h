@@ -23,6 +23,7 @@ void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page);
 void BenchRollingPage(const BenchRollingReport& report, Page* page);
 void BenchSpeedPage(const BenchSpeedReport& report, Page* page);
 void BenchForcesPage(const BenchForcesReport& report, Page* page);
+void BenchStaticPage(const BenchStaticReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);
