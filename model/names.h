@@ -64,6 +64,16 @@ struct EnumNames<AxleChannel> {
       "axle_force_x", "axle_force_z", "axle_force_y", "axle_moment_x", "axle_moment_z"};
 };
 
+// The directions of a static stiffness at the contact (contract §10); the
+// assembly records the contact element of each (BasicSystem::AddContact).
+enum class StaticDirection : int { kVertical = 0, kLongitudinal, kLateral };
+inline constexpr int kNumStaticDirections = 3;
+template <>
+struct EnumNames<StaticDirection> {
+  static constexpr std::array<const char*, kNumStaticDirections> kNames = {
+      "vertical", "longitudinal", "lateral"};
+};
+
 inline const char* DofName(Dof dof) { return ToString(dof); }
 inline std::optional<Dof> ParseDof(const std::string& name) { return FromString<Dof>(name); }
 Plane DofPlane(Dof dof);

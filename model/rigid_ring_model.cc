@@ -70,7 +70,9 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
   // in-phase rotation rolls the belt on its contact, shearing the sidewall.
   s.AddSpring(L::kRotationInPhase, p[Q::k_bx], {{Dof::kXb, 1}, {Dof::kXa, -1}});
   s.AddSpring(L::kVertical, p[Q::k_bz], {{Dof::kZb, 1}, {Dof::kZa, -1}});
-  s.AddSpring(L::kVertical, p[Q::k_cz], {{Dof::kZb, 1}});
+  // The contact's residual stiffness k_cz on z_b, belt to road (eq. (12)).
+  s.AddContact(L::kVertical, {StaticDirection::kVertical, p[Q::k_cz], {{Dof::kZb, 1}},
+                              {{Dof::kZb, 1}}});
   s.AddSpring(L::kRotationAntiPhase, p[Q::k_btheta],
               {{Dof::kThetaB, 1}, {Dof::kThetaA, -1}});
   // The sidewall joins belt and hub: what the held axle carries (contract §8).
@@ -81,7 +83,8 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
   // Contact slip, eqs. (6), (8): K_cx / sigma_cx on x_b - r_e0 theta_b.
   const typename BasicSystem<T>::Combination slip_x = {{Dof::kXb, 1},
                                                        {Dof::kThetaB, -p[Q::r_e0]}};
-  s.AddSlipLag({L::kLongitudinal, p[Q::K_cx], p[Q::sigma_cx], slip_x, slip_x, {}});
+  s.AddSlipLag({L::kLongitudinal, StaticDirection::kLongitudinal, p[Q::K_cx], p[Q::sigma_cx],
+                slip_x, slip_x, {}});
 
   // Out-of-plane, eq. (15) as corrected in docs/model.md: q = [y_b, gamma_b, psi_b].
   s.AddMass(Dof::kYb, p[Q::m_b]);
@@ -103,7 +106,7 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
   // Lateral slip: F_cy acts on y_b, on camber through r_l0 and on yaw
   // through the trail t_0; the slip sees y_b - r_l0 gamma_b and, rolling,
   // the heading psi_b. At standstill this is S of docs/model.md.
-  s.AddSlipLag({L::kLateral, p[Q::K_cy], p[Q::sigma_cy],
+  s.AddSlipLag({L::kLateral, StaticDirection::kLateral, p[Q::K_cy], p[Q::sigma_cy],
                 {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}, {Dof::kPsiB, -p[Q::t_0]}},
                 {{Dof::kYb, 1}, {Dof::kGammaB, -r_l0}},
                 {{Dof::kPsiB, 1}}});

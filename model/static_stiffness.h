@@ -8,24 +8,15 @@
 #ifndef RINGID_MODEL_STATIC_STIFFNESS_H_
 #define RINGID_MODEL_STATIC_STIFFNESS_H_
 
-#include <array>
 #include <string>
 
 #include <Eigen/Core>
 
-#include "model/enum_names.h"
+#include "model/names.h"  // StaticDirection
 #include "model/parameters.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid {
-
-enum class StaticDirection : int { kVertical = 0, kLongitudinal, kLateral };
-inline constexpr int kNumStaticDirections = 3;
-template <>
-struct EnumNames<StaticDirection> {
-  static constexpr std::array<const char*, kNumStaticDirections> kNames = {
-      "vertical", "longitudinal", "lateral"};
-};
 
 struct StaticStiffnessResult {
   bool ok = false;

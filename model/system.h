@@ -41,11 +41,23 @@ class BasicSystem {
   // standstill zeta = -d^T q / sigma: the stiffness (K / sigma) f d^T.
   struct SlipLag {
     ModeLabel owner;
+    StaticDirection direction;  // the contact it is (AddContact)
     T stiffness;           // K_c
     T relaxation_length;   // sigma_c
     Combination force;     // f
     Combination velocity;  // d
     Combination heading;   // e
+  };
+
+  // A contact element (contract §10): a spring k between the road, displaced
+  // by delta in `direction`, and the tire. It carries k (delta - d^T q) and
+  // acts on q through f; on the road at rest it is the stiffness k f d^T.
+  // The elements of one direction share the road's delta.
+  struct Contact {
+    StaticDirection direction;
+    T stiffness;                // k
+    Combination force;          // f
+    Combination displacement;   // d
   };
 
   // What the held axle carries (contract §8): per channel, its force as a
@@ -89,13 +101,22 @@ class BasicSystem {
     }
   }
   void AddVelocityCoupling(Dof row, Dof col, const T& v) { C_(I(row), I(col)) += v; }
-  // Adds the lag, and its standstill stiffness to K() and to its owner: K()
-  // is always the standing stiffness; at speed the lag's states replace it.
-  void AddSlipLag(SlipLag lag) {
-    const T k = lag.stiffness / lag.relaxation_length;
-    for (const auto& [a, fa] : lag.force) {
-      for (const auto& [b, db] : lag.velocity) AddStiffness(lag.owner, a, b, k * fa * db);
+  // Adds k f d^T to K and to `owner`, and records the element as the
+  // contact in its direction (the static solve, model/static_stiffness.h).
+  void AddContact(ModeLabel owner, Contact contact) {
+    for (const auto& [a, fa] : contact.force) {
+      for (const auto& [b, db] : contact.displacement) {
+        AddStiffness(owner, a, b, contact.stiffness * fa * db);
+      }
     }
+    contacts_.push_back(std::move(contact));
+  }
+  // Adds the lag, and its standstill stiffness to K() and to its owner as a
+  // contact (K_c / sigma_c on f, d): K() is always the standing stiffness; at
+  // speed the lag's states replace it.
+  void AddSlipLag(SlipLag lag) {
+    AddContact(lag.owner, {lag.direction, lag.stiffness / lag.relaxation_length, lag.force,
+                           lag.velocity});
     lags_.push_back(std::move(lag));
   }
 
@@ -139,6 +160,7 @@ class BasicSystem {
   void set_speed(double speed_m_s) { speed_ = speed_m_s; }
   double speed() const { return speed_; }
   const std::vector<SlipLag>& lags() const { return lags_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
 
   const Matrix& M() const { return M_; }
   const Matrix& C() const { return C_; }
@@ -156,6 +178,7 @@ class BasicSystem {
   std::array<Matrix, kLabelled ? kNumLabels : 0> K_label_;
   std::array<bool, kNumDofs> active_;
   std::vector<SlipLag> lags_;
+  std::vector<Contact> contacts_;
   double speed_ = 0;
   AxleRows axle_displacement_, axle_velocity_;
   std::array<std::optional<std::pair<double, Dof>>, kNumAxleChannels> held_;
