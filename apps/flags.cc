@@ -28,7 +28,7 @@ DEFINE_string(truth, "", "write the truth (effects and every value) here");
 DEFINE_string(suite, "", "the validation suite to run");
 DEFINE_string(uff, "", "import: a Universal File Format file of a modal test (datasets 55, 58/58b, 15, 18, 82, 151, 164)");
 DEFINE_string(map, "", "import: a UFF map (ringid-uff-map/1): each node and direction a degree of freedom, modes to labels");
-DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling)");
+DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling); static: the number of tires");
 DEFINE_string(markdown, "", "also write the Markdown table here");
 DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");
 DEFINE_int32(jobs, 1, "campaign: datasets analysed at once (threads)");

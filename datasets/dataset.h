@@ -13,7 +13,6 @@
 #include "datasets/frf.h"
 #include "model/names.h"
 #include "model/parameters.h"
-#include "model/static_stiffness.h"
 
 namespace ringid {
 

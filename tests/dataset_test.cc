@@ -418,8 +418,8 @@ TEST(DatasetTest, FormatOneRefusesFormatTwoKeysAndUnknownFormats) {
   EXPECT_NE(ErrorOf(j).find("bad.json: priors: unknown key"), std::string::npos) << ErrorOf(j);
   j = Valid();
   j["format"] = "ringid-modal-dataset/3";
-  EXPECT_NE(ErrorOf(j).find("format: must be \"ringid-modal-dataset/1\" or "
-                            "\"ringid-modal-dataset/2\""),
+  EXPECT_NE(ErrorOf(j).find("format: must be \"ringid-modal-dataset/1\", "
+                            "\"ringid-modal-dataset/2\" or \"ringid-dataset/3\""),
             std::string::npos)
       << ErrorOf(j);
 }

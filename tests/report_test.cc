@@ -267,7 +267,7 @@ TEST(ReportTest, DocsInputsMdIsTheGeneratedFieldList) {
 TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
   const std::string md = ringid::InputsMarkdown();
   const std::vector<std::string> formats = {
-      ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kParameterSetFormat,
+      ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kDatasetFormat3, ringid::kParameterSetFormat,
       ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
       ringid::kUffMapFormat};
   size_t lines = 0;

@@ -389,11 +389,11 @@ const std::vector<SuiteEntry>& Suites() {
       {"speed", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchSpeedReport>(RunSpeedSuite, o, p);
        }},
-      {"static", [](const SuiteOptions& o, const Provenance& p) {
-         return Output<BenchStaticReport>(RunStaticSuite, o, p);
-       }},
       {"forces", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchForcesReport>(RunForcesSuite, o, p);
+       }},
+      {"static", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchStaticReport>(RunStaticSuite, o, p);
        }},
   };
   return suites;
