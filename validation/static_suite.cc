@@ -18,7 +18,8 @@ namespace {
 constexpr double kTireSpread = 0.25;
 
 // The car tire with every free stiffness, damper and contact value scattered
-// log-normally (kTireSpread), the belt's inertias by a tenth of that.
+// log-normally (kTireSpread), the belt's inertias by a tenth of that; the
+// paper's ties held.
 Parameters ScatteredTire(std::mt19937_64* rng) {
   std::normal_distribution<double> normal(0, 1);
   Parameters p = ExampleCarTire();
@@ -32,6 +33,11 @@ Parameters ScatteredTire(std::mt19937_64* rng) {
     p[q] *= std::exp((inertia ? 0.1 : 1.0) * kTireSpread * normal(*rng));
   }
   p[Param::I_bz] = p[Param::I_bx];  // a ring
+  // The paper's ties, which the engineer's dataset states (SetEngineerPriors).
+  p[Param::k_bz] = p[Param::k_bx];
+  p[Param::c_bz] = p[Param::c_bx];
+  p[Param::k_bpsi] = p[Param::k_bgamma];
+  p[Param::c_bpsi] = p[Param::c_bgamma];
   return p;
 }
 

@@ -344,6 +344,15 @@ void DiagnosePage(const DiagnoseReport& report, Page* page) {
   EffectsSection(result, page);
   const Misfits misfits = ReadMisfits(result);
   WhereSection(misfits, page);
+  if (result.where_else) {
+    std::vector<Row> rows;
+    for (const ItemMisfit& w : *result.where_else) {
+      rows.push_back({TextCell(w.condition.value_or("–")), TextCell(w.name),
+                      NumberCell(w.sigma, "%+.2f")});
+    }
+    page->TableSection("Other measurements: baseline misfit",
+                       {"condition", "measurement", "(model − measured) / σ"}, rows);
+  }
   page->Heading("Figures");
   MisfitFigure(misfits, EffectName(result.verdict), page);
   RankingFigure(result, page);

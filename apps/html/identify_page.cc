@@ -73,6 +73,22 @@ std::string ModeName(const ModeFit& m) {
   return m.condition ? *m.condition + " " + ToString(m.label) : std::string(ToString(m.label));
 }
 
+// The other measurements (static stiffnesses) against the fitted model.
+void MeasurementsSection(const std::optional<std::vector<MeasurementFit>>& measurements,
+                         Page* page) {
+  if (!measurements) return;
+  std::vector<Row> rows;
+  for (const MeasurementFit& m : *measurements) {
+    rows.push_back({TextCell(m.condition.value_or("–")), TextCell(m.name),
+                    NumberCell(m.measured, "%.5g"), NumberCell(m.sigma, "%.3g"),
+                    NumberCell(m.model, "%.5g"), TextCell(m.unit),
+                    NumberCell((m.model - m.measured) / m.sigma, "%.3g")});
+  }
+  page->TableSection("Other measurements", {"condition", "measurement", "measured", "σ",
+                                            "model", "unit", "(model − measured) / σ"},
+                     rows);
+}
+
 // The modes table; the frequencies for the figure.
 FrequencyFigureOptions ModesSection(const std::vector<ModeFit>& modes, Page* page) {
   FrequencyFigureOptions figure;
@@ -501,6 +517,7 @@ void IdentifyPage(const IdentifyReport& report, Page* page) {
   if (summary.fit.poor) page->Note(summary.fit.verdict + ".");
   if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
   const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
+  MeasurementsSection(summary.measurements, page);
   const Intervals intervals = ParametersSection(summary, page);
   if (summary.plausibility.empty() && !summary.estimates.empty()) {
     page->Note("Plausibility: every value within its plausible range (docs/plausibility.md).");
