@@ -566,6 +566,9 @@ std::string DiagnosisResult::FullReport() const {
   }
   int width = 20;
   for (const ModeMisfit& w : where) width = std::max<int>(width, w.Name().size());
+  for (const ItemMisfit& w : where_else.value_or(std::vector<ItemMisfit>{})) {
+    width = std::max<int>(width, (w.condition ? w.condition->size() + 1 : 0) + w.name.size());
+  }
   o << "\n\n  where it lies (baseline misfit, in sigma):\n  mode" << std::string(width - 4, ' ')
     << "  chi2     freq    damping  shape chi2  worst component\n";
   for (size_t i = 0; i < where.size(); ++i) {

@@ -314,6 +314,29 @@ TIR_REST = ["I_ay", "F_cz0", "c_bx", "c_bz", "c_btheta", "K_cx", "sigma_cx", "r_
 class WhatTheModuleLacked(ReportTestCase):
     """Issue 34: what the module could not do that the command line does."""
 
+    def test_simulate_with_static_stiffnesses_equals_the_command_line_and_identify_fits_them(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            output, truth = os.path.join(scratch, "sim.json"), os.path.join(scratch, "truth.json")
+            done = subprocess.run(
+                [BINARY, "simulate", "--parameters=" + CAR_TIRE, "--output=" + output,
+                 "--truth=" + truth, "--seed=3", "--static=vertical,lateral", "--static_noise=0"],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(output) as f:
+                cli = json.load(f)
+            r = ringid.simulate(CAR_TIRE, output=output, truth=truth, seed=3,
+                                static=["vertical", "lateral"], static_noise=0)
+            self.assertEqual(r.to_dict()["dataset"], cli)
+            self.assertEqual(cli["format"], "ringid-dataset/3")
+            # Noise-free, the vertical value is docs/tir.md's series formula of the truth.
+            with open(CAR_TIRE) as f:
+                p = {k: v["value"] if isinstance(v, dict) else v for k, v in json.load(f)["parameters"].items()}
+            vertical = [s for s in cli["conditions"][0]["static"] if s["kind"] == "vertical"][0]
+            self.assertAlmostEqual(vertical["value"] / (1 / (1 / p["k_bz"] + 1 / p["k_cz"])), 1, places=12)
+            fitted = ringid.identify(r.dataset).to_dict()["measurements"]
+            self.assertEqual([m["name"] for m in fitted],
+                             ["static vertical stiffness", "static lateral stiffness"])
+
     def test_simulate_with_lug_forces_equals_the_command_line_and_forces_recover_them(self):
         with tempfile.TemporaryDirectory() as scratch:
             lugs, out = os.path.join(scratch, "lugs.json"), os.path.join(scratch, "response.json")
