@@ -149,10 +149,9 @@ int SimulateCommand(int, char**) {
                             &error)) {
     return Usage(error);
   }
-  const std::string modes = d.conditions.size() == 1
-                                ? std::to_string(d.modes.size()) + " modes"
-                                : std::to_string(d.modes.size()) + " modes in " +
-                                      std::to_string(d.conditions.size()) + " conditions";
+  std::string modes = std::to_string(d.modes.size()) + " modes";
+  if (!d.statics.empty()) modes += ", " + std::to_string(d.statics.size()) + " static stiffnesses";
+  if (d.conditions.size() > 1) modes += " in " + std::to_string(d.conditions.size()) + " conditions";
   std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),
               FLAGS_truth.c_str(), EffectList(s.effects).c_str());
   return kExitOk;

@@ -146,6 +146,10 @@ class Measurement {
   virtual int Scales(const Dataset& d, int item, const MeasurementOptions& o) const { return 0; }
   // "3 frequencies": n observables of this kind, in words.
   virtual std::string Count(int n) const = 0;
+  // Whether its rows see the condition's system scaled by one factor (M, C
+  // and K together), which changes no mode but every stiffness: structural
+  // identifiability (estimation/structure.h) then loses that freedom.
+  virtual bool SeesScale() const { return false; }
   // (model - measured) / sigma into r[0, Rows). With `params`, dr(row, p) =
   // d r / d (catalogue parameter p) for each p listed. False where the model
   // has no counterpart (no paired mode, a singular static solve).

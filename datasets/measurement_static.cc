@@ -49,6 +49,7 @@ class Static final : public Measurement {
     return words;
   }
   int Rows(const Dataset&, int, const MeasurementOptions&) const override { return 1; }
+  bool SeesScale() const override { return true; }  // a stiffness, not a ratio of them
   std::string Count(int n) const override { return std::to_string(n) + " static stiffnesses"; }
   bool Evaluate(const Dataset& d, int i, const ModelAt& at, const MeasurementOptions&, double* r,
                 const std::vector<int>* params, Eigen::Ref<RowMatrix> dr) const override {

@@ -110,6 +110,18 @@ void StructuralRows(const ModalResiduals& residuals, const Eigen::VectorXd& x,
       row.head(n + k) = invariant.row(r);
       rows.push_back(row);
     }
+    // A measurement that sees the system's scale (a static stiffness) leaves
+    // the condition no common factor.
+    bool scale_seen = false;
+    for (int i = residuals.row_begin(c); i < residuals.row_begin(c + 1); ++i) {
+      const Measurement* m = residuals.slots()[i].measurement;
+      scale_seen = scale_seen || (m && m->SeesScale());
+    }
+    if (scale_seen) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(cols);
+      row[n + k + c] = 1;
+      rows.push_back(row);
+    }
   }
   // A prior decides the direction it has a component in.
   for (const auto& prior : residuals.priors()) {

@@ -214,6 +214,44 @@ TEST(StaticMeasurementTest, ModesAndStaticStiffnessesTogetherRecoverTheTruth) {
   EXPECT_EQ(r.measurements->size(), 3u);
 }
 
+// Modes do not change when every mass, damper and stiffness scales by one
+// factor, so with the masses and the load free the modes alone leave them
+// structurally undetermined; a
+// static stiffness is a stiffness, not a ratio of them, and removes that
+// freedom (Measurement::SeesScale in the structural test).
+TEST(StaticMeasurementTest, AStaticStiffnessFixesTheScaleTheModesLeaveFree) {
+  const Parameters truth = ExampleCarTire();
+  for (const bool statics : {false, true}) {
+    std::mt19937_64 rng(21);
+    Dataset d = StandingTest(statics ? std::vector<StaticDirection>{StaticDirection::kVertical,
+                                                                     StaticDirection::kLongitudinal,
+                                                                     StaticDirection::kLateral}
+                                     : std::vector<StaticDirection>{},
+                             &rng);
+    for (Param p : {Param::m_b, Param::I_ay, Param::I_by, Param::I_bx, Param::I_bz, Param::F_cz0}) {
+      d.known.erase(p);
+      d.initial[p] = truth[p];
+    }
+    d.ties[Param::I_bz] = Param::I_bx;
+    d.initial.erase(Param::I_bz);
+    IdentifyResult r;
+    IdentifyOptions o;
+    o.starts = 1;
+    Identify(RigidRingModel(), d, o, &r);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    for (const ParameterEstimate& e : r.estimates) {
+      if (e.param() != Param::m_b) continue;
+      if (statics) {
+        EXPECT_EQ(e.identifiable, Identifiability::kYes) << e.reason;
+        ASSERT_TRUE(e.std.has_value());
+        EXPECT_LT(*e.std / e.value, 0.1);
+      } else {
+        EXPECT_EQ(e.identifiable, Identifiability::kNo) << e.reason;
+      }
+    }
+  }
+}
+
 // Experiment advice weighs a static stiffness the test did not measure,
 // named as such, for a parameter it informs.
 TEST(StaticMeasurementTest, AdviceWeighsTheStaticStiffnessesNotMeasured) {
