@@ -194,6 +194,7 @@ int BenchCommand(int argc, char** argv) {
   }
   SuiteOptions o;
   if (!ReadFlag("derivatives", &o.derivatives, &error)) return Usage(error);
+  if (!ReadFlag("starts", &o.starts, &error)) return Usage(error);
   o.replicates = FLAGS_replicates;
   o.seed = static_cast<unsigned>(SeedFlag());
   o.source_dir = DataDir();  // from any working directory
@@ -365,7 +366,8 @@ const std::vector<Command>& Commands() {
        "the accuracy, conditioning and speed suites, on the paper's data installed\n"
        "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"
        "and analytic derivatives side by side, whatever --derivatives says",
-       {"suite", "replicates", "seed", "derivatives", "output", "markdown"}, BenchCommand},
+       {"suite", "replicates", "seed", "derivatives", "starts", "output", "markdown"},
+       BenchCommand},
       {"report", "--input=REPORT.json --output=FILE.html",
        "any JSON report of ringid as one self-contained HTML page: tables and\n"
        "figures (SVG drawn by gnuplot, package gnuplot-nox)",

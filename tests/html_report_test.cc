@@ -156,7 +156,8 @@ Made IdentifyPaper() {
 }
 
 Made IdentifyShapes() {
-  return Make("identify_shapes", "identify --starts=1 --dataset=" + Simulate("shapes"));
+  return Make("identify_shapes", "identify --starts=1 --dataset=" +
+                                     Simulate("shapes", "--static=vertical,lateral"));
 }
 
 Made Identifiability() {
@@ -357,6 +358,12 @@ TEST(HtmlReportTest, IdentifyWithShapesDrawsMacAndIntervals) {
     }
   }
   EXPECT_NE(svg.find("interval / value (log scale)"), std::string::npos);
+  // The static stiffnesses, measured against fitted, in their own table.
+  ASSERT_EQ(m.report["measurements"].size(), 2u);
+  for (const json& s : m.report["measurements"]) {
+    EXPECT_NE(m.html.find("<td>" + s["name"].get<std::string>() + "</td>"), std::string::npos)
+        << s["name"];
+  }
 }
 
 TEST(HtmlReportTest, IdentifiabilityDrawsSpectrumCorrelationAndProfiles) {
@@ -427,6 +434,20 @@ TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
   if (verdict["effect"] != "none") {  // before and after, one panel each
     EXPECT_NE(svg.find("after: with " + verdict["effect"].get<std::string>()), std::string::npos);
   }
+}
+
+// Static stiffnesses (dataset format 3) get their own misfit table.
+TEST(HtmlReportTest, DiagnoseListsEachStaticStiffnessMisfit) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m =
+      Make("diagnose_static", "diagnose --derivatives=analytic --dataset=" +
+                                  Simulate("static", "--static=vertical,longitudinal,lateral"));
+  ASSERT_EQ(m.report["where_else"].size(), 3u);
+  for (const json& w : m.report["where_else"]) {
+    EXPECT_NE(m.html.find("<td>" + w["name"].get<std::string>() + "</td>"), std::string::npos)
+        << w["name"];
+  }
+  EXPECT_NE(m.html.find("Other measurements: baseline misfit"), std::string::npos);
 }
 
 // The SVG of the figure with id `id`, or "".
@@ -1091,7 +1112,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_diagnosis", BenchDiagnosis},
                       Kind{"bench_rolling", [] { return Bench("rolling"); }},
                       Kind{"bench_speed", BenchSpeed},
-                      Kind{"bench_forces", [] { return Bench("forces"); }}),
+                      Kind{"bench_forces", [] { return Bench("forces"); }},
+                      Kind{"bench_static", [] { return Bench("static"); }}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for

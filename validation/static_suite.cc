@@ -51,6 +51,7 @@ double ErrorOverStd(double estimate, double std, double truth) {
 Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
   if (o.replicates < 1) return Status::InvalidInput("replicates: must be at least 1");
   if (!(o.start_factor >= 1)) return Status::InvalidInput("start_factor: must be at least 1");
+  if (o.starts < 1) return Status::InvalidInput("starts: must be at least 1");
   const auto start = std::chrono::steady_clock::now();
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> uniform(-1, 1);
@@ -80,6 +81,7 @@ Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
     IdentifyOptions io;
     io.residuals.derivatives = o.derivatives;
     io.threads = 1;
+    io.starts = o.starts;
     IdentifyResult f;
     Identify(RigidRingModel(), d, io, &f);
     if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);
@@ -87,6 +89,7 @@ Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
       ++suite->failed_fits;
     } else {
       ++fits;
+      suite->poor_fits += f.fit.poor;
       fit_seconds += f.seconds;
       for (const ParameterEstimate& e : f.estimates) {
         if (!e.free) continue;
@@ -118,6 +121,7 @@ Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
   suite->tires = o.replicates;
   suite->tire_spread = kTireSpread;
   suite->start_factor = o.start_factor;
+  suite->starts = o.starts;
   suite->frequency_noise = so.frequency_noise;
   suite->damping_noise = so.damping_noise;
   suite->shape_noise = so.shape_noise;
@@ -159,9 +163,10 @@ std::string StaticSuite::Markdown() const {
     o << line;
   }
   std::snprintf(line, sizeof line,
-                "\n%d tires, initial values within a factor %g; %d failed fits; %.2f s per fit; "
-                "pass: %s\n",
-                tires, start_factor, failed_fits, seconds_per_fit, Pass() ? "yes" : "no");
+                "\n%d tires, initial values within a factor %g, %d starts; %d failed fits, %d poor "
+                "fits; %.2f s per fit; pass: %s\n",
+                tires, start_factor, starts, failed_fits, poor_fits, seconds_per_fit,
+                Pass() ? "yes" : "no");
   o << line;
   return o.str();
 }

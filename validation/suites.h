@@ -38,6 +38,8 @@ struct SuiteOptions {
   // diagnosis: the initial values scattered log-uniformly within this
   // factor of the truth (issue 21: a new user's first guess).
   double start_factor = 3;
+  // static: the starts of each identification (identify's default; bench --starts).
+  int starts = 6;
   // Called with (done, total) as the suite's cases finish.
   std::function<void(int, int)> on_case;
 };
@@ -336,9 +338,13 @@ struct StaticSuite {
   int tires = 0;
   double tire_spread = 0;   // log-sd of each scattered parameter around the car tire's
   double start_factor = 0;  // initial values within this factor of each truth
+  int starts = 0;           // per identification
   double frequency_noise = 0, damping_noise = 0, shape_noise = 0, static_noise = 0;
   std::vector<StaticParameter> parameters;  // the free ones
   int failed_fits = 0;
+  // Fits whose chi-square test says poor (p < kPoorFitP): on noise of the
+  // stated sigma from the model itself, a start that missed the best point.
+  int poor_fits = 0;
   double seconds = 0, seconds_per_fit = 0;
   // The criterion: each parameter classed yes in at least identifiable_share
   // of the fits has its 95 % intervals (those classed yes) cover within
@@ -355,6 +361,7 @@ struct StaticSuite {
     a->Visit("tires", &tires);
     a->Visit("tire_spread", &tire_spread);
     a->Visit("start_factor", &start_factor);
+    a->Visit("starts", &starts);
     a->Group("noise", [&](auto* g) {
       g->Visit("frequency_relative", &frequency_noise);
       g->Visit("damping_relative", &damping_noise);
@@ -363,6 +370,7 @@ struct StaticSuite {
     });
     a->VisitKeyed("parameters", &parameters, &StaticParameter::param);
     a->Visit("failed_fits", &failed_fits);
+    a->Visit("poor_fits", &poor_fits);
     a->Visit("seconds", &seconds);
     a->Visit("seconds_per_fit", &seconds_per_fit);
     a->Group("criteria", [&](auto* g) {

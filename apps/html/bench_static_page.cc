@@ -10,7 +10,9 @@ void BenchStaticPage(const BenchStaticReport& report, Page* page) {
   const auto& [low, high] = suite.coverage_range;
   page->Summary({{"tires", NumberCell(suite.tires, "%.0f")},
                  {"initial values within a factor of the truth", NumberCell(suite.start_factor, "%g")},
+                 {"starts per fit", NumberCell(suite.starts, "%.0f")},
                  {"failed fits", NumberCell(suite.failed_fits, "%.0f")},
+                 {"poor fits (a start that missed the best point)", NumberCell(suite.poor_fits, "%.0f")},
                  {"seconds per fit", NumberCell(suite.seconds_per_fit)},
                  {"static-stiffness noise (relative sd)", NumberCell(suite.static_noise)},
                  {"pass", YesNoCell(suite.Pass())}});
