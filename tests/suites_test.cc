@@ -144,8 +144,8 @@ TEST(SuitesTest, RollingCriteriaFollowTheCounts) {
   RollingSuite r;
   r.replicates = 200;
   r.coverage_95 = 0.95;
-  r.parameters = {{Param::K_cx, 8e4, 190, 10, 0, 200, 0.95, 0, 1},
-                  {Param::sigma_cx, 0.1, 200, 0, 0, 200, 0.89, 0, 1}};
+  r.parameters = {{{190, 10, 0, 200, 0.95, 0, 1}, Param::K_cx, 8e4},
+                  {{200, 0, 0, 200, 0.89, 0, 1}, Param::sigma_cx, 0.1}};
   EXPECT_TRUE(r.ContactClassedYes());  // 190 of 200 is 95 %
   EXPECT_TRUE(r.NeverNo());
   EXPECT_TRUE(r.CoverageInRange());

@@ -41,10 +41,6 @@ Parameters ScatteredTire(std::mt19937_64* rng) {
   return p;
 }
 
-double ErrorOverStd(double estimate, double std, double truth) {
-  if (estimate > 0 && truth > 0) return std::log(estimate / truth) / (std / estimate);
-  return (estimate - truth) / std;
-}
 
 }  // namespace
 
@@ -58,12 +54,7 @@ Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
   SimulateOptions so;
   so.statics = {StaticDirection::kVertical, StaticDirection::kLongitudinal,
                 StaticDirection::kLateral};
-  struct Tally {
-    std::array<int, 3> classes{};
-    long inside = 0, intervals = 0;
-    double z_sum = 0, z2_sum = 0;
-  };
-  std::map<Param, Tally> tallies;
+  std::map<Param, CoverageTally> tallies;
   double fit_seconds = 0;
   int fits = 0;
   for (int k = 0; k < o.replicates; ++k) {
@@ -92,30 +83,15 @@ Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
       suite->poor_fits += f.fit.poor;
       fit_seconds += f.seconds;
       for (const ParameterEstimate& e : f.estimates) {
-        if (!e.free) continue;
-        Tally& t = tallies[e.param()];
-        ++t.classes[static_cast<int>(e.identifiable)];
-        if (e.identifiable != Identifiability::kYes || !e.std || !(*e.std > 0)) continue;
-        const double z = ErrorOverStd(e.value, *e.std, truth[e.param()]);
-        ++t.intervals;
-        t.inside += std::abs(z) <= kNormal95;
-        t.z_sum += z;
-        t.z2_sum += z * z;
+        if (e.free) tallies[e.param()].Add(e, truth[e.param()], true);
       }
     }
     if (o.on_case) o.on_case(k + 1, o.replicates);
   }
   for (const auto& [p, t] : tallies) {
-    const double n = static_cast<double>(t.intervals);
     StaticParameter r;
     r.param = p;
-    r.yes = t.classes[static_cast<int>(Identifiability::kYes)];
-    r.practically_no = t.classes[static_cast<int>(Identifiability::kPracticallyNo)];
-    r.no = t.classes[static_cast<int>(Identifiability::kNo)];
-    r.intervals = t.intervals;
-    r.coverage_95 = t.intervals ? t.inside / n : NAN;
-    r.mean_z = t.intervals ? t.z_sum / n : NAN;
-    r.rms_z = t.intervals ? std::sqrt(t.z2_sum / n) : NAN;
+    t.Into(&r);
     suite->parameters.push_back(r);
   }
   suite->tires = o.replicates;
@@ -153,15 +129,9 @@ std::vector<Param> StaticSuite::OutsideCoverageRange() const {
 
 std::string StaticSuite::Markdown() const {
   std::ostringstream o;
-  o << "| parameter | yes | practically_no | no | intervals | 95 % coverage | mean z | rms z |\n"
-    << "|---|---|---|---|---|---|---|---|\n";
+  o << CoverageTableHeader();
+  for (const StaticParameter& r : parameters) o << CoverageRow(r.param, r);
   char line[256];
-  for (const StaticParameter& r : parameters) {
-    std::snprintf(line, sizeof line, "| %s | %d | %d | %d | %ld | %.1f %% | %+.2f | %.2f |\n",
-                  ToString(r.param), r.yes, r.practically_no, r.no, r.intervals,
-                  100 * r.coverage_95, r.mean_z, r.rms_z);
-    o << line;
-  }
   std::snprintf(line, sizeof line,
                 "\n%d tires, initial values within a factor %g, %d starts; %d failed fits, %d poor "
                 "fits; %.2f s per fit; pass: %s\n",

@@ -122,15 +122,8 @@ std::string RollingSuite::Markdown() const {
                    " replicates, noise " + Format("%g", 100 * frequency_noise) +
                    " % frequency, " + Format("%g", 100 * damping_noise) + " % damping, " +
                    Format("%g", shape_noise) +
-                   " shapes.\n\n"
-                   "| parameter | yes | practically_no | no | intervals | 95 % coverage | mean z |"
-                   " rms z |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
-  for (const RollingParameter& r : parameters) {
-    md += std::string("| ") + ToString(r.param) + " | " + std::to_string(r.yes) + " | " +
-          std::to_string(r.practically_no) + " | " + std::to_string(r.no) + " | " +
-          std::to_string(r.intervals) + " | " + Percent(r.coverage_95) + " | " +
-          Format("%+.2f", r.mean_z) + " | " + Format("%.2f", r.rms_z) + " |\n";
-  }
+                   " shapes.\n\n" + CoverageTableHeader();
+  for (const RollingParameter& r : parameters) md += CoverageRow(r.param, r);
   const std::string contact_names = names(contact, " and ");
   const std::string outside = names(OutsideCoverageRange(), ", ");
   const auto verdict = [](bool ok) { return ok ? std::string("met") : std::string("NOT met"); };

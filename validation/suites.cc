@@ -233,16 +233,6 @@ Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds
   return Status::Success();
 }
 
-namespace {
-
-// The error of `estimate` in units of its std: in log space for a positive
-// parameter (the covariance's coordinates), linear otherwise.
-double ErrorOverStd(double estimate, double std, double truth) {
-  if (estimate > 0 && truth > 0) return std::log(estimate / truth) / (std / estimate);
-  return (estimate - truth) / std;
-}
-
-}  // namespace
 
 Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
   if (o.replicates < 1) return Status::InvalidInput("replicates: must be at least 1");
@@ -258,12 +248,7 @@ Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
   const auto start = std::chrono::steady_clock::now();
   const Parameters truth = ExampleCarTire();
   std::mt19937_64 rng(o.seed);
-  struct Tally {
-    std::array<int, 3> classes{};
-    long inside = 0, intervals = 0;
-    double z_sum = 0, z2_sum = 0;
-  };
-  std::map<Param, Tally> tallies;
+  std::map<Param, CoverageTally> tallies;
   double fit_seconds = 0;
   int fits = 0;
   for (int k = 0; k < o.replicates; ++k) {
@@ -281,36 +266,21 @@ Status RunRollingSuite(const SuiteOptions& o, RollingSuite* suite) {
       ++fits;
       fit_seconds += f.seconds;
       for (const ParameterEstimate& e : f.estimates) {
-        if (!e.free) continue;
-        Tally& t = tallies[e.param()];
-        ++t.classes[static_cast<int>(e.identifiable)];
-        if (!e.std || !(*e.std > 0) || !std::isfinite(*e.std)) continue;
-        const double z = ErrorOverStd(e.value, *e.std, truth[e.param()]);
-        ++t.intervals;
-        t.inside += std::abs(z) <= kNormal95;
-        t.z_sum += z;
-        t.z2_sum += z * z;
+        if (e.free) tallies[e.param()].Add(e, truth[e.param()], false);
       }
     }
     if (o.on_case) o.on_case(k + 1, o.replicates);
   }
   long inside_all = 0;
   for (Param p : kRollingFree) {
-    const Tally& t = tallies[p];
-    const double n = static_cast<double>(t.intervals);
+    const CoverageTally& t = tallies[p];
     RollingParameter r;
     r.param = p;
     r.truth = truth[p];
-    r.yes = t.classes[static_cast<int>(Identifiability::kYes)];
-    r.practically_no = t.classes[static_cast<int>(Identifiability::kPracticallyNo)];
-    r.no = t.classes[static_cast<int>(Identifiability::kNo)];
-    r.intervals = t.intervals;
-    r.coverage_95 = t.intervals ? t.inside / n : NAN;
-    r.mean_z = t.intervals ? t.z_sum / n : NAN;
-    r.rms_z = t.intervals ? std::sqrt(t.z2_sum / n) : NAN;
+    t.Into(&r);
     suite->parameters.push_back(r);
-    suite->intervals += t.intervals;
-    inside_all += t.inside;
+    suite->intervals += t.intervals();
+    inside_all += t.inside();
   }
   suite->coverage_95 =
       suite->intervals ? static_cast<double>(inside_all) / suite->intervals : NAN;

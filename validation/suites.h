@@ -20,6 +20,7 @@
 #include "model/names.h"
 #include "model/parameters.h"
 #include "report/report.h"
+#include "validation/coverage.h"
 
 namespace ringid {
 
@@ -229,27 +230,13 @@ struct DiagnosisSuite {
 
 // --- rolling: one car tire standing and on the drum, every condition
 // identified jointly; classes and 95 % intervals over Monte Carlo replicates.
-struct RollingParameter {
+struct RollingParameter : ParameterCoverage {
   Param param = Param::m_b;
   double truth = 0;
-  // Replicates whose fit classed it so (a failed fit classes nothing).
-  int yes = 0, practically_no = 0, no = 0;
-  long intervals = 0;      // fits that gave it a std
-  double coverage_95 = 0;  // of those intervals, the share holding the truth
-  // z = log(estimate / truth) / (std / estimate) (linear where not positive):
-  // the mean shows a bias, the rms is 1 when the std is right.
-  double mean_z = 0;
-  double rms_z = 0;
   template <class Archive>  // keyed by param
   void Serialize(Archive* a) {
     a->Visit("truth", &truth);
-    a->Visit("yes", &yes);
-    a->Visit("practically_no", &practically_no);
-    a->Visit("no", &no);
-    a->Visit("intervals", &intervals);
-    a->Visit("coverage_95", &coverage_95);
-    a->Visit("mean_z", &mean_z);
-    a->Visit("rms_z", &rms_z);
+    ParameterCoverage::Serialize(a);
   }
 };
 
@@ -316,22 +303,10 @@ struct RollingSuite {
 // measured by its seven modes (frequencies, damping ratios, shapes) and its
 // three static stiffnesses, identified from initial values scattered
 // log-uniformly within start_factor of its truth.
-struct StaticParameter {
+struct StaticParameter : ParameterCoverage {  // its intervals: the fits classing it yes
   Param param = Param::m_b;
-  int yes = 0, practically_no = 0, no = 0;  // fits classing it so
-  long intervals = 0;      // fits that classed it yes and gave it a std
-  double coverage_95 = 0;  // of those intervals, the share holding the truth
-  double mean_z = 0, rms_z = 0;  // as RollingParameter's
   template <class Archive>  // keyed by param
-  void Serialize(Archive* a) {
-    a->Visit("yes", &yes);
-    a->Visit("practically_no", &practically_no);
-    a->Visit("no", &no);
-    a->Visit("intervals", &intervals);
-    a->Visit("coverage_95", &coverage_95);
-    a->Visit("mean_z", &mean_z);
-    a->Visit("rms_z", &rms_z);
-  }
+  void Serialize(Archive* a) { ParameterCoverage::Serialize(a); }
 };
 
 struct StaticSuite {
