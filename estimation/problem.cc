@@ -79,6 +79,12 @@ std::unique_ptr<Problem> Problem::Create(const ModalModel& model, const Dataset&
     return nullptr;
   }
   p->residuals_ = std::make_unique<ModalResiduals>(*p->model_, p->dataset_, *p->setup_, options);
+  if (p->residuals_->num_residuals() == 0) {  // FRFs alone (contract §9): read, not yet fitted
+    *status = Status::InvalidInput(
+        "the dataset holds nothing ringid fits yet: give it modes or static stiffnesses (its "
+        "frequency response functions are read but not fitted)");
+    return nullptr;
+  }
   *status = Status::Success();
   return p;
 }
