@@ -479,6 +479,7 @@ std::vector<Advice> ExperimentAdvice(const Problem& problem, const Eigen::Vector
       a.information_gain = 0.5 * std::log(var0[i] / var_after[c][i]);
       const double sd = std::sqrt(var_after[c][i]);
       const double relative = setup.is_log(i) ? sd : sd / std::max(std::abs(xhat[i]), 1e-300);
+      a.relative_std_after = relative;
       a.makes_identifiable = relative <= o.fit.uncertainty.practical_relative_std;
       if (a.information_gain > 0.01) mine.push_back(a);
     }
@@ -615,10 +616,11 @@ std::string IdentifiabilityResult::FullReport() const {
   if (identifiable_subset.empty()) o << " none";
   o << "\n";
   if (!advice.empty()) {
-    o << "\n  what would help (information gain on the parameter, nats):\n";
+    o << "\n  what would help (information gain on the parameter, nats; the relative std it "
+         "would leave):\n";
     for (const Advice& a : advice) {
-      std::snprintf(line, sizeof line, "    %-10s %-55s %6.2f%s\n", a.parameter.c_str(),
-                    a.observation.c_str(), a.information_gain,
+      std::snprintf(line, sizeof line, "    %-10s %-55s %6.2f  to %.3g %%%s\n", a.parameter.c_str(),
+                    a.observation.c_str(), a.information_gain, 100 * a.relative_std_after,
                     a.makes_identifiable ? "  -> identifiable" : "");
       o << line;
     }

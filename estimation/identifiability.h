@@ -145,6 +145,9 @@ struct Advice {
   std::string parameter;    // the parameter it would help
   std::string observation;  // e.g. "damping ratio of rotation_anti_phase"
   double information_gain = 0;  // 1/2 log(var before / var after), nats
+  // The parameter's relative standard deviation with it (linearised): "would
+  // determine k_by to 4 %".
+  double relative_std_after = 0;
   bool makes_identifiable = false;
 
   template <class Archive>
@@ -152,6 +155,7 @@ struct Advice {
     a->Visit("parameter", &parameter);
     a->Visit("observation", &observation);
     a->Visit("information_gain_nats", &information_gain);
+    a->Visit("relative_std_after", &relative_std_after);
     a->Visit("makes_identifiable", &makes_identifiable);
   }
 };

@@ -81,12 +81,13 @@ void TableSections(const IdentifiabilityResult& r, Page* page) {
   std::vector<Row> advice;
   for (const Advice& a : r.advice) {
     advice.push_back({TextCell(a.parameter), TextCell(a.observation),
-                      NumberCell(a.information_gain), YesNoCell(a.makes_identifiable)});
+                      NumberCell(a.information_gain), PercentCell(a.relative_std_after),
+                      YesNoCell(a.makes_identifiable)});
   }
-  page->TableSection(
-      "Experiment advice",
-      {"parameter", "extra observation", "information gain (nats)", "makes it identifiable"},
-      advice);
+  page->TableSection("Experiment advice",
+                     {"parameter", "extra observation", "information gain (nats)",
+                      "relative std with it (%)", "makes it identifiable"},
+                     advice);
 }
 
 void SingularValueFigure(const IdentifiabilityResult& r, Page* page) {
