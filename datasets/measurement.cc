@@ -136,9 +136,14 @@ const std::vector<const MeasurementRecords*>& Records() {
 }
 
 const std::vector<const Measurement*>& Measurements() {
+  static const std::vector<OfModes> of_modes = [] {
+    std::vector<OfModes> units;
+    for (const ModeQuantity* unit : ModeQuantities()) units.emplace_back(*unit);
+    return units;
+  }();
   static const std::vector<const Measurement*> all = [] {
     std::vector<const Measurement*> kinds;
-    for (const ModeQuantity* unit : ModeQuantities()) kinds.push_back(new OfModes(*unit));
+    for (const OfModes& unit : of_modes) kinds.push_back(&unit);
     kinds.push_back(&StaticMeasurement());
     return kinds;
   }();
