@@ -11,18 +11,17 @@
 
 #include "datasets/dataset_file.h"
 #include "datasets/file_kind.h"
+#include "datasets/load_failure.h"
 #include "model/spelling.h"
 
 namespace ringid {
 namespace {
 
+using internal::Fail;  // caught in ParseDataset
+using internal::Failure;
+
 using nlohmann::json;
 
-// Thrown inside the loader only, caught in ParseDataset.
-struct Failure {
-  std::string field;
-  std::string message;
-};
 
 // "1e+12 in magnitude", for messages.
 std::string Magnitude() {
@@ -31,9 +30,6 @@ std::string Magnitude() {
   return o.str();
 }
 
-[[noreturn]] void Fail(const std::string& field, const std::string& message) {
-  throw Failure{field, message};
-}
 
 // The archive reads null as a number that is not finite.
 double Finite(double v, const std::string& field) {

@@ -8,20 +8,14 @@
 #include <utility>
 
 #include "datasets/dataset.h"
+#include "datasets/load_failure.h"
 #include "model/spelling.h"
 
 namespace ringid {
 namespace {
 
-// Thrown inside ReadFrf only: the field under the block and why.
-struct Failure {
-  std::string field;
-  std::string message;
-};
-
-[[noreturn]] void Fail(const std::string& field, const std::string& message) {
-  throw Failure{field, message};
-}
+using internal::Fail;  // caught in ReadFrf
+using internal::Failure;
 
 std::string Text(double v) {
   std::ostringstream o;

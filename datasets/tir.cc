@@ -8,18 +8,13 @@
 #include <map>
 #include <set>
 
+#include "datasets/load_failure.h"
+
 namespace ringid {
 namespace {
 
-// Thrown inside the parser only, caught in ParseTir.
-struct Failure {
-  std::string field;
-  std::string message;
-};
-
-[[noreturn]] void Fail(const std::string& field, const std::string& message) {
-  throw Failure{field, message};
-}
+using internal::Fail;  // caught in ParseTir
+using internal::Failure;
 
 std::string Upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

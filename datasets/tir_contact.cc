@@ -3,16 +3,14 @@
 #include <cmath>
 #include <optional>
 
+#include "datasets/load_failure.h"
+
 namespace ringid {
 namespace {
 
-using P = Param;
+using internal::Failure;  // caught in DeriveTirContact
 
-// Thrown inside the derivation only, caught in DeriveTirContact.
-struct Failure {
-  std::string field;
-  std::string message;
-};
+using P = Param;
 
 // The equations cited: Pacejka, Tire and Vehicle Dynamics, 3rd ed. (2012),
 // chapter 4 (4.E*) and appendix 3 (A3.*), as MF-Tyre/MF-Swift 6.1 use them.
