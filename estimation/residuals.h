@@ -107,11 +107,6 @@ class ModalResiduals {
     const Measurement* measurement = nullptr;  // null for a prior
     int component = 0;                         // the row within the item's
     int prior = -1;                            // for a prior: index into priors()
-    bool Is(Quantity q) const { return measurement && measurement->quantity() == q; }
-    // Whether it is a row of item `item` of `records`.
-    bool Of(const MeasurementRecords& records, int i) const {
-      return measurement && &measurement->records() == &records && item == i;
-    }
   };
   const std::vector<Slot>& slots() const { return slots_; }
 
