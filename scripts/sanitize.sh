@@ -47,5 +47,13 @@ long=(
   IdentifiabilityDrawsSpectrumCorrelationAndProfiles
   IdentifiabilitySaysAJumpBesideTheBound
   'PageRendersWithEveryFigureWhole/(identifiability|campaign|diagnose)( |$)'
+  # 60-120 s each under the sanitizers (2026-11-27), beside a shorter test of
+  # the same path: RollingTest.LabelsCarriedFromAnAnchor..., CampaignResumeTest's
+  # other tests (and CI's campaign benchmark), DiagnoseTest.NamesLugCoupling...,
+  # the static_measurement tests.
+  RollingTest.LabelsAtScatteredPointsAreThoseOfTheReferenceContinuation
+  CampaignResumeTest.AKilledShardRefitsOnlyWhatItHadNotFinishedAndTheMergeIsTheSerialTable
+  DiagnoseTest.TheReportIsTheSameOnOneThreadAndOnSeveral
+  SuitesTest.StaticStiffnessesAndModesIdentifyScatteredTiresFromScatteredStarts
 )
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -E "$(IFS='|'; echo "${long[*]}")"
