@@ -11,6 +11,7 @@
 #include "apps/reports.h"
 #include "datasets/tir_parameters.h"
 #include "datasets/uff_dataset.h"
+#include "datasets/uff_frf.h"
 #include "estimation/label_by_fit.h"
 
 namespace ringid {
@@ -77,7 +78,8 @@ void List(const UffFile& f) {
                 m.IsNormalMode() ? "normal" : m.IsComplexMode() ? "complex" : "not a mode");
   }
   if (!f.functions.empty()) {
-    std::printf("functions (58%s): their use (FRF fitting) is to come\n  %5s %12s %12s %8s %s\n",
+    std::printf("functions (58%s): a ringid-uff-map/2's points import the FRFs (type 4), with "
+                "sigma from coherences (type 6)\n  %5s %12s %12s %8s %s\n",
                 f.functions.front().binary ? "b" : "", "type", "response", "reference", "points",
                 "ordinate / abscissa");
   }
@@ -121,9 +123,14 @@ int ImportCommand(int argc, char** argv) {
   UffImport in;
   IdentifyOptions fit;  // to label by the fitted model (estimation/label_by_fit.h)
   fit.residuals.derivatives = Derivatives::kAnalytic;
-  if (!(FLAGS_parameters.empty() ? UffToDataset(file, map, nullptr, &in, &load)
+  if (!map.channels.empty() &&
+      !(FLAGS_parameters.empty() ? UffToDataset(file, map, nullptr, &in, &load)
                                  : UffToDatasetLabelledByFit(file, map, p, fit, &in, &load))) {
     return Usage(load.OneLine());
+  }
+  if (!map.points.empty()) {  // a ringid-uff-map/2's FRFs (datasets/uff_frf.h)
+    if (!AddUffFrfs(file, map, &in, &load)) return Usage(load.OneLine());
+    if (map.channels.empty() && !FLAGS_parameters.empty()) WriteUffParameters(p, map, &in.dataset);
   }
   // The dataset written must read back: the loader's rules are the test.
   const std::string text = DatasetToJson(in.dataset);
@@ -132,8 +139,20 @@ int ImportCommand(int argc, char** argv) {
   for (const std::string& note : in.notes) std::printf("%s\n", note.c_str());
   for (const std::string& w : in.warnings) std::printf("warning: %s\n", w.c_str());
   const int rc = Write(FLAGS_output, text);
-  if (rc == kExitOk) {
+  size_t frfs = 0, conditions = 0;
+  for (const Condition& c : in.dataset.conditions) {
+    if (c.frf) frfs += c.frf->functions.size();
+    conditions += c.frf.has_value();
+  }
+  if (rc == kExitOk && frfs == 0) {
     std::printf("wrote %s (%zu modes from %s)\n", FLAGS_output.c_str(), in.dataset.modes.size(),
+                FLAGS_uff.c_str());
+  } else if (rc == kExitOk) {
+    std::printf("wrote %s (%zu FRFs in %zu conditions%s from %s)\n", FLAGS_output.c_str(), frfs,
+                conditions,
+                in.dataset.modes.empty()
+                    ? ""
+                    : (", and " + std::to_string(in.dataset.modes.size()) + " modes").c_str(),
                 FLAGS_uff.c_str());
   }
   (void)argc;

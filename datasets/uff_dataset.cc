@@ -8,6 +8,7 @@
 
 #include "datasets/measurement.h"
 #include "datasets/pairing.h"
+#include "datasets/uff_frf.h"
 #include "model/rigid_ring_model.h"
 #include "model/spelling.h"
 
@@ -20,17 +21,94 @@ bool Fail(LoadError* error, const std::string& field, const std::string& message
   return false;
 }
 
+// Format 2's axes: each of ringid's x, y, z as a lab axis with its sign.
+bool CheckAxes(const std::vector<std::string>& axes, UffMap* map, LoadError* error) {
+  if (axes.size() != 3) {
+    return Fail(error, "axes", "must be three lab axes, ringid's x, y and z (e.g. [\"x\", \"-y\", \"-z\"])");
+  }
+  std::set<int> used;
+  for (size_t i = 0; i < 3; ++i) {
+    const std::string& a = axes[i];
+    const std::string at = "axes[" + std::to_string(i) + "]";
+    const bool minus = !a.empty() && a[0] == '-';
+    const std::string axis = a.substr(!a.empty() && (a[0] == '-' || a[0] == '+') ? 1 : 0);
+    if (axis != "x" && axis != "y" && axis != "z") {
+      return Fail(error, at, "must be a lab axis x, y or z, signed: \"-z\" for the lab's -z");
+    }
+    const int k = axis[0] - 'x';
+    if (!used.insert(k).second) return Fail(error, at, "names lab axis " + axis + " twice");
+    map->axes[i] = {0, 0, 0};
+    map->axes[i][k] = minus ? -1 : 1;
+  }
+  const auto& m = map->axes;
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  if (det < 0) {
+    return Fail(error, "axes", "turn a right-handed frame into a left-handed one (a mirror): "
+                               "flip the sign of one axis");
+  }
+  return true;
+}
+
+// Format 2's points, units and averages.
+bool CheckFrfFields(const UffMapFields& j, UffMap* map, LoadError* error) {
+  if (j.axes && !CheckAxes(*j.axes, map, error)) return false;
+  const std::vector<UffPointFields> points = j.points.value_or(std::vector<UffPointFields>{});
+  std::set<int> nodes;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const UffPointFields& p = points[i];
+    const std::string at = "points[" + std::to_string(i) + "]";
+    if (p.node <= 0) return Fail(error, at + ".node", "must be a positive node label");
+    if (!nodes.insert(p.node).second) {
+      return Fail(error, at + ".node", "node " + std::to_string(p.node) + " is placed twice");
+    }
+    UffMap::Point point{p.node, p.on, std::nullopt};
+    if (p.point_m) {
+      if (p.point_m->size() != 3) return Fail(error, at + ".point_m", "must be three numbers [x, y, z] in metres");
+      for (size_t k = 0; k < 3; ++k) {
+        if (!std::isfinite((*p.point_m)[k])) return Fail(error, at + ".point_m[" + std::to_string(k) + "]", "must be a number");
+      }
+      point.point_m = std::array<double, 3>{(*p.point_m)[0], (*p.point_m)[1], (*p.point_m)[2]};
+    }
+    map->points.push_back(point);
+  }
+  if (j.units) {
+    const std::pair<const char*, const std::optional<std::string>*> given[] = {
+        {"response", &j.units->response}, {"reference", &j.units->reference}};
+    for (const auto& [key, unit] : given) {
+      if (!*unit) continue;
+      const bool force = std::string(key) == "reference";
+      const std::string problem = UffUnitProblem(**unit, force);
+      if (!problem.empty()) return Fail(error, std::string("units.") + key, problem);
+      (force ? map->reference_unit : map->response_unit) = **unit;
+    }
+  }
+  if (j.averages && *j.averages < 1) return Fail(error, "averages", "must be at least 1");
+  map->averages = j.averages;
+  return true;
+}
+
 bool CheckMap(const UffMapFields& j, UffMap* map, LoadError* error) {
-  if (j.format != kUffMapFormat) {
-    return Fail(error, "format", std::string("must be \"") + kUffMapFormat + "\"");
+  const bool format2 = j.format == kUffMapFormat2;
+  if (j.format != kUffMapFormat && !format2) {
+    return Fail(error, "format", std::string("must be \"") + kUffMapFormat + "\" or \"" +
+                                     kUffMapFormat2 + "\"");
   }
   if (j.name.empty()) return Fail(error, "name", "must not be empty");
   map->name = j.name;
   map->description = j.description.value_or("");
-  if (j.channels.empty()) return Fail(error, "channels", "must name at least one channel");
+  const std::vector<UffChannelFields> channels =
+      format2 ? j.channels2.value_or(std::vector<UffChannelFields>{}) : j.channels;
+  if (format2 && channels.empty() && (!j.points || j.points->empty())) {
+    return Fail(error, "points", "a map places FRF nodes (points) or maps mode channels "
+                                 "(channels): give at least one");
+  }
+  if (!format2 && channels.empty()) return Fail(error, "channels", "must name at least one channel");
+  if (format2 && !CheckFrfFields(j, map, error)) return false;
   std::set<std::pair<int, int>> seen;
-  for (size_t i = 0; i < j.channels.size(); ++i) {
-    const UffChannelFields& c = j.channels[i];
+  for (size_t i = 0; i < channels.size(); ++i) {
+    const UffChannelFields& c = channels[i];
     const std::string at = "channels[" + std::to_string(i) + "]";
     if (c.node <= 0) return Fail(error, at + ".node", "must be a positive node label");
     if (std::abs(c.direction) < 1 || std::abs(c.direction) > 6) {
@@ -279,14 +357,16 @@ bool UffToDataset(const UffFile& file, const UffMap& map, const Parameters* p, U
   if (!p && !map.known.empty()) {
     out->notes.push_back("known: no --parameters, so no value is written known or initial");
   }
-  if (p) {
-    for (Param q : RigidRingModel().parameters()) {
-      if (!p->IsSet(q)) continue;
-      const bool known = std::find(map.known.begin(), map.known.end(), q) != map.known.end();
-      (known ? d.known : d.initial)[q] = (*p)[q];
-    }
-  }
+  if (p) WriteUffParameters(*p, map, &d);
   return true;
+}
+
+void WriteUffParameters(const Parameters& p, const UffMap& map, Dataset* d) {
+  for (Param q : RigidRingModel().parameters()) {
+    if (!p.IsSet(q)) continue;
+    const bool known = std::find(map.known.begin(), map.known.end(), q) != map.known.end();
+    (known ? d->known : d->initial)[q] = p[q];
+  }
 }
 
 }  // namespace ringid

@@ -314,7 +314,7 @@ TEST(UffImportTest, TheShippedLabExampleIsTheCarTiresModesUnderItsMap) {
 TEST(UffImportTest, BadMapsAndUnlabelledModesAreRefusedNamingTheField) {
   const std::string head = R"({"format": "ringid-uff-map/1", "name": "m", )";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {R"({"format": "ringid-uff-map/2", "name": "m", "channels": []})", "format"},
+      {R"({"format": "ringid-uff-map/3", "name": "m", "channels": []})", "format"},
       {head + R"("channels": []})", "channels"},
       {head + R"("channels": [{"node": 1, "direction": 3, "dof": "z_bb"}]})", "channels[0].dof"},
       {head + R"("channels": [{"node": 1, "direction": 7, "dof": "z_b"}]})", "channels[0].direction"},
