@@ -148,8 +148,8 @@ int ImportCommand(int argc, char** argv) {
     std::printf("wrote %s (%zu modes from %s)\n", FLAGS_output.c_str(), in.dataset.modes.size(),
                 FLAGS_uff.c_str());
   } else if (rc == kExitOk) {
-    std::printf("wrote %s (%zu FRFs in %zu conditions%s from %s)\n", FLAGS_output.c_str(), frfs,
-                conditions,
+    std::printf("wrote %s (%zu FRF%s in %zu condition%s%s from %s)\n", FLAGS_output.c_str(), frfs,
+                frfs == 1 ? "" : "s", conditions, conditions == 1 ? "" : "s",
                 in.dataset.modes.empty()
                     ? ""
                     : (", and " + std::to_string(in.dataset.modes.size()) + " modes").c_str(),

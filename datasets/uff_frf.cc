@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "datasets/load_failure.h"
+#include "datasets/uff_internal.h"
 #include "model/spelling.h"
 
 namespace ringid {
@@ -42,10 +43,9 @@ std::string NodeName(int node, int direction) {
   return std::to_string(node) + ":" + (direction < 0 ? "-" : "+") + std::to_string(std::abs(direction));
 }
 
-std::string Trimmed(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
+std::string Trimmed(const std::string& s) { return std::string(uff_internal::Trim(s)); }
+// The file's text as a message may quote it: 'printable ASCII', at most 40 characters.
+std::string Quoted(const std::string& s) { return uff_internal::Quoted(s); }
 
 const UffUnitName* FindUnit(const std::string& name) {
   for (const UffUnitName& u : UffUnitNames()) {
@@ -84,15 +84,16 @@ AxisUnit Axis(const UffAxis& x, const UffUnits* units, const std::string& map_un
   const UffUnitName* unit = named ? FindUnit(label) : nullptr;
   const std::string ask = ", or give the map's units." + key + " (docs/uff.md)";
   if (named && !unit) {
-    Fail(field, "units label '" + label + "' names no unit ringid knows (" +
-                    UffUnitProblem(label, force) + ")" + ask);
+    const std::string shown = Quoted(label);
+    Fail(field, "units label " + shown + " names no unit ringid knows (" +
+                    UffUnitProblem(shown.substr(1, shown.size() - 2), force) + ")" + ask);
   }
   if (x.temperature_exponent != 0) Fail(field, "field 4 (temperature units exponent) must be 0" + ask);
   if (std::abs(x.length_exponent) > kMaxExponent || std::abs(x.force_exponent) > kMaxExponent) {
     Fail(field, "fields 2 and 3 (length and force units exponents) must lie in -3..3" + ask);
   }
   if (x.length_exponent == 0 && x.force_exponent == 0) {
-    if (unit) return FromName(*unit, "label '" + label + "'");
+    if (unit) return FromName(*unit, "label " + Quoted(label));
     AxisUnit a;  // the other axis may carry the dimension
     a.said = "no exponents, no units label";
     return a;
@@ -103,14 +104,14 @@ AxisUnit Axis(const UffAxis& x, const UffUnits* units, const std::string& map_un
   const double lf = units ? units->length_factor : 1, ff = units ? units->force_factor : 1;
   a.si = 1 / (std::pow(lf, a.length) * std::pow(ff, a.force));
   a.said = "exponents (length " + std::to_string(a.length) + ", force " + std::to_string(a.force) +
-           ") and " + (units ? "dataset 164 '" + units->description + "'" : "SI (no dataset 164)");
+           ") and " + (units ? "dataset 164 " + Quoted(Trimmed(units->description)) : "SI (no dataset 164)");
   if (unit) {
     const AxisUnit by_label = FromName(*unit, "");
     if (by_label.length != a.length || by_label.force != a.force ||
         std::abs(by_label.si - a.si) > 1e-9 * by_label.si) {
       char size[64];
       std::snprintf(size, sizeof size, "%.6g", a.si);
-      Fail(field, "units label '" + label + "' disagrees with the exponents: those give length^" +
+      Fail(field, "units label " + Quoted(label) + " disagrees with the exponents: those give length^" +
                       std::to_string(a.length) + " force^" + std::to_string(a.force) +
                       " of " + size + " SI units (dataset 164)" + ask);
     }
@@ -163,7 +164,8 @@ FunctionUnits Units(const UffFunction& f, const UffUnits* units, const UffMap& m
                  "units.response (docs/uff.md)");
   }
   u.si = num.si / den.si;
-  u.said = std::string(ToString(u.quantity)) + " by " + num.said + ", per force by " + den.said;
+  u.said = std::string(ToString(u.quantity)) + " per force; response by " + num.said +
+           ", reference by " + den.said;
   return u;
 }
 
@@ -177,7 +179,7 @@ std::vector<double> Lines(const UffFunction& f, const std::string& where, size_t
   }
   const std::string label = Trimmed(f.abscissa.units_label);
   if (!label.empty() && label != "NONE" && label != "Hz" && label != "HZ" && label != "hz") {
-    Fail(where + " record 8", "units label '" + label + "': an FRF's abscissa is in Hz");
+    Fail(where + " record 8", "units label " + Quoted(label) + ": an FRF's abscissa is in Hz");
   }
   *first = 0;
   while (*first < f.x.size() && !(f.x[*first] > 0)) ++*first;
@@ -506,13 +508,12 @@ void Add(const UffFile& file, const UffMap& map, UffImport* out) {
     LoadError e;
     if (!ReadFrf(b.fields, 0, file.path, field, &*condition.frf, &e)) Fail(e.field, e.message);
     const std::vector<double>& lines = b.fields.frequencies_hz;
-    char head[160];
-    std::snprintf(head, sizeof head, "condition %s: %s, %s of %d inputs and %d outputs, %zu lines "
-                  "%.6g-%.6g Hz", condition.name.c_str(),
-                  Count(b.fields.functions.size(), "FRF", "FRFs").c_str(),
-                  b.fields.functions.size() == 1 ? "its pair" : "pairs",
-                  static_cast<int>(b.fields.inputs.size()), static_cast<int>(b.fields.outputs.size()),
-                  lines.size(), lines.front(), lines.back());
+    char head[200];
+    std::snprintf(head, sizeof head, "condition %s: %s of %s and %s, %s %.6g-%.6g Hz",
+                  condition.name.c_str(), Count(b.fields.functions.size(), "FRF", "FRFs").c_str(),
+                  Count(b.fields.outputs.size(), "output", "outputs").c_str(),
+                  Count(b.fields.inputs.size(), "input", "inputs").c_str(),
+                  Count(lines.size(), "line", "lines").c_str(), lines.front(), lines.back());
     notes.push_back(head);
     for (const auto& [said, n] : b.units) notes.push_back("  units: " + Count(n, "FRF", "FRFs") + ": " + said);
     if (b.default_sigma) {

@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-targets=${*:-dataset dataset3 model identify tir forces uff}
+targets=${*:-dataset dataset3 model identify tir forces uff uff58}
 bash scripts/install_deps.sh clang libclang-rt-14-dev
 # Debian's Ceres is a static library built without sanitizers. Eigen drops its
 # "glibc malloc is aligned" assumption under ASan, so without this define our
@@ -28,7 +28,7 @@ flags+=" -fsanitize-coverage-ignorelist=$PWD/tests/fuzz/coverage_ignorelist.txt"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRINGID_BUILD_TESTS=OFF -DRINGID_BUILD_BENCHMARKS=OFF -DRINGID_BUILD_FUZZERS=ON \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$sanitizers" > /dev/null
-cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer dataset3_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer uff_fuzzer
+cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer dataset3_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer uff_fuzzer uff58_fuzzer
 export ASAN_OPTIONS=detect_leaks=1
 for target in $targets; do
   work=$build/corpus-$target
