@@ -27,7 +27,7 @@ DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-
 DEFINE_string(truth, "", "write the truth (effects and every value) here");
 DEFINE_string(suite, "", "the validation suite to run");
 DEFINE_string(uff, "", "import: a Universal File Format file of a modal test (datasets 55, 58/58b, 15, 18, 82, 151, 164)");
-DEFINE_string(map, "", "import: a UFF map (ringid-uff-map/1): each node and direction a degree of freedom, modes to labels");
+DEFINE_string(map, "", "import: a UFF map (ringid-uff-map/1 or /2): each node and direction a degree of freedom, modes to labels; /2: where the FRFs' nodes are (docs/uff.md)");
 DEFINE_int32(replicates, ringid::SuiteOptions().replicates, "Monte Carlo replicates per tire (synthetic, rolling); static: the number of tires");
 DEFINE_string(markdown, "", "also write the Markdown table here");
 DEFINE_string(output_dir, "", "run a campaign: one report per dataset and campaign.json in this directory (made if missing)");

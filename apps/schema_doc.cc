@@ -47,6 +47,8 @@ std::string InputsMarkdown() {
   DatasetFields format1, format2, format3;
   format2.format = kDatasetFormat2;
   format3.format = kDatasetFormat3;
+  UffMapFields map2;
+  map2.format = kUffMapFormat2;
   return std::string("# The input files of ringid\n\n") +
          "Made by `ringid inputs` from the files' own field lists; a test keeps this file\n"
          "equal to its output. The rules these types cannot say (ranges, names, what one\n"
@@ -80,7 +82,14 @@ std::string InputsMarkdown() {
          "each channel a UFF node's direction (1..3 x, y, z; 4..6\nrotations; negative: the "
          "opposite sense) as a degree of freedom, with a sign; the\nlabels of modes the user "
          "knows, by dataset 55's mode number; the parameters of\n`--parameters` written `known` "
-         "(the rest `initial`).\n\n" + InputSchema(UffMapFields{});
+         "(the rest `initial`).\n\n" + InputSchema(UffMapFields{}) + "\n" +
+         "## UFF map, format 2 (`" + kUffMapFormat2 + "`)\n\nFormat 1's fields, `channels` "
+         "optional, and the FRFs' (dataset 58) places ([uff.md](uff.md)):\n`points` put a node on "
+         "the belt or the rim (`point_m` in ringid's axes, m; absent: the node's\ndataset-15 "
+         "coordinates); `axes` are ringid's x, y, z as signed lab axes; `units` name the\nunits "
+         "of every FRF's response and reference where the file's do not; `averages` go with\n"
+         "the file's coherence functions. At least one of `points` and `channels`.\n\n" +
+         InputSchema(map2);
 }
 
 }  // namespace ringid

@@ -46,7 +46,7 @@ FileKind FormatKind(const std::string& format) {
       {kDatasetFormat3, FileKind::kModalDataset},
       {kParameterSetFormat, FileKind::kParameterSet}, {kTruthFormat, FileKind::kTruth},
       {kResponseFormat, FileKind::kResponseDataset},  {kLugForcesFormat, FileKind::kLugForces},
-      {kUffMapFormat, FileKind::kUffMap},
+      {kUffMapFormat, FileKind::kUffMap},           {kUffMapFormat2, FileKind::kUffMap},
   };
   for (const auto& [name, kind] : kFormats) {
     if (format == name) return kind;
@@ -70,7 +70,7 @@ void Words(const SniffedFile& found, std::string* what_out, std::string* belongs
       break;
     case FileKind::kUff:
       what = "a UFF file";
-      belongs = "import its modes: ringid import --uff=FILE (docs/uff.md)";
+      belongs = "import its modes or FRFs: ringid import --uff=FILE (docs/uff.md)";
       break;
     case FileKind::kModalDataset: what = "a modal dataset" + format; belongs = "use --dataset"; break;
     case FileKind::kParameterSet:  // a set may leave its format out

@@ -638,6 +638,7 @@ TEST(FileKindTest, EachKindIsToldByItsFormatItsNameOrItsOpening) {
       {"ringid-lug-response/1", FileKind::kResponseDataset},
       {"ringid-lug-forces/1", FileKind::kLugForces},
       {"ringid-uff-map/1", FileKind::kUffMap},
+      {"ringid-uff-map/2", FileKind::kUffMap},
       {"ringid-modal-dataset/9", FileKind::kUnknown}};
   for (const auto& [format, kind] : formats) {
     EXPECT_EQ(SniffJson(json{{"format", format}}).kind, kind) << format;

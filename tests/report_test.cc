@@ -269,7 +269,7 @@ TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
   const std::vector<std::string> formats = {
       ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kDatasetFormat3, ringid::kParameterSetFormat,
       ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
-      ringid::kUffMapFormat};
+      ringid::kUffMapFormat,   ringid::kUffMapFormat2};
   size_t lines = 0;
   for (size_t at = md.find("- `format`: "); at != std::string::npos;
        at = md.find("- `format`: ", at + 1)) {
