@@ -158,6 +158,19 @@ TEST(IdentifyTest, CovarianceAgreesWithAMonteCarloOfNoisyRefits) {
   EXPECT_LT(coverage, 0.99);
 }
 
+// The chi-square tail on the tens of thousands of degrees of freedom of an
+// FRF fit: 1 far below the mean (where Boost's incomplete gamma overflows),
+// and near the mean the normal approximation, mean k and variance 2k.
+TEST(StatisticsTest, TheChiSquareTailHoldsOnManyDegreesOfFreedom) {
+  const double k = 26000;
+  EXPECT_EQ(ChiSquareTail(1e-10, k), 1.0);
+  EXPECT_EQ(ChiSquareTail(1e-3 * k, k), 1.0);
+  for (double z : {-2.0, 0.0, 1.0, 2.0}) {
+    const double normal = 0.5 * std::erfc(z / std::sqrt(2.0));
+    EXPECT_NEAR(ChiSquareTail(k + z * std::sqrt(2 * k), k), normal, 0.01) << z;
+  }
+}
+
 // Over noisy replicates of a correct model, chi-square has the mean and the
 // variance of its degrees of freedom, and p < 0.01 in about 1 % of them.
 // With a hub the baseline lacks (s_h 2e-7 m/N), the fit says it is poor
