@@ -10,6 +10,8 @@ const ModeQuantity& DampingMeasurement();
 const ModeQuantity& ShapeMeasurement();
 const Measurement& StaticMeasurement();
 const MeasurementRecords& StaticRecords();
+const Measurement& FrfMeasurement();
+const MeasurementRecords& FrfRecords();
 
 const Mode* ModelAt::ModeOf(const Dataset& d, int i) const {
   if (!solution) return nullptr;
@@ -78,7 +80,7 @@ class OfModes final : public Measurement {
     unit_.Evaluate(d.modes[i], *mode, o, r, params, dr);
     return true;
   }
-  void AddMisfit(const Dataset& d, int i, int component, double r,
+  void AddMisfit(const Dataset& d, int i, int component, double r, const MeasurementOptions&,
                  MisfitTable* t) const override {
     if (t->modes.size() != d.modes.size()) {  // the table's mode entries, once
       t->modes.assign(d.modes.size(), ModeMisfit{});
@@ -131,7 +133,8 @@ const std::vector<const ModeQuantity*>& ModeQuantities() {
 const MeasurementRecords& ModeRecords() { return TheModeRecords(); }
 
 const std::vector<const MeasurementRecords*>& Records() {
-  static const std::vector<const MeasurementRecords*> all = {&TheModeRecords(), &StaticRecords()};
+  static const std::vector<const MeasurementRecords*> all = {&TheModeRecords(), &StaticRecords(),
+                                                              &FrfRecords()};
   return all;
 }
 
@@ -145,6 +148,7 @@ const std::vector<const Measurement*>& Measurements() {
     std::vector<const Measurement*> kinds;
     for (const OfModes& unit : of_modes) kinds.push_back(&unit);
     kinds.push_back(&StaticMeasurement());
+    kinds.push_back(&FrfMeasurement());
     return kinds;
   }();
   return all;

@@ -27,11 +27,11 @@
 
 namespace ringid {
 
-enum class Quantity { kFrequency, kDamping, kShape, kStatic };
+enum class Quantity { kFrequency, kDamping, kShape, kStatic, kFrf };
 template <>
 struct EnumNames<Quantity> {
-  static constexpr std::array<const char*, 4> kNames = {"frequency", "damping", "shape",
-                                                        "static"};
+  static constexpr std::array<const char*, 5> kNames = {"frequency", "damping", "shape",
+                                                        "static", "frf"};
 };
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -78,17 +78,23 @@ struct ModeMisfit {
   }
 };
 
-// The same for an item of another kind: its residual in sigma.
+// The same for an item of another kind: its residual in sigma, or for an
+// item of many values (a frequency response function) their chi-square, their
+// number and their rms as sigma.
 struct ItemMisfit {
   std::optional<std::string> condition;  // formats 2, 3: the condition's name
-  std::string name;                      // "static vertical stiffness"
-  double sigma = 0;                      // (model - measured) / sigma
+  std::string name;                      // "static vertical stiffness", "FRF a/b"
+  double sigma = 0;                      // (model - measured) / sigma; rms of many
+  std::optional<double> chi2;            // of many values: their sum of squares
+  std::optional<int> values;             // and their number
 
   template <class Archive>
   void Serialize(Archive* a) {
     a->VisitIfSet("condition", &condition);
     a->Visit("name", &name);
     a->Visit("sigma", &sigma);
+    a->VisitIfSet("chi2", &chi2);
+    a->VisitIfSet("values", &values);
   }
 };
 struct MisfitTable {
@@ -150,6 +156,12 @@ class Measurement {
   // and K together), which changes no mode but every stiffness: structural
   // identifiability (estimation/structure.h) then loses that freedom.
   virtual bool SeesScale() const { return false; }
+  // Why `model` cannot give the item at any parameter values (an FRF on a
+  // coordinate it lacks), in words naming it; nothing where it can.
+  virtual std::optional<std::string> Unfit(const ModalModel& model, const Dataset& d,
+                                           int item) const {
+    return std::nullopt;
+  }
   // (model - measured) / sigma into r[0, Rows). With `params`, dr(row, p) =
   // d r / d (catalogue parameter p) for each p listed. False where the model
   // has no counterpart (no paired mode, a singular static solve).
@@ -166,7 +178,7 @@ class Measurement {
   // Adds row `component` of item `item`, residual r, to the misfit table
   // (its entry made by the records' first kind).
   virtual void AddMisfit(const Dataset& d, int item, int component, double r,
-                         MisfitTable* t) const = 0;
+                         const MeasurementOptions& o, MisfitTable* t) const = 0;
   // What a report lists of an item beside the measured modes' table (which
   // the mode family fills, estimation/identify.h ModeFit): its measured
   // value, sigma and the model's at `at`. False for the mode family's

@@ -4,6 +4,7 @@
 #define RINGID_DATASETS_MEASUREMENT_OPTIONS_H_
 
 #include <array>
+#include <limits>
 
 #include "model/enum_names.h"
 
@@ -39,6 +40,10 @@ struct MeasurementOptions {
   double default_damping_sigma = 0.02;  // where damping_sigma is absent
   double default_shape_sigma = 0.05;    // where shape_sigma is absent
   ShapeConvention shape_convention = ShapeConvention::kContract;
+  // The lines of measured FRFs fitted: those within [low, high] Hz (all by
+  // default; docs/conventions.md §9 says why and when to narrow it).
+  double band_low_hz = 0;
+  double band_high_hz = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace ringid

@@ -64,7 +64,8 @@ class Static final : public Measurement {
     }
     return true;
   }
-  void AddMisfit(const Dataset& d, int i, int, double r, MisfitTable* t) const override {
+  void AddMisfit(const Dataset& d, int i, int, double r, const MeasurementOptions&,
+                 MisfitTable* t) const override {
     ItemMisfit w;
     if (d.NamesConditions()) w.condition = d.conditions[d.statics[i].condition].name;
     w.name = TheRecords().ItemName(d, i);

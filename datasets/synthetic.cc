@@ -1,6 +1,7 @@
 #include "datasets/synthetic.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <cstdio>
 #include <cmath>
@@ -13,7 +14,7 @@
 namespace ringid {
 
 double SimulateOptions::Noise(Quantity q) const {
-  const double noise[] = {frequency_noise, damping_noise, shape_noise, static_noise};
+  const double noise[] = {frequency_noise, damping_noise, shape_noise, static_noise, frf_noise};
   static_assert(sizeof noise / sizeof noise[0] == EnumNames<Quantity>::kNames.size());
   return noise[static_cast<int>(q)];
 }
@@ -25,7 +26,9 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
   d->modes.clear();
   d->statics.clear();
   const bool standing_statics = !o.statics.empty();
-  if (standing_statics) d->format = 3;  // what a dataset with statics reads back as
+  bool frfs = false;
+  for (const Condition& c : d->conditions) frfs |= c.frf.has_value();
+  if (standing_statics || frfs) d->format = 3;  // what such a dataset reads back as
   for (int c = 0; c < static_cast<int>(d->conditions.size()); ++c) {
   const Condition& condition = d->conditions[c];
   Parameters p = truth;
@@ -36,7 +39,7 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
     *error = "the truth model cannot be solved" + where + ": " + s.error;
     return false;
   }
-  for (int l = 0; l < 7; ++l) {
+  for (int l = 0; l < 7 && o.modes; ++l) {
     const Mode* m = s.Find(static_cast<ModeLabel>(l));
     if (!m) {
       *error = std::string("the truth has no oscillating ") +
@@ -79,7 +82,61 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
     }
   }
   }
+  // The FRFs each condition lays out (contract §9).
+  const Measurement& frf = MeasurementOf(Quantity::kFrf);
+  for (int i = 0; i < frf.records().Items(*d); ++i) {
+    const int c = frf.records().ConditionOf(*d, i);
+    Parameters p = truth;
+    for (const auto& [q, v] : d->conditions[c].known) p[q] = v;
+    const ModelAt at{&model, &p, nullptr, nullptr};
+    if (!frf.Measure(at, i, MeasurementOptions{}, d)) {
+      *error = "the truth's frequency response functions in condition " + d->conditions[c].name +
+               " cannot be computed";
+      return false;
+    }
+    frf.AddNoise(o.Noise(Quantity::kFrf), [&] { return n(*rng); }, i, d);
+  }
   return true;
+}
+
+Frf HammerTest(double r, double low_hz, double high_hz, double step_hz) {
+  struct Place {
+    const char* name;
+    FrfBody on;
+    std::array<double, 3> point, direction;
+  };
+  const Place blows[] = {{"top_radial", FrfBody::kBelt, {0, 0, -r}, {0, 0, 1}},
+                         {"top_tangential", FrfBody::kBelt, {0, 0, -r}, {1, 0, 0}},
+                         {"top_lateral", FrfBody::kBelt, {0, 0.08, -r}, {0, 1, 0}},
+                         {"front_oblique", FrfBody::kBelt, {r, 0.05, 0}, {-0.8, 0.5, 0.3}}};
+  const Place sensors[] = {{"top_z", FrfBody::kBelt, {0, 0, -r}, {0, 0, 1}},
+                           {"top_x", FrfBody::kBelt, {0, 0, -r}, {1, 0, 0}},
+                           {"front_x", FrfBody::kBelt, {r, 0, 0}, {1, 0, 0}},
+                           {"front_z", FrfBody::kBelt, {r, 0, 0}, {0, 0, 1}},
+                           {"top_y", FrfBody::kBelt, {0, 0.09, -r}, {0, 1, 0}},
+                           {"front_y", FrfBody::kBelt, {r, 0.09, 0}, {0, 1, 0}},
+                           {"rim_x", FrfBody::kRim, {0, 0, -0.2}, {1, 0, 0}}};
+  Frf frf;
+  for (const Place& b : blows) {
+    const FrfPoint point{b.on, b.point, b.direction};
+    frf.inputs.push_back({b.name, point, std::nullopt, PointCombination(point)});
+  }
+  for (const Place& s : sensors) {
+    const FrfPoint point{s.on, s.point, s.direction};
+    frf.outputs.push_back(
+        {s.name, point, std::nullopt, PointCombination(point), FrfQuantity::kAcceleration});
+  }
+  for (int k = 0; low_hz + k * step_hz <= high_hz * (1 + 1e-12); ++k) {
+    frf.frequencies_hz.push_back(low_hz + k * step_hz);
+  }
+  const size_t lines = frf.frequencies_hz.size();
+  for (int o = 0; o < static_cast<int>(frf.outputs.size()); ++o) {
+    for (int i = 0; i < static_cast<int>(frf.inputs.size()); ++i) {
+      frf.functions.push_back({o, i, std::vector<std::complex<double>>(lines), std::vector<double>(lines, 1.0),
+                               std::nullopt});
+    }
+  }
+  return frf;
 }
 
 Parameters ExampleCarTire() {

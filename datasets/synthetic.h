@@ -19,6 +19,8 @@ struct SimulateOptions {
   double damping_noise = 0.10;
   double shape_noise = 0.02;
   double static_noise = 0.02;  // static stiffness, relative sd
+  double frf_noise = 0.02;     // an FRF line, sd of re and of im relative to |H|
+  bool modes = true;           // the seven modes of each condition
   bool damping = true;
   bool shapes = true;
   // Shapes on all seven belt and rim degrees of freedom plus the hub's x_a,
@@ -32,13 +34,24 @@ struct SimulateOptions {
 
 // Measures the seven modes of docs/conventions.md §1 of `truth` under
 // `model` in each condition of `dataset` (at its speed, with its own known
-// values), and the static stiffnesses asked for in each standing one: fills
-// `dataset->modes` and `dataset->statics` (sigmas equal to the noise levels)
-// and leaves its other fields as they are. False with a reason when the truth
+// values), the static stiffnesses asked for in each standing one, and the
+// FRFs each condition's `frf` block lays out (its inputs, outputs, functions
+// and lines): fills `dataset->modes`, `dataset->statics` and each function's
+// values (sigmas equal to the noise levels) and leaves its other fields as
+// they are. False with a reason when the truth
 // model cannot be solved or one of those modes is overdamped.
 bool Simulate(const ModalModel& model, const Parameters& truth,
               const SimulateOptions& options, std::mt19937_64* rng,
               Dataset* dataset, std::string* error);
+
+// A standing hammer test's layout (contract §9): four blows on the tread
+// (radial and tangential at the top, lateral beside the top, oblique at the
+// front), six accelerometers on the tread and one tangential on the rim, all
+// 28 functions, lines from low_hz to high_hz every step_hz; the tread at
+// radius_m, the rim's sensor at 0.2 m. Values zero until Simulate measures
+// them.
+Frf HammerTest(double radius_m = 0.31, double low_hz = 5, double high_hz = 250,
+               double step_hz = 0.5);
 
 // A car tire with every parameter plausible (docs/plausibility.md): the
 // belt of the public MF-Swift 205/60R15 example and typical contact values.

@@ -389,7 +389,7 @@ void AddFunction(const UffFile& file, const UffMap& map, const Placed& p,
     ++b->default_sigma;
     fn.sigma.emplace();
     for (const auto& v : h) {
-      fn.sigma->push_back(kUffDefaultRelativeSigma * std::max(std::abs(v), kUffDefaultSigmaFloor * peak));
+      fn.sigma->push_back(FrfSigma(kDefaultFrfRelativeSigma, v, peak));
     }
     j.functions.push_back(std::move(fn));
     return;
@@ -410,7 +410,7 @@ void AddFunction(const UffFile& file, const UffMap& map, const Placed& p,
     ++b->clamped;
     fn.sigma.emplace();
     for (size_t i = 0; i < h.size(); ++i) {
-      const double floor = kUffDefaultRelativeSigma * kUffDefaultSigmaFloor * peak;
+      const double floor = FrfSigma(kDefaultFrfRelativeSigma, 0.0, peak);
       fn.sigma->push_back(std::max(CoherenceSigma(h[i], gamma2[i], *map.averages), floor));
     }
   }
@@ -520,8 +520,8 @@ void Add(const UffFile& file, const UffMap& map, UffImport* out) {
       char line[200];
       std::snprintf(line, sizeof line, "  sigma: %s without coherence: %g %% of |H| per line, at least "
                     "%g %% of the function's largest |H| (docs/uff.md)",
-                    Count(b.default_sigma, "FRF", "FRFs").c_str(), 100 * kUffDefaultRelativeSigma,
-                    100 * kUffDefaultRelativeSigma * kUffDefaultSigmaFloor);
+                    Count(b.default_sigma, "FRF", "FRFs").c_str(), 100 * kDefaultFrfRelativeSigma,
+                    100 * kDefaultFrfRelativeSigma * kFrfSigmaFloor);
       notes.push_back(line);
     }
     const size_t coherent = b.fields.functions.size() - b.default_sigma;

@@ -20,16 +20,9 @@
 
 namespace ringid {
 
-// Without a coherence function a line's sigma (contract §9) is
-// kUffDefaultRelativeSigma |H|, and at least that share of
-// kUffDefaultSigmaFloor times the function's largest |H|: 2 % is the random
-// error of an H1 estimate with coherence 0.99 and 10 averages (§9's formula:
-// sqrt(0.01 / (2 * 10 * 0.99)) = 0.022); the floor keeps an anti-resonance,
-// where the sensor's noise floor and not the structure sets the value, from
-// weighing a hundred times a resonance. The import says so; χ² is then no
+// Without a coherence function a line's sigma is FrfSigma at
+// kDefaultFrfRelativeSigma (datasets/frf.h). The import says so; χ² is then no
 // test of the data's noise.
-inline constexpr double kUffDefaultRelativeSigma = 0.02;
-inline constexpr double kUffDefaultSigmaFloor = 0.01;
 // A coherence outside (0, 1) (1 to the file's precision, 0 at a line with no
 // coherent power) is taken as the nearer of these, and the function's sigma
 // written out (the loader takes coherence only inside (0, 1)).

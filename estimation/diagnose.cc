@@ -28,11 +28,13 @@ namespace {
 // Per measured mode (and other measurement): its residuals in sigma, by
 // observable (Measurement::AddMisfit).
 MisfitTable Misfits(const std::vector<ModalResiduals::Slot>& slots,
-                    const std::vector<double>& res, const Dataset& dataset) {
+                    const std::vector<double>& res, const Dataset& dataset,
+                    const MeasurementOptions& o) {
   MisfitTable table;
   for (size_t k = 0; k < slots.size(); ++k) {
     if (slots[k].measurement) {
-      slots[k].measurement->AddMisfit(dataset, slots[k].item, slots[k].component, res[k], &table);
+      slots[k].measurement->AddMisfit(dataset, slots[k].item, slots[k].component, res[k], o,
+                                      &table);
     }
   }
   return table;
@@ -334,7 +336,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   std::vector<double> er;
   if (ResidualsAt(model, dataset, s.x, &es, &er, o.fit.residuals)) {
     f.mode_chi2 = ModeChi2(es, er, dataset.modes.size());
-    f.where = Misfits(es, er, dataset).modes;
+    f.where = Misfits(es, er, dataset, o.fit.residuals).modes;
   }
   if (f.supported && o.held_out) f.held_out_chi2 = HeldOut(model, WarmStart(warm, s), o);
   f.minimal_detectable =
@@ -509,7 +511,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     return;
   }
   const std::vector<double> before = ModeChi2(slots, res, dataset.modes.size());
-  MisfitTable table = Misfits(slots, res, dataset);
+  MisfitTable table = Misfits(slots, res, dataset, residuals.options());
   r->where = std::move(table.modes);
   if (!table.others.empty()) r->where_else = std::move(table.others);
 

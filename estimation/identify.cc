@@ -571,12 +571,6 @@ void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyRe
   }
   s->warnings = residuals.PairingWarnings(x0.data(), true);
   if (const std::string few = FewObservables(residuals); !few.empty()) s->warnings.push_back(few);
-  for (const Condition& c : dataset.conditions) {  // contract §9, read and kept
-    if (c.frf) {
-      s->warnings.push_back("the frequency response functions of condition " + c.name +
-                            " are read but not fitted: fitting FRFs directly is to come");
-    }
-  }
   const Box box = BoundsAround(setup, x0, o.bound_factor, o.bounds);
   std::vector<Eigen::VectorXd> ends;
   const LocalFit best = FitFromStarts(model, dataset, o, problem, x0, box, s, &ends);

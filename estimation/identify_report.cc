@@ -34,8 +34,10 @@ std::string IdentifyResult::FullReport() const {
   for (const ModeFit& m : modes) {
     if (m.condition) width = std::max<int>(width, m.condition->size() + 20);
   }
-  o << line << "\n  " << std::string("mode") + std::string(width - 4, ' ')
-    << " measured Hz   model Hz   zeta   MAC\n";
+  if (!modes.empty()) {  // FRFs or statics alone: no mode, no eq. (19)
+    o << line << "\n  " << std::string("mode") + std::string(width - 4, ' ')
+      << " measured Hz   model Hz   zeta   MAC\n";
+  }
   for (const ModeFit& m : modes) {
     char mac[16] = "-";
     if (m.mac) std::snprintf(mac, sizeof mac, "%.3f", *m.mac);

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "datasets/measurement.h"
 #include "estimation/fit.h"
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
@@ -78,11 +79,18 @@ std::unique_ptr<Problem> Problem::Create(const ModalModel& model, const Dataset&
     *status = Status::InvalidInput(why);
     return nullptr;
   }
+  for (const Measurement* unit : Measurements()) {
+    for (int i = 0; i < unit->records().Items(p->dataset_); ++i) {
+      if (auto why_not = unit->Unfit(*p->model_, p->dataset_, i)) {
+        *status = Status::InvalidInput(*why_not);
+        return nullptr;
+      }
+    }
+  }
   p->residuals_ = std::make_unique<ModalResiduals>(*p->model_, p->dataset_, *p->setup_, options);
-  if (p->residuals_->num_residuals() == 0) {  // FRFs alone (contract §9): read, not yet fitted
-    *status = Status::InvalidInput(
-        "the dataset holds nothing ringid fits yet: give it modes or static stiffnesses (its "
-        "frequency response functions are read but not fitted)");
+  if (p->residuals_->num_residuals() == 0) {  // an FRF band that holds no line
+    *status = Status::InvalidInput("the dataset holds no value to fit: its FRFs have no line "
+                                   "within the band");
     return nullptr;
   }
   *status = Status::Success();

@@ -39,8 +39,9 @@ class ModalModel {
     (void)near;
     return Solve(p, speed_m_s);
   }
-  // The system at `speed_m_s`, every value carrying its derivatives with
-  // respect to the parameters (model/structure.h).
+  // The system at `speed_m_s` (model/system.h); with ParameterJet values,
+  // every one carrying its derivatives with respect to the parameters.
+  virtual MechanicalSystem Assemble(const Parameters& p, double speed_m_s) const = 0;
   virtual BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
                                              double speed_m_s) const = 0;
   // The parameters Solve reads, in catalogue order.
@@ -53,7 +54,7 @@ class RigidRingModel final : public ModalModel {
 
   // Eqs. (12) and (15) as corrected in docs/model.md, then each effect, then
   // the terms of rolling at speed_m_s (docs/rolling.md).
-  MechanicalSystem Assemble(const Parameters& p, double speed_m_s = 0) const;
+  MechanicalSystem Assemble(const Parameters& p, double speed_m_s = 0) const override;
   BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
                                      double speed_m_s) const override;
   std::unique_ptr<ModalModel> Clone() const override {

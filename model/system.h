@@ -61,9 +61,8 @@ class BasicSystem {
   };
 
   // What the held axle carries (contract §8): per channel, its force as a
-  // combination of displacements and of velocities, row-major over Dof. Of
-  // values only: the jets of the derivatives do not keep it.
-  using AxleRows = Eigen::Matrix<double, kNumAxleChannels, kNumDofs, Eigen::RowMajor>;
+  // combination of displacements and of velocities, row-major over Dof.
+  using AxleRows = Eigen::Matrix<T, kNumAxleChannels, kNumDofs, Eigen::RowMajor>;
 
   // The seven belt and rim degrees of freedom active; the hub held rigid.
   BasicSystem() {
@@ -124,20 +123,16 @@ class BasicSystem {
   // on the deformation d, or a circulatory term) or c d' (a damper) in
   // `channel`, with the sign of the force or moment the element exerts on it.
   void AddToAxle(AxleChannel channel, const T& k, Deformation d) {
-    if constexpr (kLabelled) {
-      for (const auto& [dof, coef] : d) axle_displacement_(I(channel), I(dof)) += k * coef;
-    }
+    for (const auto& [dof, coef] : d) axle_displacement_(I(channel), I(dof)) += k * coef;
   }
   void AddToAxleDamping(AxleChannel channel, const T& c, Deformation d) {
-    if constexpr (kLabelled) {
-      for (const auto& [dof, coef] : d) axle_velocity_(I(channel), I(dof)) += c * coef;
-    }
+    for (const auto& [dof, coef] : d) axle_velocity_(I(channel), I(dof)) += c * coef;
   }
   // The axle holds the tire through a spring k on `dof` alone (a compliant
   // hub): that spring's force is the channel, whatever else joins the tire
   // to the hub.
   void HoldAxleBy(AxleChannel channel, const T& k, Dof dof) {
-    if constexpr (kLabelled) held_[I(channel)] = std::make_pair(k, dof);
+    held_[I(channel)] = std::make_pair(k, dof);
   }
   AxleRows axle_displacement() const {
     AxleRows rows = axle_displacement_;
@@ -170,8 +165,7 @@ class BasicSystem {
  private:
   static int I(Dof d) { return static_cast<int>(d); }
   static int I(AxleChannel c) { return static_cast<int>(c); }
-  // Labels are decided on values: the derivatives (jets) need no K_label, nor
-  // the axle's rows.
+  // Labels are decided on values: the derivatives (jets) need no K_label.
   static constexpr bool kLabelled = std::is_same_v<T, double>;
 
   Matrix M_, C_, K_;
@@ -181,7 +175,7 @@ class BasicSystem {
   std::vector<Contact> contacts_;
   double speed_ = 0;
   AxleRows axle_displacement_, axle_velocity_;
-  std::array<std::optional<std::pair<double, Dof>>, kNumAxleChannels> held_;
+  std::array<std::optional<std::pair<T, Dof>>, kNumAxleChannels> held_;
 };
 
 using MechanicalSystem = BasicSystem<double>;

@@ -22,6 +22,15 @@ bool FitOptionsOf(const FitSettings& s, int jobs, IdentifyOptions* o, std::strin
   o->residuals.use_damping = s.damping;
   o->residuals.shape_convention = s.shape_convention;
   o->residuals.derivatives = s.derivatives;
+  if (!s.band.values.empty()) {
+    const std::vector<double>& b = s.band.values;
+    if (b.size() != 2 || !(b[0] < b[1])) {
+      *error = "--band: LO,HI in Hz with LO < HI";
+      return false;
+    }
+    o->residuals.band_low_hz = b[0];
+    o->residuals.band_high_hz = b[1];
+  }
   o->bounds = s.bounds;
   if (s.threads < 0 || s.threads > IdentifyOptions::kMaxThreads) {
     *error = "--threads: must lie in [0, " + std::to_string(IdentifyOptions::kMaxThreads) +

@@ -82,6 +82,7 @@ struct FitSettings {
   bool damping = ResidualOptions().use_damping;
   ShapeConvention shape_convention = ResidualOptions().shape_convention;
   Derivatives derivatives = ResidualOptions().derivatives;
+  NumberList band{{}, false, "Hz"};
   std::vector<const Effect*> effects;
   Bounds bounds;
   std::vector<Param> fix;
@@ -110,6 +111,9 @@ struct FitSettings {
     a->Visit("derivatives", &derivatives,
              "Jacobians by central differences (numeric) or from eigenvalue and eigenvector "
              "derivatives (analytic)");
+    a->Visit("band", &band,
+             "LO,HI: fit the lines of measured FRFs from LO to HI Hz only (all by default; "
+             "docs/conventions.md §9: the rigid ring does not hold far above its modes)");
     option::Effects(a, &effects);
     a->Visit("bounds", &bounds,
              "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around "

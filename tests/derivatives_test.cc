@@ -337,6 +337,9 @@ class NoDerivatives final : public ModalModel {
     if (derivatives) s.derivatives_undefined = "two eigenvalues coincide (test)";
     return s;
   }
+  MechanicalSystem Assemble(const Parameters& p, double speed) const override {
+    return model_.Assemble(p, speed);
+  }
   BasicSystem<ParameterJet> Assemble(const ParameterArray<ParameterJet>& p,
                                      double speed) const override {
     return model_.Assemble(p, speed);

@@ -252,23 +252,6 @@ TEST(StaticMeasurementTest, AStaticStiffnessFixesTheScaleTheModesLeaveFree) {
   }
 }
 
-// FRFs alone are read but not yet fitted: identify says so as invalid input
-// (no residual row), never a Ceres check on an empty cost function.
-TEST(StaticMeasurementTest, ADatasetOfFrfsAloneIsRefusedUntilFrfsAreFitted) {
-  Dataset lab;
-  LoadError e;
-  ASSERT_TRUE(ParseDataset(Format3().dump(), "lab.json", &lab, &e)) << e.OneLine();
-  std::mt19937_64 rng(2);
-  Dataset d = StandingTest({}, &rng);  // every parameter given
-  d.format = 3;
-  d.modes.clear();
-  d.conditions[0].frf = lab.conditions[0].frf;
-  IdentifyResult r;
-  Identify(RigidRingModel(), d, IdentifyOptions{}, &r);
-  EXPECT_TRUE(r.status.invalid_input()) << r.status.message;
-  EXPECT_NE(r.status.message.find("read but not fitted"), std::string::npos) << r.status.message;
-}
-
 // Experiment advice weighs a static stiffness the test did not measure,
 // named as such, for a parameter it informs.
 TEST(StaticMeasurementTest, AdviceWeighsTheStaticStiffnessesNotMeasured) {

@@ -112,31 +112,12 @@ double InSeries(const RigidRingModel& model, const Parameters& p, D direction) {
   return 1 / (1 / e.k + d.dot(K.fullPivLu().solve(f)));
 }
 
-// Each effect's parameters at a size that moves what they touch: a fifth of
-// the element changed, a hub half as compliant as the sidewall, a coupling
-// of 30 % of the geometric mean of the two sidewalls it joins.
-Parameters Sized(const Effect& effect, Parameters p) {
-  for (Param q : effect.parameters()) {
-    switch (q) {
-      case P::m_a: p[q] = 15; break;
-      case P::dk_bz: p[q] = 0.2 * p[P::k_bz]; break;
-      case P::dk_bpsi: p[q] = 0.2 * p[P::k_bpsi]; break;
-      case P::s_h: p[q] = 0.5 / p[P::k_bz]; break;
-      case P::k_cpsi: p[q] = 0.2 * p[P::k_bpsi]; break;
-      case P::k_atheta: p[q] = p[P::k_btheta]; break;
-      case P::dm: p[q] = 1; break;
-      case P::k_xy: p[q] = 0.3 * std::sqrt(p[P::k_bx] * p[P::k_by]); break;
-      default: ADD_FAILURE() << "no size for " << ParamName(q) << " of " << effect.name();
-    }
-  }
-  return p;
-}
 
 TEST(StaticStiffnessTest, WithEachEffectIsTheContactInSeriesWithTheAssembledStructure) {
   for (const Parameters& base : {ExampleCarTire(), PaperIdentified()}) {
     for (const Effect* effect : EffectCatalogue()) {
       const RigidRingModel model({effect});
-      const Parameters p = Sized(*effect, base);
+      const Parameters p = testing::WithEffectSized(*effect, base);
       for (D d : kDirections) {
         EXPECT_LT(Relative(Solved(model, p, d), InSeries(model, p, d)), 1e-12)
             << effect->name() << ", " << ToString(d);
@@ -154,7 +135,7 @@ TEST(StaticStiffnessTest, EachEffectChangesTheSeriesAsItsElementsSay) {
   for (const Parameters& base : {ExampleCarTire(), PaperIdentified()}) {
     for (const Effect* effect : EffectCatalogue()) {
       const RigidRingModel model({effect});
-      const Parameters p = Sized(*effect, base);
+      const Parameters p = testing::WithEffectSized(*effect, base);
       const std::string name = effect->name();
       for (D d : kDirections) {
         const double value = Solved(model, p, d);
@@ -241,7 +222,7 @@ TEST(StaticStiffnessTest, DerivativesMatchRiddersForTheBaselineAndWithEffects) {
     for (const char* name : {"hub_compliance", "lug_coupling", "anisotropic_sidewall"}) {
       const Effect* effect = FindEffect(name);
       ASSERT_NE(effect, nullptr) << name;
-      ExpectRidders(RigidRingModel({effect}), Sized(*effect, p), name);
+      ExpectRidders(RigidRingModel({effect}), testing::WithEffectSized(*effect, p), name);
     }
   }
 }

@@ -58,6 +58,23 @@ Parameters Table2() {
   return p;
 }
 
+Parameters WithEffectSized(const Effect& effect, Parameters p) {
+  for (Param q : effect.parameters()) {
+    switch (q) {
+      case Param::m_a: p[q] = 15; break;
+      case Param::dk_bz: p[q] = 0.2 * p[Param::k_bz]; break;
+      case Param::dk_bpsi: p[q] = 0.2 * p[Param::k_bpsi]; break;
+      case Param::s_h: p[q] = 0.5 / p[Param::k_bz]; break;
+      case Param::k_cpsi: p[q] = 0.2 * p[Param::k_bpsi]; break;
+      case Param::k_atheta: p[q] = p[Param::k_btheta]; break;
+      case Param::dm: p[q] = 1; break;
+      case Param::k_xy: p[q] = 0.3 * std::sqrt(p[Param::k_bx] * p[Param::k_by]); break;
+      default: ADD_FAILURE() << "no size for " << ParamName(q) << " of " << effect.name();
+    }
+  }
+  return p;
+}
+
 Parameters PaperIdentified() {
   Parameters shipped;
   LoadError error;

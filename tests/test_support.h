@@ -10,6 +10,7 @@
 
 #include "datasets/dataset.h"
 #include "model/parameters.h"
+#include "model/effects.h"
 #include "model/rigid_ring_model.h"
 
 namespace ringid::testing {
@@ -32,6 +33,11 @@ class CorpusTest : public ::testing::Test {
 Parameters Table2();
 // Table 2 plus the inertias shipped in datasets/paper/parameters.json.
 Parameters PaperIdentified();
+
+// Each parameter of `effect` at a size that moves what it touches: a fifth
+// of the element changed, a hub half as compliant as the sidewall, a coupling
+// of 30 % of the geometric mean of the two sidewalls it joins.
+Parameters WithEffectSized(const Effect& effect, Parameters p);
 
 // datasets/synthetic.h's Simulate of all seven modes (shapes on the seven belt
 // and rim degrees of freedom), with relative frequency and damping noise.
