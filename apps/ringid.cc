@@ -132,7 +132,9 @@ int SimulateCommand(int, char**) {
   if (FLAGS_parameters.empty() || FLAGS_output.empty() || FLAGS_truth.empty()) {
     return Usage("simulate needs --parameters=FILE, --output=DATASET and --truth=FILE");
   }
-  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, Inputs(), &error)) {
+  auto inputs = Inputs();
+  inputs.emplace_back("frf", settings.frf);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, inputs, &error)) {
     return Usage(error);
   }
   Simulated s;
@@ -149,7 +151,10 @@ int SimulateCommand(int, char**) {
                             &error)) {
     return Usage(error);
   }
-  std::string modes = std::to_string(d.modes.size()) + " modes";
+  size_t frfs = 0;
+  for (const Condition& c : d.conditions) frfs += c.frf ? c.frf->functions.size() : 0;
+  std::string modes = frfs == 0 || !d.modes.empty() ? std::to_string(d.modes.size()) + " modes" : "";
+  if (frfs > 0) modes += (modes.empty() ? "" : ", ") + std::to_string(frfs) + " FRFs";
   if (!d.statics.empty()) modes += ", " + std::to_string(d.statics.size()) + " static stiffnesses";
   if (d.conditions.size() > 1) modes += " in " + std::to_string(d.conditions.size()) + " conditions";
   std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),

@@ -1,8 +1,12 @@
 #include "apps/schema_doc.h"
 
+#include <cstdio>
+
 #include "datasets/dataset_file.h"
+#include "datasets/frf_spec.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
+#include "datasets/synthetic.h"
 #include "datasets/uff_dataset.h"
 #include "report/report.h"
 #include "report/schema.h"
@@ -15,6 +19,12 @@ template <class R>
 std::string Section(const char* command) {
   return std::string("## ") + ToString(R::kKind) + "\n\nWritten by `" + command + "`.\n\n" +
          ReportSchema<R>() + "\n";
+}
+
+std::string Number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
 }
 
 }  // namespace
@@ -89,7 +99,15 @@ std::string InputsMarkdown() {
          "coordinates); `axes` are ringid's x, y, z as signed lab axes; `units` name the\nunits "
          "of every FRF's response and reference where the file's do not; `averages` go with\n"
          "the file's coherence functions. At least one of `points` and `channels`.\n\n" +
-         InputSchema(map2);
+         InputSchema(map2) + "\n" +
+         "## FRF spec (`" + kFrfSpecFormat + "`)\n\nRead by `simulate --frf` "
+         "([conventions.md](conventions.md) §9): an FRF test's layout, whose values the\nmodel "
+         "gives. `inputs` and `outputs` as in a dataset's `frf` block; the lines as `frequencies_hz` "
+         "or\nas `lines_hz` (`from`, `to`, `step` in Hz), one of the two; `functions` the (output, "
+         "input)\npairs measured (absent: every output with every input); `noise` the sd of re "
+         "and of im per\nline relative to |H| (absent: " + Number(SimulateOptions().frf_noise) + "; 0: none). Examples: "
+         "`datasets/examples/hammer_spec.json`,\n`datasets/examples/drum_spec.json`.\n\n" +
+         InputSchema(FrfSpecFields{});
 }
 
 }  // namespace ringid

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "datasets/dataset.h"
+#include "datasets/frf_spec.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
 #include "datasets/uff_dataset.h"
@@ -47,6 +48,7 @@ FileKind FormatKind(const std::string& format) {
       {kParameterSetFormat, FileKind::kParameterSet}, {kTruthFormat, FileKind::kTruth},
       {kResponseFormat, FileKind::kResponseDataset},  {kLugForcesFormat, FileKind::kLugForces},
       {kUffMapFormat, FileKind::kUffMap},           {kUffMapFormat2, FileKind::kUffMap},
+      {kFrfSpecFormat, FileKind::kFrfSpec},
   };
   for (const auto& [name, kind] : kFormats) {
     if (format == name) return kind;
@@ -88,6 +90,10 @@ void Words(const SniffedFile& found, std::string* what_out, std::string* belongs
       belongs = "use simulate --lug_forces";
       break;
     case FileKind::kUffMap: what = "a UFF map" + format; belongs = "use import --map"; break;
+    case FileKind::kFrfSpec:
+      what = "an FRF test's layout" + format;
+      belongs = "use simulate --frf";
+      break;
     case FileKind::kReport: what = "a ringid " + found.detail + " report"; break;
   }
 }

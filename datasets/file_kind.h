@@ -20,6 +20,7 @@ enum class FileKind {
   kResponseDataset,
   kLugForces,
   kUffMap,
+  kFrfSpec,
   kReport,  // any ringid report ("report": KIND)
 };
 

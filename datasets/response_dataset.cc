@@ -6,12 +6,15 @@
 #include <set>
 
 #include "datasets/file_kind.h"
+#include "datasets/typed_file.h"
 #include "model/campbell.h"
 #include "model/forced_response.h"
 #include "model/spelling.h"
 
 namespace ringid {
 namespace {
+
+using internal::ReadTyped;
 
 // The first rule `data` breaks, as error's field and message; true for none.
 class Checker {
@@ -126,31 +129,6 @@ bool CheckLugForces(const LugForcesFields& j, LugForceSpectrum* s, LoadError* er
     }
   }
   return true;
-}
-
-// Reads `text` as the typed file Fields of `format`, then `check` says what
-// the type cannot.
-template <class Fields, class Check>
-bool ReadTyped(const std::string& text, const std::string& path, const char* format,
-               LoadError* error, Check check) {
-  error->file = path;
-  Json j;
-  if (!ParseJsonInput(text, &j, error)) return false;
-  if (j.is_object() && j.contains("format") && j["format"] != format) {
-    const SniffedFile found = SniffJson(j);
-    error->field = "format";
-    error->message = found.kind == FileKind::kUnknown
-                         ? std::string("must be \"") + format + "\""
-                         : NotTheKind(found, KindName({FormatKind(format), format, ""}));
-    return false;
-  }
-  Fields fields;
-  std::string why;
-  if (!JsonReader::FromJson(j, "", &fields, &why)) {
-    SetArchiveError(why, error);
-    return false;
-  }
-  return check(fields);
 }
 
 }  // namespace

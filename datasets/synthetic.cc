@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "datasets/frf_spec.h"
 #include "datasets/measurement.h"
 
 namespace ringid {
@@ -126,9 +127,7 @@ Frf HammerTest(double r, double low_hz, double high_hz, double step_hz) {
     frf.outputs.push_back(
         {s.name, point, std::nullopt, PointCombination(point), FrfQuantity::kAcceleration});
   }
-  for (int k = 0; low_hz + k * step_hz <= high_hz * (1 + 1e-12); ++k) {
-    frf.frequencies_hz.push_back(low_hz + k * step_hz);
-  }
+  frf.frequencies_hz = EvenLines(low_hz, high_hz, step_hz);
   const size_t lines = frf.frequencies_hz.size();
   for (int o = 0; o < static_cast<int>(frf.outputs.size()); ++o) {
     for (int i = 0; i < static_cast<int>(frf.inputs.size()); ++i) {

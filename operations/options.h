@@ -175,6 +175,8 @@ struct SimulateSettings {
   double shape_noise = SimulateOptions().shape_noise;
   std::vector<StaticDirection> statics;
   double static_noise = SimulateOptions().static_noise;
+  std::string frf;
+  bool frf_modes = false;
   double prior_spread = 0.1;
   std::vector<Param> fix;
   int seed = FitSettings().seed;
@@ -197,6 +199,12 @@ struct SimulateSettings {
              "KIND,...: static stiffnesses (vertical, longitudinal, lateral) measured in each "
              "standing condition (contract §10); the dataset is then format 3");
     a->Visit("static_noise", &static_noise, "relative static-stiffness noise (sd)");
+    a->Visit("frf", &frf,
+             "an FRF test's layout (ringid-frf-spec/1: inputs, outputs, lines, functions, "
+             "noise; docs/inputs.md): each condition's FRFs as the model gives them, in place of "
+             "its modes; the dataset is then format 3");
+    a->Visit("frf_modes", &frf_modes,
+             "simulate --frf: write each condition's seven modes beside its FRFs");
     a->Visit("prior_spread", &prior_spread,
              "log-normal spread of the dataset's initial values around the truth");
     option::Fix(a, &fix);

@@ -6,10 +6,69 @@
 #include <filesystem>
 #include <random>
 
+#include "datasets/frf_spec.h"
 #include "datasets/synthetic.h"
+#include "model/frequency_response.h"
 #include "operations/model_parameters.h"
 
 namespace ringid {
+namespace {
+
+// The field of `spec` (its inputs' or outputs' `coordinates`) naming a
+// coordinate `model` lacks, with why; empty where none does.
+LoadError LackedCoordinate(const ModalModel& model, const Frf& frf, const std::string& spec) {
+  const auto Lacked = [&](const DofCombination& c, const std::optional<FrfPoint>& point,
+                          const std::string& field) -> LoadError {
+    const bool on_rim = point && point->on == FrfBody::kRim;
+    const auto dof = MissingCoordinate(model, Coordinates(c.begin(), c.end()), on_rim);
+    if (!dof) return {};
+    return {spec, field, std::string("names ") + DofName(*dof) +
+                             ", which the model lacks (hub_compliance gives the hub x_a, z_a, "
+                             "y_a)"};
+  };
+  for (size_t i = 0; i < frf.inputs.size(); ++i) {
+    LoadError e = Lacked(frf.inputs[i].coordinates, frf.inputs[i].point,
+                         "inputs[" + std::to_string(i) + "].coordinates");
+    if (!e.message.empty()) return e;
+  }
+  for (size_t i = 0; i < frf.outputs.size(); ++i) {
+    LoadError e = Lacked(frf.outputs[i].coordinates, frf.outputs[i].point,
+                         "outputs[" + std::to_string(i) + "].coordinates");
+    if (!e.message.empty()) return e;
+  }
+  return {};
+}
+
+// Each condition of `d` given the FRFs the spec at `path` lays out, where
+// contract §9 takes them at its speed and the model has their coordinates;
+// the spec's noise, if it gives one, in `noise`.
+bool PlanFrfs(const std::string& path, const ModalModel& model, Dataset* d, double* noise,
+              InputError* error) {
+  FrfSpec spec;
+  LoadError load;
+  if (!LoadFrfSpec(path, &spec, &load)) {
+    *error = InputError::Of(load);
+    return false;
+  }
+  for (Condition& c : d->conditions) {
+    Frf frf;
+    if (!FrfOfSpec(spec, c.speed_m_s, &frf, &load)) {
+      load.message += " (condition " + c.name + ")";
+      *error = InputError::Of(load);
+      return false;
+    }
+    if (load = LackedCoordinate(model, frf, path); !load.message.empty()) {
+      *error = InputError::Of(load);
+      return false;
+    }
+    c.frf = std::move(frf);
+  }
+  *noise = spec.noise.value_or(*noise);
+  d->description += "; the FRFs laid out by " + path;
+  return true;
+}
+
+}  // namespace
 
 bool SimulateDataset(const std::string& parameters, const std::string& output,
                      const SimulateSettings& s, Simulated* out, InputError* error, bool* failed) {
@@ -23,6 +82,9 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
     if (!(v >= 0) || !std::isfinite(v)) {
       return Fail("noise levels and --prior_spread must be finite and not negative");
     }
+  }
+  if (s.frf_modes && s.frf.empty()) {
+    return Fail("--frf_modes: only with --frf (without it simulate writes the modes alone)");
   }
   Parameters truth;
   LoadError load;
@@ -70,9 +132,16 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
   so.shape_noise = s.shape_noise;
   so.static_noise = s.static_noise;
   so.statics = s.statics;
+  so.modes = s.frf.empty() || s.frf_modes;  // an FRF test's dataset holds its FRFs
+  if (!s.frf.empty() && !PlanFrfs(s.frf, model, &d, &so.frf_noise, error)) return false;
   if (!Simulate(model, truth, so, &rng, &d, &line)) {
     *failed = true;
     return Fail(line);
+  }
+  if (const size_t bytes = s.frf.empty() ? 0 : DatasetToJson(d).size(); bytes > kMaxFileBytes) {
+    return Fail("--frf: the dataset would take " + std::to_string(bytes) + " bytes, more than " +
+                "the " + std::to_string(kMaxFileBytes) + " a dataset may: fewer lines, "
+                "functions or conditions");
   }
   out->truth = MakeTruth(model, truth, d, output);
   out->effects = s.effects;

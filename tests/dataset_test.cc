@@ -639,6 +639,7 @@ TEST(FileKindTest, EachKindIsToldByItsFormatItsNameOrItsOpening) {
       {"ringid-lug-forces/1", FileKind::kLugForces},
       {"ringid-uff-map/1", FileKind::kUffMap},
       {"ringid-uff-map/2", FileKind::kUffMap},
+      {"ringid-frf-spec/1", FileKind::kFrfSpec},
       {"ringid-modal-dataset/9", FileKind::kUnknown}};
   for (const auto& [format, kind] : formats) {
     EXPECT_EQ(SniffJson(json{{"format", format}}).kind, kind) << format;

@@ -14,6 +14,7 @@
 #include "apps/reports.h"
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
+#include "datasets/frf_spec.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
 #include "datasets/uff_dataset.h"
@@ -269,7 +270,7 @@ TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
   const std::vector<std::string> formats = {
       ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kDatasetFormat3, ringid::kParameterSetFormat,
       ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
-      ringid::kUffMapFormat,   ringid::kUffMapFormat2};
+      ringid::kUffMapFormat,   ringid::kUffMapFormat2, ringid::kFrfSpecFormat};
   size_t lines = 0;
   for (size_t at = md.find("- `format`: "); at != std::string::npos;
        at = md.find("- `format`: ", at + 1)) {
