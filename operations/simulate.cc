@@ -139,9 +139,9 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
     return Fail(line);
   }
   if (const size_t bytes = s.frf.empty() ? 0 : DatasetToJson(d).size(); bytes > kMaxFileBytes) {
-    return Fail("--frf: the dataset would take " + std::to_string(bytes) + " bytes, more than " +
-                "the " + std::to_string(kMaxFileBytes) + " a dataset may: fewer lines, "
-                "functions or conditions");
+    return Fail("--frf: " + s.frf + " lays out a dataset of " + std::to_string(bytes) +
+                " bytes, more than the " + std::to_string(kMaxFileBytes) +
+                " a dataset may have: fewer lines, functions or conditions");
   }
   out->truth = MakeTruth(model, truth, d, output);
   out->effects = s.effects;
