@@ -23,6 +23,7 @@ PARAMETERS = os.path.join(SOURCE, "datasets", "paper", "parameters.json")
 ROLLING = os.path.join(SOURCE, "datasets", "examples", "car_tire_rolling.json")
 CAR_TIRE = os.path.join(SOURCE, "datasets", "examples", "car_tire.json")
 LUG_RESPONSE = os.path.join(SOURCE, "datasets", "examples", "car_tire_lug_response.json")
+HAMMER_SPEC = os.path.join(SOURCE, "datasets", "examples", "hammer_spec.json")
 TIR = os.path.join(SOURCE, "datasets", "examples", "tno_205_60R15_belt.tir")
 TIMINGS = {"seconds", "seconds_per_fit", "fit_seconds", "median_seconds"}
 
@@ -336,6 +337,37 @@ class WhatTheModuleLacked(ReportTestCase):
             fitted = ringid.identify(r.dataset).to_dict()["measurements"]
             self.assertEqual([m["name"] for m in fitted],
                              ["static vertical stiffness", "static lateral stiffness"])
+
+    def test_simulate_with_an_frf_spec_equals_the_command_line_and_identify_fits_it(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            with open(HAMMER_SPEC) as f:
+                spec = json.load(f)
+            spec["lines_hz"] = {"from": 10, "to": 150, "step": 10}  # few lines: quick
+            spec_path = os.path.join(scratch, "spec.json")
+            with open(spec_path, "w") as f:
+                json.dump(spec, f)
+            output, truth = os.path.join(scratch, "sim.json"), os.path.join(scratch, "truth.json")
+            done = subprocess.run(
+                [BINARY, "simulate", "--parameters=" + CAR_TIRE, "--output=" + output,
+                 "--truth=" + truth, "--seed=4", "--frf=" + spec_path],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(output) as f:
+                cli = json.load(f)
+            r = ringid.simulate(CAR_TIRE, output=output, truth=truth, seed=4, frf=spec_path)
+            self.assertEqual(r.to_dict()["dataset"], cli)
+            self.assertEqual(cli["format"], "ringid-dataset/3")
+            frf = cli["conditions"][0]["frf"]
+            self.assertNotIn("modes", cli["conditions"][0])
+            self.assertEqual(len(frf["functions"]), 28)
+            self.assertEqual(frf["frequencies_hz"], list(range(10, 151, 10)))
+            fitted = ringid.identify(r.dataset, starts=1, derivatives="analytic").to_dict()
+            self.assertLess(fitted["fit"]["p_value"], 1.0)
+            self.assertGreater(fitted["fit"]["p_value"], 0.001)
+            # A spec refused at speed: ringid.Error naming the spec's field.
+            with self.assertRaises(ringid.Error) as refused:
+                ringid.simulate(CAR_TIRE, output=output, truth=truth, frf=spec_path, speeds=[0, 10])
+            self.assertIn(spec_path + ": inputs[0].on: ", str(refused.exception))
 
     def test_simulate_with_lug_forces_equals_the_command_line_and_forces_recover_them(self):
         with tempfile.TemporaryDirectory() as scratch:
