@@ -358,7 +358,8 @@ const std::vector<Command>& Commands() {
       {"simulate", "--parameters=FILE --output=DATASET --truth=FILE",
        "a dataset measured from a parameter set, optionally with effects (each\n"
        "sized by --set or --shift), and a separate truth file; one condition per\n"
-       "speed and load, and several give a format-2 dataset. With --lug_forces=FILE,\n"
+       "speed and load, and several give a format-2 dataset. With --frf=SPEC, each\n"
+       "condition's FRFs as the spec lays them out (format 3). With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
        SimulateFlags(), SimulateCommand, "lug_forces"},
       {"diagnose", "--dataset=FILE",
