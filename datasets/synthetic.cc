@@ -189,6 +189,15 @@ void SetEngineerPriors(const Parameters& truth, double prior_spread,
   }
 }
 
+void FreeMasses(const Parameters& truth, double prior_spread, std::mt19937_64* rng,
+                Dataset* d) {
+  std::normal_distribution<double> normal(0, 1);
+  for (Param q : {Param::m_b, Param::I_ay, Param::I_by, Param::I_bx, Param::I_bz}) {
+    d->known.erase(q);
+    d->initial[q] = truth[q] * std::exp(prior_spread * normal(*rng));
+  }
+}
+
 double LargestShift(const Parameters& truth, const Effect& effect, Param p, double value) {
   const ModalSolution base = RigidRingModel().Solve(truth);
   Parameters q = truth;

@@ -64,6 +64,12 @@ Parameters ExampleCarTire();
 void SetEngineerPriors(const Parameters& truth, double prior_spread,
                        std::mt19937_64* rng, Dataset* dataset);
 
+// FRFs are per newton, so they weigh the masses: the test engineer need not.
+// The belt's mass and the four inertias move from `known` to `initial`,
+// log-normally spread around the truth as SetEngineerPriors spreads the rest.
+void FreeMasses(const Parameters& truth, double prior_spread, std::mt19937_64* rng,
+                Dataset* dataset);
+
 // The largest relative frequency shift over the seven modes of
 // docs/conventions.md §1 when `p` of `effect` is set to `value` (infinity
 // when a mode is lost).

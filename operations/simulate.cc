@@ -115,6 +115,7 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
   }
   std::mt19937_64 rng(static_cast<unsigned>(s.seed));
   Dataset d = PlanSimulation(truth, s.prior_spread, s.speeds.values, s.loads.values, &rng);
+  if (!s.frf.empty()) FreeMasses(truth, s.prior_spread, &rng, &d);  // FRFs weigh them
   for (Param q : s.fix) {  // written known, at the truth
     if (Info(q).group == Group::kEffect ||
         std::find(d.per_condition.begin(), d.per_condition.end(), q) != d.per_condition.end()) {

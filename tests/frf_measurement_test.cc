@@ -34,11 +34,7 @@ Dataset Hammer(double noise, double spread, double step_hz, std::mt19937_64* rng
   const Parameters truth = ExampleCarTire();
   Dataset d = PlanSimulation(truth, spread, {0}, {}, rng);
   d.name = "hammer";
-  std::normal_distribution<double> normal(0, 1);
-  for (P q : kMasses) {
-    d.known.erase(q);
-    d.initial[q] = truth[q] * std::exp(spread * normal(*rng));
-  }
+  FreeMasses(truth, spread, rng, &d);
   d.conditions[0].frf = HammerTest(0.31, low_hz, high_hz, step_hz);
   SimulateOptions so;
   so.modes = false;

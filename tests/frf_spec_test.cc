@@ -353,6 +353,10 @@ TEST(FrfSpecTest, SimulateWritesTheModelsFrfsAtTheTruthInEachCondition) {
     Dataset d;
     ASSERT_TRUE(LoadDataset(out, &d, &e)) << e.OneLine();
     EXPECT_TRUE(d.modes.empty());
+    for (Param q : {Param::m_b, Param::I_ay, Param::I_by, Param::I_bx, Param::I_bz}) {
+      EXPECT_FALSE(d.known.count(q)) << ParamName(q) << ": the FRFs weigh it";
+      EXPECT_TRUE(d.initial.count(q)) << ParamName(q);
+    }
     ASSERT_EQ(d.conditions.size(), run.at.size());
     for (size_t c = 0; c < run.at.size(); ++c) {
       ASSERT_TRUE(d.conditions[c].frf) << c;
