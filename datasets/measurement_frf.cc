@@ -7,6 +7,7 @@
 #include <string>
 
 #include "datasets/measurement.h"
+#include "datasets/measurement_frf.h"
 #include "model/frequency_response.h"
 
 namespace ringid {
@@ -228,6 +229,30 @@ class FrfKind final : public Measurement {
 };
 
 }  // namespace
+
+bool CompareFrfs(const Dataset& d, int c, const ModelAt& at, const MeasurementOptions& o,
+                 std::vector<FrfLines>* functions) {
+  const Frf& frf = *d.conditions[c].frf;
+  const ResponseResult model = FrequencyResponse(*at.model, *at.parameters,
+                                                 d.conditions[c].speed_m_s, RequestOf(frf, &o));
+  if (!model.ok) return false;
+  functions->clear();
+  for (int f = 0; f < static_cast<int>(frf.functions.size()); ++f) {
+    const FrfFunction& fn = frf.functions[f];
+    FrfLines lines;
+    lines.function = f;
+    int l = 0;  // the line within the band
+    for (size_t line = 0; line < frf.frequencies_hz.size(); ++line) {
+      if (!InBand(frf.frequencies_hz[line], o)) continue;
+      lines.frequency_hz.push_back(frf.frequencies_hz[line]);
+      lines.measured.push_back(fn.h[line]);
+      lines.model.push_back(model.H(l++, f));
+      lines.sigma.push_back(fn.sigma[line]);
+    }
+    functions->push_back(std::move(lines));
+  }
+  return true;
+}
 
 const Measurement& FrfMeasurement() {
   static const FrfKind unit;

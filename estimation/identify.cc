@@ -607,6 +607,9 @@ void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyRe
   }
 
   ModeFits(dataset, residuals, o, best.x, s);
+  std::vector<FrfFit> frfs = FrfFits(
+      model, dataset, [&](int c) { return setup.Decode(best.x.data(), c); }, residuals.options());
+  if (!frfs.empty()) s->frfs = std::move(frfs);
   s->speed_curves = SpeedCurves(model, dataset, s->parameters);
   s->seconds = Seconds(t0);
 }

@@ -10,6 +10,7 @@
 
 #include "datasets/dataset.h"
 #include "datasets/measurement.h"
+#include "estimation/frf_fits.h"
 #include "estimation/options.h"
 #include "estimation/status.h"
 #include "estimation/types.h"
@@ -290,6 +291,9 @@ struct IdentifyResult {
   std::vector<ModeFit> modes;
   // Format 3: the other measurements (static stiffnesses); unset where none.
   std::optional<std::vector<MeasurementFit>> measurements;
+  // Measured FRFs: each function against the fitted model (FrfFits); unset
+  // where the dataset has none.
+  std::optional<std::vector<FrfFit>> frfs;
   // Format 2 with a condition at speed: every mode of the fitted model (the
   // first condition's values) from standstill to 1.25 times the highest
   // speed; empty otherwise.
@@ -335,6 +339,7 @@ struct IdentifyResult {
     });
     a->Visit("modes", &modes);
     a->VisitIfSet("measurements", &measurements);
+    a->VisitIfSet("frfs", &frfs);
     a->Visit("speed_curves", &speed_curves);
   }
 };

@@ -1,5 +1,6 @@
 // The text of an identify result (IdentifyResult::BriefReport, FullReport).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -7,6 +8,35 @@
 #include "estimation/identify.h"
 
 namespace ringid {
+
+namespace {
+
+// One row per measured function (estimation/frf_fits.h): lines, chi2, values, FRAC.
+std::string FrfRows(const std::vector<FrfFit>& frfs) {
+  std::ostringstream o;
+  size_t name_width = 28;
+  for (const FrfFit& f : frfs) {
+    name_width = std::max(name_width, (f.condition ? f.condition->size() + 1 : 0) +
+                                          f.output.size() + 1 + f.input.size());
+  }
+  char row[512];  // names may be long
+  std::snprintf(row, sizeof row, "\n  %-*s %6s %10s %7s %11s %8s\n",
+                static_cast<int>(name_width), "FRF output/input", "lines", "chi2", "values",
+                "chi2/values", "FRAC");
+  o << row;
+  for (const FrfFit& f : frfs) {
+    const std::string name = (f.condition ? *f.condition + " " : "") + f.output + "/" + f.input;
+    char frac[16] = "-";  // not defined against a zero function
+    if (std::isfinite(f.frac)) std::snprintf(frac, sizeof frac, "%.4f", f.frac);
+    std::snprintf(row, sizeof row, "  %-*s %6d %10.4g %7d %11.3f %8s\n",
+                  static_cast<int>(name_width), name.c_str(), f.lines(), f.chi2,
+                  f.values(), f.chi2 / f.values(), frac);
+    o << row;
+  }
+  return o.str();
+}
+
+}  // namespace
 
 std::string IdentifyResult::BriefReport() const {
   std::ostringstream o;
@@ -104,6 +134,7 @@ std::string IdentifyResult::FullReport() const {
   }
   for (const PlausibilityFlag& f : plausibility) o << "\n  implausible (" << f.rule << "): " << f.reason;
   if (!plausibility.empty()) o << "\n";
+  if (frfs) o << FrfRows(*frfs);
   if (uncertainty.ok) {
     o << "\n  Jacobian rank " << uncertainty.rank << " of "
       << uncertainty.jacobian.cols() << " free coordinates ("

@@ -160,6 +160,15 @@ Made IdentifyShapes() {
                                      Simulate("shapes", "--static=vertical,lateral"));
 }
 
+// The shipped hammer test (28 FRFs) identified from its initial values, one
+// start; made once per process.
+Made IdentifyFrf() {
+  static const Made made =
+      Make("identify_frf", "identify --starts=1 --derivatives=analytic --dataset=" +
+                               Source("datasets/examples/car_tire_hammer_frf.json"));
+  return made;
+}
+
 Made Identifiability() {
   return Make("identifiability",
               "identifiability --starts=1 --derivatives=analytic --dataset=" + Simulate("profiled"));
@@ -457,6 +466,37 @@ std::string FigureSvg(const std::string& html, const std::string& id) {
   const size_t begin = html.find("<svg", at), end = html.find("</svg>", at);
   return begin == std::string::npos || end == std::string::npos ? ""
                                                                  : html.substr(begin, end - begin);
+}
+
+// Measured FRFs: each function's row with its FRAC and chi-square, and its
+// figure of magnitude, phase and residuals with that chi-square and FRAC in
+// the caption; no other figure (no modes).
+TEST(HtmlReportTest, IdentifyOfFrfsTablesAndDrawsEachFunction) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = IdentifyFrf();
+  const json& frfs = m.report["frfs"];
+  ASSERT_EQ(frfs.size(), 28u);
+  ExpectWellFormed(m.html, 29);  // and the parameters' intervals
+  EXPECT_NE(m.html.find("<h2>Frequency response functions</h2>"), std::string::npos);
+  EXPECT_NE(m.html.find("<th>FRAC</th>"), std::string::npos);
+  for (size_t k = 0; k < frfs.size(); ++k) {
+    const json& f = frfs[k];
+    if (f["frac"].is_number()) {  // null where the model's function is zero
+      char frac[32];
+      std::snprintf(frac, sizeof frac, "%.4f", f["frac"].get<double>());
+      EXPECT_NE(m.html.find(std::string("<td class=\"n\">") + frac + "</td>"), std::string::npos)
+          << frac;
+    }
+    const std::string svg = FigureSvg(m.html, "identify-frf-" + std::to_string(k + 1));
+    ASSERT_FALSE(svg.empty()) << k;
+    EXPECT_NE(svg.find("|H| (per N)"), std::string::npos);
+    EXPECT_NE(svg.find("phase (°)"), std::string::npos);
+    EXPECT_NE(svg.find("(fitted − measured) / σ"), std::string::npos);
+    const std::string name =
+        f["condition"].get<std::string>() + " " + f["output"].get<std::string>() + "/" +
+        f["input"].get<std::string>();
+    EXPECT_NE(m.html.find("FRF " + name + " (χ² "), std::string::npos) << name;
+  }
 }
 
 TEST(HtmlReportTest, IdentifyAtSpeedDrawsACampbellFigure) {
@@ -1102,7 +1142,8 @@ TEST_P(ChromiumTest, PageRendersWithEveryFigureWhole) {
 
 INSTANTIATE_TEST_SUITE_P(
     EveryKind, ChromiumTest,
-    ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identifiability", Identifiability},
+    ::testing::Values(Kind{"identify", IdentifyShapes}, Kind{"identify_frf", IdentifyFrf},
+                      Kind{"identifiability", Identifiability},
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
                       Kind{"forces", Forces}, Kind{"predict_speeds", PredictAtSpeeds},

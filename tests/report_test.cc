@@ -253,6 +253,23 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
   EXPECT_FALSE(Documented(reports[0].schema, "modes[].frequency"));
 }
 
+// Measured FRFs: each function's chi2, FRAC and curves (`frfs`, schema 9)
+// round trip, and every path they write is documented.
+TEST(ReportTest, IdentifyOfFrfsRoundTripsByteForByteAndIsDocumented) {
+  const std::string path =
+      Made("identify --starts=1 --derivatives=analytic --band=10,150 --dataset=" +
+               Source("datasets/examples/car_tire_hammer_frf.json"),
+           "identify-frf.json");
+  ExpectRoundTrip<ringid::IdentifyReport>(path);
+  const Json j = Json::parse(ReadFile(path));
+  ASSERT_EQ(j["frfs"].size(), 28u);
+  EXPECT_EQ(j["frfs"][0]["lines"], 71);  // 10, 12, ..., 150 Hz
+  std::vector<std::string> paths;
+  Paths(j, "", &paths);
+  const std::string schema = ringid::ReportSchema<ringid::IdentifyReport>();
+  for (const std::string& p : paths) EXPECT_TRUE(Documented(schema, p)) << p;
+}
+
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
   EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";

@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "apps/html/frf_section.h"
 #include "apps/html/pages.h"
 #include "apps/html/text.h"
 #include "estimation/statistics.h"
@@ -518,6 +519,7 @@ void IdentifyPage(const IdentifyReport& report, Page* page) {
   if (!summary.plausibility.empty()) PlausibilitySection(summary.plausibility, page);
   const FrequencyFigureOptions frequencies = ModesSection(summary.modes, page);
   MeasurementsSection(summary.measurements, page);
+  FrfTable(summary.frfs, page);
   const Intervals intervals = ParametersSection(summary, page);
   if (summary.plausibility.empty() && !summary.estimates.empty()) {
     page->Note("Plausibility: every value within its plausible range (docs/plausibility.md).");
@@ -530,6 +532,7 @@ void IdentifyPage(const IdentifyReport& report, Page* page) {
     page->AddFigure(std::move(*f));
   }
   CampbellFigure(summary, page);
+  FrfFigures(summary.frfs, page);
   MacFigure(summary.modes, page);
   IntervalFigure(intervals, page);
 }
