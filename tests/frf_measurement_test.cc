@@ -127,7 +127,11 @@ TEST(FrfMeasurementTest, WithNoiseTheFitIsAsGoodAsTheNoiseAndTheTruthWithinItsEr
 }
 
 // On the drum: the FRFs from the contact forces to the held axle's channels
-// are what `forces` predicts of lug forces at each line (contract §8).
+// are what `forces` predicts of lug forces at each line (contract §8). Both
+// go through FrequencyResponse, so this checks the kind's wiring (names,
+// pairs, channels, speed), not the response: the time integration of
+// forced_response_test.cc and the hand-written M, C, K of
+// frequency_response_test.cc check that.
 TEST(FrfMeasurementTest, ADrumsContactToAxleFrfsAreTheLugForceForwardModel) {
   const Parameters truth = ExampleCarTire();
   Dataset d;
