@@ -242,7 +242,17 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<
       if (members.size() > best.size()) best = std::move(members);
     }
     if (static_cast<int>(best.size()) < o.min_stable_orders) break;
-    const Candidate& top = stable[best.back()];  // ascending order
+    const Candidate top = stable[best.back()];  // ascending order
+    for (int c : best) stable[c].pole = nullptr;
+    // A lightly damped mode's damping wanders across orders by more than
+    // the window: its remainder, at the same frequency with the same
+    // participation, is not another mode.
+    if (std::any_of(modes.begin(), modes.end(), [&](const ExtractedMode& m) {
+          return std::abs(m.frequency_hz - top.pole->frequency_hz) <= o.stable_frequency * m.frequency_hz &&
+                 Mac(m.participation, top.pole->participation) >= o.stable_mac;
+        })) {
+      continue;
+    }
     ExtractedMode mode;
     mode.eigenvalue = top.pole->eigenvalue;
     mode.frequency_hz = top.pole->frequency_hz;
@@ -251,7 +261,6 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<
     mode.order = diagram[top.order].order;
     mode.stable_orders = static_cast<int>(best.size());
     modes.push_back(std::move(mode));
-    for (int c : best) stable[c].pole = nullptr;
   }
   std::sort(modes.begin(), modes.end(), [](const ExtractedMode& a, const ExtractedMode& b) {
     return a.frequency_hz < b.frequency_hz;
@@ -309,8 +318,8 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
   }
   if (static_cast<int>(r->lines.size()) <= o.max_order) {
     r->status = Status::InvalidInput(std::to_string(r->lines.size()) +
-                                     " lines in the band: order " + std::to_string(o.max_order) +
-                                     " needs more than " + std::to_string(o.max_order));
+                                     " lines in the band: max_order " + std::to_string(o.max_order) +
+                                     " needs at least " + std::to_string(o.max_order + 1));
     return;
   }
   const OutputRows rows = CompleteOutputs(frf, r->lines, o.weigh_by_sigma, &r->outputs);
