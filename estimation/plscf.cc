@@ -183,7 +183,7 @@ void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* orde
   for (PlscfPole& p : order->poles) {
     const PlscfPole* near = nullptr;
     for (const PlscfPole& q : below.poles) {
-      if (!near || std::abs(q.eigenvalue - p.eigenvalue) < std::abs(near->eigenvalue - p.eigenvalue)) {
+      if (!near || std::norm(q.eigenvalue - p.eigenvalue) < std::norm(near->eigenvalue - p.eigenvalue)) {
         near = &q;
       }
     }
@@ -225,8 +225,8 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<
       const Candidate& q = stable[c];
       if (!q.pole || !in_window(centre, *q.pole)) continue;
       int& best = nearest[q.order];
-      if (best < 0 || std::abs(q.pole->eigenvalue - centre.eigenvalue) <
-                          std::abs(stable[best].pole->eigenvalue - centre.eigenvalue)) {
+      if (best < 0 || std::norm(q.pole->eigenvalue - centre.eigenvalue) <
+                          std::norm(stable[best].pole->eigenvalue - centre.eigenvalue)) {
         best = c;
       }
     }

@@ -84,8 +84,9 @@ struct ExtractedMode {
   int stable_orders = 0;   // the number of orders in its cluster
   Eigen::VectorXcd participation;  // inputs, as PlscfPole's
   // LSFD's residues, outputs x inputs (NaN where the Frf has no function),
-  // and the outputs' shape psi: the least-squares fit of psi x
-  // participation^T to them.
+  // of H as measured (an accelerance's are λ² times the receptance's), and
+  // the outputs' shape psi: the least-squares fit of psi x participation^T
+  // to them, over the functions given.
   Eigen::MatrixXcd residues;
   Eigen::VectorXcd shape;
 };
