@@ -19,7 +19,7 @@ void Basis(Complex s, int order, const std::vector<Complex>& poles, Eigen::Vecto
   phi->resize(2 * m + 2);
   for (int r = 0; r < m; ++r) {
     const Complex a = 1.0 / (s - poles[r]), b = 1.0 / (s - std::conj(poles[r]));
-    (*phi)(2 * r) = a + b;                     // Re R_r
+    (*phi)(2 * r) = a + b;                        // Re R_r
     (*phi)(2 * r + 1) = Complex(0, 1) * (a - b);  // Im R_r
   }
   const Complex sq = std::pow(s, order);

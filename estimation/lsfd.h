@@ -20,8 +20,8 @@ namespace ringid {
 // an accelerance, lower also holds the direct term that its modes' sum
 // leaves out.
 struct LsfdFunction {
-  int output = 0, input = 0;  // as the Frf's function
-  int order = 0;              // q above
+  int output = 0, input = 0;                   // as the Frf's function
+  int order = 0;                               // q above
   std::vector<std::complex<double>> residues;  // R_r, one per pole
   double lower = 0, upper = 0;                 // real: H(-ω) = conj(H(ω))
 
@@ -35,8 +35,7 @@ struct LsfdFunction {
 // each value's real and imaginary part weighted by 1 / sigma where
 // `weigh_by_sigma` and the function has one sigma per line, else equally.
 std::vector<LsfdFunction> Lsfd(const Frf& frf, const std::vector<int>& lines,
-                               const std::vector<std::complex<double>>& poles,
-                               bool weigh_by_sigma);
+                               const std::vector<std::complex<double>>& poles, bool weigh_by_sigma);
 
 }  // namespace ringid
 

@@ -74,11 +74,12 @@ bool BuildNormal(const OutputRows& rows, const Eigen::VectorXd& theta, int n, No
   for (int o = 0; o < no; ++o) {
     const Eigen::VectorXd w2 = rows.weight[o].array().square();
     q.col(o * per) = w2.cast<Complex>();
-    for (int i = 0; i < ni; ++i) q.col(o * per + 1 + i) = -(w2.cast<Complex>().cwiseProduct(rows.h[o].col(i)));
+    for (int i = 0; i < ni; ++i)
+      q.col(o * per + 1 + i) = -(w2.cast<Complex>().cwiseProduct(rows.h[o].col(i)));
     for (int i = 0; i < ni; ++i) {
       for (int k = 0; k < ni; ++k) {
-        q.col(t_col + i * ni + k) +=
-            w2.cast<Complex>().cwiseProduct(rows.h[o].col(i).conjugate().cwiseProduct(rows.h[o].col(k)));
+        q.col(t_col + i * ni + k) += w2.cast<Complex>().cwiseProduct(
+            rows.h[o].col(i).conjugate().cwiseProduct(rows.h[o].col(k)));
       }
     }
   }
@@ -98,7 +99,8 @@ bool BuildNormal(const OutputRows& rows, const Eigen::VectorXd& theta, int n, No
   for (int j = 0; j <= n; ++j) {
     for (int l = 0; l <= n; ++l) {
       for (int i = 0; i < ni; ++i) {
-        for (int k = 0; k < ni; ++k) normal->t(j * ni + i, l * ni + k) = seq(t_col + i * ni + k, l - j);
+        for (int k = 0; k < ni; ++k)
+          normal->t(j * ni + i, l * ni + k) = seq(t_col + i * ni + k, l - j);
       }
     }
   }
@@ -183,7 +185,8 @@ void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* orde
   for (PlscfPole& p : order->poles) {
     const PlscfPole* near = nullptr;
     for (const PlscfPole& q : below.poles) {
-      if (!near || std::norm(q.eigenvalue - p.eigenvalue) < std::norm(near->eigenvalue - p.eigenvalue)) {
+      if (!near ||
+          std::norm(q.eigenvalue - p.eigenvalue) < std::norm(near->eigenvalue - p.eigenvalue)) {
         near = &q;
       }
     }
@@ -200,8 +203,9 @@ void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* orde
 // [low_hz, high_hz]) whose window (the stability tolerances around it) holds
 // stable poles of the most orders; its cluster is the nearest of each order
 // in the window, and its pole that of the highest order.
-std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<PlscfOrder>& diagram,
-                                       double low_hz, double high_hz) {
+std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
+                                       const std::vector<PlscfOrder>& diagram, double low_hz,
+                                       double high_hz) {
   struct Candidate {
     int order;  // index into diagram
     const PlscfPole* pole;
@@ -209,14 +213,17 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<
   std::vector<Candidate> stable;
   for (int k = 0; k < static_cast<int>(diagram.size()); ++k) {
     for (const PlscfPole& p : diagram[k].poles) {
-      if (p.stable() && p.damping_ratio > 0 && p.frequency_hz >= low_hz && p.frequency_hz <= high_hz) {
+      if (p.stable() && p.damping_ratio > 0 && p.frequency_hz >= low_hz &&
+          p.frequency_hz <= high_hz) {
         stable.push_back({k, &p});
       }
     }
   }
   auto in_window = [&](const PlscfPole& centre, const PlscfPole& p) {
-    return std::abs(p.frequency_hz - centre.frequency_hz) <= o.stable_frequency * centre.frequency_hz &&
-           std::abs(p.damping_ratio - centre.damping_ratio) <= o.stable_damping * centre.damping_ratio;
+    return std::abs(p.frequency_hz - centre.frequency_hz) <=
+               o.stable_frequency * centre.frequency_hz &&
+           std::abs(p.damping_ratio - centre.damping_ratio) <=
+               o.stable_damping * centre.damping_ratio;
   };
   // The nearest pole of each order within the window of `centre`.
   auto cluster = [&](const PlscfPole& centre) {
@@ -248,7 +255,8 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o, const std::vector<
     // the window: its remainder, at the same frequency with the same
     // participation, is not another mode.
     if (std::any_of(modes.begin(), modes.end(), [&](const ExtractedMode& m) {
-          return std::abs(m.frequency_hz - top.pole->frequency_hz) <= o.stable_frequency * m.frequency_hz &&
+          return std::abs(m.frequency_hz - top.pole->frequency_hz) <=
+                     o.stable_frequency * m.frequency_hz &&
                  Mac(m.participation, top.pole->participation) >= o.stable_mac;
         })) {
       continue;
@@ -317,9 +325,9 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
     if (hz > 0 && hz >= o.band_low_hz && hz <= o.band_high_hz) r->lines.push_back(l);
   }
   if (static_cast<int>(r->lines.size()) <= o.max_order) {
-    r->status = Status::InvalidInput(std::to_string(r->lines.size()) +
-                                     " lines in the band: max_order " + std::to_string(o.max_order) +
-                                     " needs at least " + std::to_string(o.max_order + 1));
+    r->status = Status::InvalidInput(
+        std::to_string(r->lines.size()) + " lines in the band: max_order " +
+        std::to_string(o.max_order) + " needs at least " + std::to_string(o.max_order + 1));
     return;
   }
   const OutputRows rows = CompleteOutputs(frf, r->lines, o.weigh_by_sigma, &r->outputs);

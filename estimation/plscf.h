@@ -80,8 +80,8 @@ struct ExtractedMode {
   std::complex<double> eigenvalue;  // λ of the cluster's highest order
   double frequency_hz = 0;          // damped, as PlscfPole's
   double damping_ratio = 0;
-  int order = 0;           // the order λ was taken at
-  int stable_orders = 0;   // the number of orders in its cluster
+  int order = 0;                   // the order λ was taken at
+  int stable_orders = 0;           // the number of orders in its cluster
   Eigen::VectorXcd participation;  // inputs, as PlscfPole's
   // LSFD's residues, outputs x inputs (NaN where the Frf has no function),
   // of H as measured (an accelerance's are λ² times the receptance's), and
@@ -93,9 +93,9 @@ struct ExtractedMode {
 
 struct PlscfResult {
   Status status;
-  std::vector<int> outputs;  // those in the pLSCF fit: measured at every input
-  std::vector<int> lines;    // the lines used (indices into frf.frequencies_hz)
-  double dt = 0;             // Δt of the basis (s)
+  std::vector<int> outputs;          // those in the pLSCF fit: measured at every input
+  std::vector<int> lines;            // the lines used (indices into frf.frequencies_hz)
+  double dt = 0;                     // Δt of the basis (s)
   std::vector<PlscfOrder> diagram;   // min_order..max_order
   std::vector<ExtractedMode> modes;  // ascending frequency
   // Per function of the Frf (its order): LSFD at the modes' eigenvalues.

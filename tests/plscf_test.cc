@@ -98,7 +98,8 @@ struct ThreeDof {
       poles->push_back(lambda(r));
       int e = 0;  // the standard form's same eigenvalue
       for (int q = 1; q < 6; ++q) {
-        if (std::abs(es.eigenvalues()(q) - lambda(r)) < std::abs(es.eigenvalues()(e) - lambda(r))) e = q;
+        if (std::abs(es.eigenvalues()(q) - lambda(r)) < std::abs(es.eigenvalues()(e) - lambda(r)))
+          e = q;
       }
       residues->push_back(v.col(e).head(3) * (w.row(e).tail(3) * minv));
     }
@@ -159,10 +160,12 @@ Frf CarTireHammer(double low_hz = 5, double high_hz = 250, double step_hz = 0.5)
   Frf frf = HammerTest(0.31, low_hz, high_hz, step_hz);
   ResponseRequest request;
   for (const FrfInput& in : frf.inputs) {
-    request.inputs.push_back({std::nullopt, Coordinates(in.coordinates.begin(), in.coordinates.end())});
+    request.inputs.push_back(
+        {std::nullopt, Coordinates(in.coordinates.begin(), in.coordinates.end())});
   }
   for (const FrfOutput& out : frf.outputs) {
-    request.outputs.push_back({std::nullopt, Coordinates(out.coordinates.begin(), out.coordinates.end()),
+    request.outputs.push_back({std::nullopt,
+                               Coordinates(out.coordinates.begin(), out.coordinates.end()),
                                static_cast<int>(out.quantity), out.point->on == FrfBody::kRim});
   }
   for (const FrfFunction& f : frf.functions) request.pairs.push_back({f.output, f.input});
@@ -215,7 +218,8 @@ TEST(PlscfTest, ANoiseFreeHammerTestGivesTheModelsPolesAtAnyHighEnoughOrder) {
       }
     }
     expected *= mode.eigenvalue * mode.eigenvalue;
-    const double mac = std::norm(expected.dot(m.shape)) / (expected.squaredNorm() * m.shape.squaredNorm());
+    const double mac =
+        std::norm(expected.dot(m.shape)) / (expected.squaredNorm() * m.shape.squaredNorm());
     EXPECT_GT(mac, 1 - 1e-9) << LabelName(mode.label);
   }
   // LSFD's modal model (the lower residual holding the accelerances' direct
@@ -353,7 +357,8 @@ TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
     const ExtractedMode& m = *Nearest(r, poles[p]);
     EXPECT_LT(std::abs(m.eigenvalue - poles[p]), 1e-6 * std::abs(poles[p]));
     EXPECT_TRUE(std::isnan(m.residues(1, 1).real()));
-    EXPECT_LT(std::abs(m.residues(1, 0) - residues[p](1, 0)), 1e-5 * residues[p].cwiseAbs().maxCoeff());
+    EXPECT_LT(std::abs(m.residues(1, 0) - residues[p](1, 0)),
+              1e-5 * residues[p].cwiseAbs().maxCoeff());
   }
   frf.functions.erase(frf.functions.begin() + 4);  // output 2, input 1
   frf.functions.erase(frf.functions.begin() + 1);  // output 0, input 1
