@@ -1,0 +1,42 @@
+// Least-squares frequency-domain (LSFD) residues (issue 37): with the poles
+// held, each measured frequency response function's residues and its lower
+// and upper residual terms by linear least squares.
+#ifndef RINGID_ESTIMATION_LSFD_H_
+#define RINGID_ESTIMATION_LSFD_H_
+
+#include <complex>
+#include <vector>
+
+#include "datasets/frf.h"
+
+namespace ringid {
+
+// One function's modal model (contract §8's phasor convention, s = iω):
+//   H(ω) = sum_r [R_r / (s - λ_r) + conj(R_r) / (s - conj(λ_r))]
+//          + s^q (lower / s² + upper),
+// q the output's order of differentiation (0 displacement or an axle
+// channel, 1 velocity, 2 acceleration): the lower residual is the modes
+// below the band (mass-like), the upper those above (stiffness-like); for
+// an accelerance, lower also holds the direct term that its modes' sum
+// leaves out.
+struct LsfdFunction {
+  int output = 0, input = 0;                   // as the Frf's function
+  int order = 0;                               // q above
+  std::vector<std::complex<double>> residues;  // R_r, one per pole
+  double lower = 0, upper = 0;                 // real: H(-ω) = conj(H(ω))
+
+  // The model's H at `hz`, at the poles the residues were fitted with.
+  std::complex<double> At(double hz, const std::vector<std::complex<double>>& poles) const;
+};
+
+// The residues of each function of `frf` (in its order) at `poles` (each
+// with Im > 0; its conjugate is implied), fitted over the lines `lines`
+// (indices into frf.frequencies_hz; at least as many as 2 poles + 1) with
+// each value's real and imaginary part weighted by 1 / sigma where
+// `weigh_by_sigma` and the function has one sigma per line, else equally.
+std::vector<LsfdFunction> Lsfd(const Frf& frf, const std::vector<int>& lines,
+                               const std::vector<std::complex<double>>& poles, bool weigh_by_sigma);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_LSFD_H_
