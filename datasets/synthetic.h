@@ -53,6 +53,12 @@ bool Simulate(const ModalModel& model, const Parameters& truth,
 Frf HammerTest(double radius_m = 0.31, double low_hz = 5, double high_hz = 250,
                double step_hz = 0.5);
 
+// A drum test's layout (contract §8, §9): the measured contact forces F_x,
+// F_z, F_y as inputs, the held axle's five channels as outputs, in-plane
+// channels per in-plane force and out-of-plane per lateral force (7
+// functions); datasets/examples/drum_spec.json with its default lines.
+Frf DrumTest(double low_hz = 4, double high_hz = 160, double step_hz = 2);
+
 // A car tire with every parameter plausible (docs/plausibility.md): the
 // belt of the public MF-Swift 205/60R15 example and typical contact values.
 Parameters ExampleCarTire();

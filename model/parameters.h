@@ -118,6 +118,13 @@ inline bool IsDamping(Param p) {
   return e && e->damper == p;
 }
 
+// The belt's mass and the belt's and rim's inertias: what a force-calibrated
+// FRF weighs and modes cannot (they carry no scale).
+inline bool IsMassOrInertia(Param p) {
+  return p == Param::m_b || p == Param::I_ay || p == Param::I_by || p == Param::I_bx ||
+         p == Param::I_bz;
+}
+
 // The positive stiffnesses of springs and contact slips (k_b*, k_cz, K_c*):
 // a mode's squared frequency grows with the stiffness of its element.
 inline bool IsStiffness(Param p) {

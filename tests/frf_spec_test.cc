@@ -91,6 +91,16 @@ TEST(FrfSpecTest, TheShippedHammerSpecIsHammerTestsLayout) {
   EXPECT_EQ(Read(kHammerSpec).noise, 0.02);
 }
 
+TEST(FrfSpecTest, TheShippedDrumSpecIsDrumTestsLayout) {
+  Frf frf;
+  LoadError e;
+  ASSERT_TRUE(FrfOfSpec(Read(kDrumSpec), 1, &frf, &e)) << e.OneLine();
+  ExpectSameLayout(frf, DrumTest(4, 160, 2));
+  // By hand: F_x and F_z to axle x and z, F_y to axle y, m_x, m_z; 4 to 160 Hz by 2.
+  EXPECT_EQ(frf.functions.size(), 7u);
+  ASSERT_EQ(frf.frequencies_hz.size(), 79u);
+}
+
 // The spec's fields written back read as the same layout, and the lines
 // given as a list are the range's.
 TEST(FrfSpecTest, ASpecWrittenBackAndItsLinesListedReadAsTheSameLayout) {

@@ -13,13 +13,7 @@
 #include "validation/suites.h"
 
 namespace ringid {
-namespace {
 
-constexpr double kTireSpread = 0.25;
-
-// The car tire with every free stiffness, damper and contact value scattered
-// log-normally (kTireSpread), the belt's inertias by a tenth of that; the
-// paper's ties held.
 Parameters ScatteredTire(std::mt19937_64* rng) {
   std::normal_distribution<double> normal(0, 1);
   Parameters p = ExampleCarTire();
@@ -28,8 +22,7 @@ Parameters ScatteredTire(std::mt19937_64* rng) {
     if (!p.IsSet(q) || Info(q).group == Group::kEffect || Info(q).domain != Domain::kPositive) {
       continue;
     }
-    const bool inertia = q == Param::m_b || q == Param::I_ay || q == Param::I_by ||
-                         q == Param::I_bx || q == Param::I_bz;
+    const bool inertia = IsMassOrInertia(q);
     p[q] *= std::exp((inertia ? 0.1 : 1.0) * kTireSpread * normal(*rng));
   }
   p[Param::I_bz] = p[Param::I_bx];  // a ring
@@ -40,9 +33,6 @@ Parameters ScatteredTire(std::mt19937_64* rng) {
   p[Param::c_bpsi] = p[Param::c_bgamma];
   return p;
 }
-
-
-}  // namespace
 
 Status RunStaticSuite(const SuiteOptions& o, StaticSuite* suite) {
   if (o.replicates < 1) return Status::InvalidInput("replicates: must be at least 1");
