@@ -1,5 +1,6 @@
 #include "estimation/identify.h"
 
+#include "estimation/frf_start.h"
 #include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "estimation/starts.h"
@@ -368,6 +369,9 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   };
   const std::vector<internal::Start> plan =
       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
+  // Measured FRFs: each start first goes through the modal stage, so that
+  // the model's peaks lie on the measured ones (estimation/frf_start.h).
+  const auto found = internal::ModesInFrfs(dataset);
   const int n = static_cast<int>(plan.size());
   // On several threads each start has its own copy of the problem, made here
   // one after another; on one, the problem itself, whose kept solutions the
@@ -386,8 +390,12 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   s->evaluations = residuals.evaluations();
   std::vector<LocalFit> fits(n);
   internal::ParallelFor(n, copies.empty() ? 1 : o.threads, [&](int k) {
-    fits[k] = FitLocally(copies.empty() ? residuals : copies[k]->residuals(), o.method,
-                         plan[k].x, box, o.max_iterations, o.simplex, -1, o.stop_chi_square);
+    Eigen::VectorXd from = plan[k].x;
+    if (const auto modal = internal::FrfModalStart(model, dataset, problem.setup(), found, from)) {
+      from = modal->cwiseMax(box.lower).cwiseMin(box.upper);
+    }
+    fits[k] = FitLocally(copies.empty() ? residuals : copies[k]->residuals(), o.method, from,
+                         box, o.max_iterations, o.simplex, -1, o.stop_chi_square);
   });
   LocalFit best;
   for (size_t k = 0; k < plan.size(); ++k) {
