@@ -50,7 +50,9 @@ std::string ReportsMarkdown() {
          Section<BenchDiagnosisReport>("ringid bench --suite=diagnosis --output=FILE") +
          Section<BenchRollingReport>("ringid bench --suite=rolling --output=FILE") +
          Section<BenchSpeedReport>("ringid bench --suite=speed --output=FILE") +
-         Section<BenchForcesReport>("ringid bench --suite=forces --output=FILE");
+         Section<BenchForcesReport>("ringid bench --suite=forces --output=FILE") +
+         Section<BenchStaticReport>("ringid bench --suite=static --output=FILE") +
+         Section<BenchFrfReport>("ringid bench --suite=frf --output=FILE");
 }
 
 std::string InputsMarkdown() {

@@ -292,6 +292,32 @@ Made BenchDiagnosis() {
   return Render(path);
 }
 
+// The frf suite takes an hour; a report of its kind, one tire per variant,
+// written as the suite writes it.
+Made BenchFrf() {
+  ringid::FrfSuite suite;
+  suite.start_factor = 3;
+  suite.starts = 6;
+  suite.frf_noise = 0.02;
+  for (const char* name : {"standing", "standing_drum"}) {
+    ringid::FrfVariant v;
+    v.name = name;
+    v.tires = v.best_found = v.masses_within = 1;
+    v.intervals = 20;
+    v.coverage_95 = 0.95;
+    v.seconds_per_fit = 2.5;
+    ringid::StaticParameter k;
+    k.param = ringid::Param::k_bx;
+    k.yes = k.intervals = 1;
+    k.coverage_95 = 1;
+    v.parameters.push_back(k);
+    suite.variants.push_back(v);
+  }
+  const std::string path = Scratch("bench_frf.json");
+  std::ofstream(path) << ringid::ReportText(ringid::BenchFrfReport{{}, suite});
+  return Render(path);
+}
+
 // The speed suite, timed briefly in process (the command times each case for
 // about half a second) and written as the suite writes it; made once.
 Made BenchSpeed() {
@@ -1154,7 +1180,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_rolling", [] { return Bench("rolling"); }},
                       Kind{"bench_speed", BenchSpeed},
                       Kind{"bench_forces", [] { return Bench("forces"); }},
-                      Kind{"bench_static", [] { return Bench("static"); }}),
+                      Kind{"bench_static", [] { return Bench("static"); }},
+                      Kind{"bench_frf", BenchFrf}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for

@@ -365,6 +365,9 @@ const std::vector<SuiteEntry>& Suites() {
       {"static", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchStaticReport>(RunStaticSuite, o, p);
        }},
+      {"frf", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchFrfReport>(RunFrfSuite, o, p);
+       }},
   };
   return suites;
 }

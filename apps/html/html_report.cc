@@ -53,6 +53,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchSpeed, Typed<BenchSpeedReport, html::BenchSpeedPage>},
     {ReportKind::kBenchForces, Typed<BenchForcesReport, html::BenchForcesPage>},
     {ReportKind::kBenchStatic, Typed<BenchStaticReport, html::BenchStaticPage>},
+    {ReportKind::kBenchFrf, Typed<BenchFrfReport, html::BenchFrfPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

@@ -24,6 +24,7 @@ void BenchRollingPage(const BenchRollingReport& report, Page* page);
 void BenchSpeedPage(const BenchSpeedReport& report, Page* page);
 void BenchForcesPage(const BenchForcesReport& report, Page* page);
 void BenchStaticPage(const BenchStaticReport& report, Page* page);
+void BenchFrfPage(const BenchFrfReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);
