@@ -150,7 +150,9 @@ Parts<T> Outputs(const std::vector<ResponseOutput>& outputs, const BasicSystem<T
   return G;
 }
 
-// A dynamic stiffness this close to singular is an undamped resonance.
+// A dynamic stiffness this close to singular is an undamped resonance: its
+// reciprocal condition number (Respond: Eigen's estimate), or a pivot of its
+// LU against its 1-norm (Lines), below this.
 constexpr double kSingularRcond = 1e-14;
 
 template <class T, class P>
@@ -215,6 +217,293 @@ ResponseResult Respond(const BasicSystem<T>& s, const P& p, const ResponseReques
   return r;
 }
 
+// H alone (no derivatives: a fit's residuals, its numeric Jacobians). D is
+// block diagonal over the coordinates its entries couple (standing without
+// effects {x_b, theta_a, theta_b}, {z_b}, {y_b, gamma_b, psi_b}); each line
+// factors the blocks apart on the stack and solves for the inputs that act
+// on each. The entries off the blocks are exact zeros, so H is Respond's to
+// roundoff.
+class Lines {
+ public:
+  Lines(const MechanicalSystem& s, const Parameters& p, const ResponseRequest& request)
+      : on_(s), speed_(s.speed()) {
+    const int k = on_.size();
+    bool coupled[kNumDofs][kNumDofs];
+    for (int a = 0; a < k; ++a) {
+      for (int b = 0; b < k; ++b) {
+        const int i = on_.dofs[a], j = on_.dofs[b];
+        coupled[a][b] = s.M()(i, j) != 0 || s.C()(i, j) != 0 || s.K()(i, j) != 0;
+      }
+    }
+    std::vector<LagRows> lags = speed_ > 0 ? LagsOf(s) : std::vector<LagRows>{};
+    for (const LagRows& L : lags) {
+      for (int a = 0; a < k; ++a) {
+        for (int b = 0; b < k; ++b) coupled[a][b] |= L.fd[a][b] != 0 || L.fe[a][b] != 0;
+      }
+    }
+    const Mat<double> B = Inputs<double>(request.inputs, p, on_);
+    for (const std::vector<int>& members : Connected(coupled, k)) {
+      blocks_.push_back(BlockOf(s, lags, B, members));
+    }
+    X_.assign(static_cast<size_t>(k) * B.cols(), Complex(0));
+    // Each function's terms: the output's nonzero coefficients against the
+    // input's column of X.
+    const auto G_d = s.axle_displacement();
+    const auto G_v = s.axle_velocity();
+    for (const auto& [o, i] : request.pairs) {
+      const ResponseOutput& out = request.outputs[o];
+      Function f{static_cast<int>(terms_.size()), 0, out.channel.has_value(), out.order};
+      for (int a = 0; a < k; ++a) {
+        const int d = on_.dofs[a];
+        double c = 0, v = 0;
+        if (out.channel) {
+          c = G_d(static_cast<int>(*out.channel), d);
+          v = G_v(static_cast<int>(*out.channel), d);
+        } else {
+          for (const auto& [dof, coef] : out.coordinates) c += static_cast<int>(dof) == d ? coef : 0;
+        }
+        if (c != 0 || v != 0) terms_.push_back({a + k * i, c, v});
+      }
+      f.end = static_cast<int>(terms_.size());
+      functions_.push_back(f);
+    }
+  }
+
+  // Row l of r->H at w; false where D is singular there.
+  bool At(double w, int l, ResponseResult* r) {
+    for (const Block& block : blocks_) {
+      if (!Solve(block, w)) return false;
+    }
+    const Complex* X = X_.data();
+    for (int f = 0; f < static_cast<int>(functions_.size()); ++f) {
+      const Function& fn = functions_[f];
+      Complex h = 0;
+      if (fn.channel) {
+        for (int t = fn.begin; t < fn.end; ++t) {
+          h += Mul(Complex(terms_[t].displacement, w * terms_[t].velocity), X[terms_[t].x]);
+        }
+      } else {
+        for (int t = fn.begin; t < fn.end; ++t) h += terms_[t].displacement * X[terms_[t].x];
+        for (int n = 0; n < fn.order; ++n) h = Complex(-w * h.imag(), w * h.real());  // (i w)^order
+      }
+      r->H(l, f) = h;
+    }
+    return true;
+  }
+
+ private:
+  struct Term {
+    int x;  // into X_: the active row + k * the input
+    double displacement, velocity;
+  };
+  struct Function {
+    int begin, end;  // its terms
+    bool channel;
+    int order;
+  };
+  // Each lag's f d^T and f e^T over the active rows, whose coefficients at a
+  // line Stiffness gives.
+  struct LagRows {
+    double K, sigma;
+    double fd[kNumDofs][kNumDofs], fe[kNumDofs][kNumDofs];
+  };
+  // One block of D: its rows, M, C, K on them (row-major m x m), the lags'
+  // terms, and the inputs that act on it with their generalised forces.
+  struct Block {
+    std::vector<int> rows;
+    std::vector<double> M, C, K;
+    std::vector<LagRows> lags;  // fd, fe over the block's m x m
+    std::vector<std::pair<int, std::vector<double>>> inputs;
+  };
+
+  static Complex Mul(const Complex& a, const Complex& b) {
+    return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+  }
+  // An entry's size for pivots and norms: |re| + |im| (LAPACK's cabs1).
+  static double Size(const Complex& z) { return std::abs(z.real()) + std::abs(z.imag()); }
+
+  std::vector<LagRows> LagsOf(const MechanicalSystem& s) const {
+    std::vector<LagRows> out;
+    for (const auto& lag : s.lags()) {
+      LagRows L{lag.stiffness, lag.relaxation_length, {}, {}};
+      for (const auto& [row_dof, f] : lag.force) {
+        const int a = on_[row_dof];
+        if (a < 0) continue;
+        for (const auto& [col_dof, d] : lag.velocity) {
+          if (on_[col_dof] >= 0) L.fd[a][on_[col_dof]] += f * d;
+        }
+        for (const auto& [col_dof, e] : lag.heading) {
+          if (on_[col_dof] >= 0) L.fe[a][on_[col_dof]] += f * e;
+        }
+      }
+      out.push_back(L);
+    }
+    return out;
+  }
+
+  // The connected sets of rows that D's entries couple.
+  static std::vector<std::vector<int>> Connected(const bool (*coupled)[kNumDofs], int k) {
+    std::vector<std::vector<int>> sets;
+    std::array<bool, kNumDofs> placed{};
+    for (int start = 0; start < k; ++start) {
+      if (placed[start]) continue;
+      std::vector<int> members = {start};
+      placed[start] = true;
+      for (size_t n = 0; n < members.size(); ++n) {
+        for (int b = 0; b < k; ++b) {
+          if (!placed[b] && (coupled[members[n]][b] || coupled[b][members[n]])) {
+            placed[b] = true;
+            members.push_back(b);
+          }
+        }
+      }
+      sets.push_back(std::move(members));
+    }
+    return sets;
+  }
+
+  Block BlockOf(const MechanicalSystem& s, const std::vector<LagRows>& lags, const Mat<double>& B,
+                const std::vector<int>& rows) const {
+    const int m = static_cast<int>(rows.size());
+    Block b{rows, {}, {}, {}, {}, {}};
+    for (int x = 0; x < m; ++x) {
+      for (int y = 0; y < m; ++y) {
+        const int i = on_.dofs[rows[x]], j = on_.dofs[rows[y]];
+        b.M.push_back(s.M()(i, j));
+        b.C.push_back(s.C()(i, j));
+        b.K.push_back(s.K()(i, j));
+      }
+    }
+    for (const LagRows& L : lags) {
+      LagRows on{L.K, L.sigma, {}, {}};
+      for (int x = 0; x < m; ++x) {
+        for (int y = 0; y < m; ++y) {
+          on.fd[x][y] = L.fd[rows[x]][rows[y]];
+          on.fe[x][y] = L.fe[rows[x]][rows[y]];
+        }
+      }
+      b.lags.push_back(on);
+    }
+    for (int i = 0; i < B.cols(); ++i) {
+      std::vector<double> column(m);
+      bool acts = false;
+      for (int x = 0; x < m; ++x) acts |= (column[x] = B(rows[x], i)) != 0;
+      if (acts) b.inputs.emplace_back(i, std::move(column));
+    }
+    return b;
+  }
+
+  // D's block at w by a partially pivoted LU, X = D^-1 B on its rows for the
+  // inputs that act on it; false where a pivot is below kSingularRcond of the
+  // block's largest column (1-norm). Small blocks are solved at a fixed size,
+  // in registers.
+  bool Solve(const Block& b, double w) {
+    switch (b.rows.size()) {
+      case 1: { Complex A[1][1], v[1]; return Solve<1>(b, w, A, v); }
+      case 2: { Complex A[2][2], v[2]; return Solve<2>(b, w, A, v); }
+      case 3: { Complex A[3][3], v[3]; return Solve<3>(b, w, A, v); }
+      case 4: { Complex A[4][4], v[4]; return Solve<4>(b, w, A, v); }
+      default: return Solve<0>(b, w, A_, v_);
+    }
+  }
+  template <int kSize, class Square, class Column>  // kSize 0: b's
+  bool Solve(const Block& b, double w, Square& A, Column& v) {
+    const int m = kSize > 0 ? kSize : static_cast<int>(b.rows.size());
+    int pivot[kNumDofs];
+    double norm = 0, smallest = INFINITY;
+    for (int x = 0; x < m; ++x) {
+      for (int y = 0; y < m; ++y) {
+        const int e = x * m + y;
+        A[x][y] = Complex(b.K[e] - w * w * b.M[e], w * b.C[e]);
+      }
+    }
+    if (!b.lags.empty()) AddLagTerms(b, w, m, A);
+    for (int y = 0; y < m; ++y) {
+      double column = 0;
+      for (int x = 0; x < m; ++x) column += Size(A[x][y]);
+      norm = std::max(norm, column);
+    }
+    for (int c = 0; c < m; ++c) {
+      int best = c;
+      for (int x = c + 1; x < m; ++x) best = Size(A[x][c]) > Size(A[best][c]) ? x : best;
+      pivot[c] = best;
+      if (best != c) {
+        for (int y = 0; y < m; ++y) std::swap(A[c][y], A[best][y]);
+      }
+      const Complex u = A[c][c];
+      smallest = std::min(smallest, Size(u));
+      const double size2 = u.real() * u.real() + u.imag() * u.imag();
+      if (!(size2 > 0)) return false;
+      const Complex reciprocal(u.real() / size2, -u.imag() / size2);
+      A[c][c] = reciprocal;  // kept inverted for the solves
+      for (int x = c + 1; x < m; ++x) {
+        const Complex l = Mul(A[x][c], reciprocal);
+        A[x][c] = l;
+        for (int y = c + 1; y < m; ++y) A[x][y] -= Mul(l, A[c][y]);
+      }
+    }
+    if (!(smallest > kSingularRcond * norm)) return false;
+    for (const auto& [input, column] : b.inputs) {
+      for (int x = 0; x < m; ++x) v[x] = column[x];
+      for (int c = 0; c < m; ++c) std::swap(v[c], v[pivot[c]]);  // P
+      for (int c = 0; c < m; ++c) {  // L (unit diagonal)
+        for (int x = c + 1; x < m; ++x) v[x] -= Mul(A[x][c], v[c]);
+      }
+      for (int x = m - 1; x >= 0; --x) {  // U
+        for (int y = x + 1; y < m; ++y) v[x] -= Mul(A[x][y], v[y]);
+        v[x] = Mul(v[x], A[x][x]);
+      }
+      for (int x = 0; x < m; ++x) X_[b.rows[x] + on_.size() * input] = v[x];
+    }
+    return true;
+  }
+
+  // The lags' terms of eq. (F1) on the block, as Stiffness writes them.
+  template <class Square>
+  void AddLagTerms(const Block& b, double w, int m, Square& A) const {
+    for (const LagRows& L : b.lags) {
+      const double den = speed_ * speed_ + L.sigma * L.sigma * w * w;
+      const double g_re = L.K * speed_ / den, g_im = -L.K * L.sigma * w / den;
+      const Complex on_d(-L.K / L.sigma - g_im * w, g_re * w), on_e(-g_re * speed_, -g_im * speed_);
+      for (int x = 0; x < m; ++x) {
+        for (int y = 0; y < m; ++y) A[x][y] += on_d * L.fd[x][y] + on_e * L.fe[x][y];
+      }
+    }
+  }
+
+  const Active on_;
+  const double speed_;
+  std::vector<Block> blocks_;
+  std::vector<Function> functions_;
+  std::vector<Term> terms_;
+  // D^-1 B over the active rows (column-major), zero where an input misses a block.
+  std::vector<Complex> X_;
+  // A block's LU and a right-hand side: members, as std::complex zeroes the
+  // arrays it constructs.
+  Complex A_[kNumDofs][kNumDofs], v_[kNumDofs];
+};
+
+ResponseResult RespondValues(const MechanicalSystem& s, const Parameters& p,
+                             const ResponseRequest& request) {
+  ResponseResult r;
+  const int lines = static_cast<int>(request.frequencies_hz.size());
+  r.H.resize(lines, static_cast<int>(request.pairs.size()));
+  Lines solver(s, p, request);
+  for (int l = 0; l < lines; ++l) {
+    if (!solver.At(2 * M_PI * request.frequencies_hz[l], l, &r)) {
+      r.error = "the dynamic stiffness is singular at " +
+                std::to_string(request.frequencies_hz[l]) + " Hz (an undamped resonance)";
+      return r;
+    }
+  }
+  if (!r.H.allFinite()) {
+    r.error = "the response is not finite";
+    return r;
+  }
+  r.ok = true;
+  return r;
+}
+
 bool Hub(Dof d) { return d == Dof::kXa || d == Dof::kZa || d == Dof::kYa; }
 
 template <class T>
@@ -267,7 +556,7 @@ ResponseResult FrequencyResponse(const ModalModel& model, const Parameters& p, d
       return r;
     }
   }
-  if (!params) return Respond(s, p, request, nullptr);
+  if (!params) return RespondValues(s, p, request);
   const ParameterArray<ParameterJet> jets = Seeded(p);
   return Respond(model.Assemble(jets, speed_m_s), jets, request, params);
 }
