@@ -45,6 +45,8 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
     }
   }
   row_begin_.push_back(static_cast<int>(slots_.size()));
+  modal_.assign(dataset.conditions.size(), false);
+  for (const MeasuredMode& m : dataset.modes) modal_[m.condition] = true;
   // The parameters a coordinate moves: the free ones and those tied to them.
   for (int i = 0; i < kNumParams; ++i) {
     const auto tie = setup.ties().find(ParamAt(i));
@@ -228,12 +230,12 @@ bool ModalResiduals::Pair(const double* x, std::vector<ModalSolution>* solutions
   return true;
 }
 
-bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution& solution, double* r,
+bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution* solution, double* r,
                           Eigen::Ref<RowMatrix> dr) const {
   std::vector<int> pairs(dataset_.modes.size(), -1);
   std::string why;
-  if (!solution.ok || !PairCondition(c, solution, &pairs, &why)) return false;
-  const ModelAt at{&model_, &p, &solution, &pairs};
+  if (solution && (!solution->ok || !PairCondition(c, *solution, &pairs, &why))) return false;
+  const ModelAt at{&model_, &p, solution, solution ? &pairs : nullptr};
   const bool derive = dr.size() > 0;
   const int end = row_begin_[c + 1];
   for (int k = row_begin_[c]; k < end;) {
@@ -247,14 +249,13 @@ bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution& solut
     if (!done) return false;
     k += n;
   }
-  for (int k = row_begin_[c]; k < end; ++k) {
-    if (!std::isfinite(r[k - row_begin_[c]])) return false;
-  }
-  return !derive || dr.allFinite();
+  return Eigen::Map<const Eigen::VectorXd>(r, end - row_begin_[c]).allFinite() &&
+         (!derive || dr.allFinite());
 }
 
 ModalSolution ModalResiduals::SolveCondition(int c, const double* shared,
                                              const double* own) const {
+  if (!modal_[c]) return ModalSolution{};
   ++evaluations_;
   return model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
 }
@@ -263,10 +264,11 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
                                        double* r, const ModalSolution* near) const {
   ++evaluations_;
   const Parameters p = setup_.Decode(shared, own, c);
+  RowMatrix none;
+  if (!modal_[c]) return Rows(c, p, nullptr, r, none);
   const double speed = dataset_.conditions[c].speed_m_s;
   const ModalSolution solution = near ? model_.SolveFrom(*near, p, speed) : model_.Solve(p, speed);
-  RowMatrix none;
-  return Rows(c, p, solution, r, none);
+  return Rows(c, p, &solution, r, none);
 }
 
 bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, const double* own,
@@ -275,14 +277,16 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
   ++evaluations_;
   *defined = false;
   const Parameters p = setup_.Decode(shared, own, c);
-  const ModalSolution solution = model_.Solve(p, dataset_.conditions[c].speed_m_s, true);
+  const ModalSolution solution =
+      modal_[c] ? model_.Solve(p, dataset_.conditions[c].speed_m_s, true) : ModalSolution{};
+  const ModalSolution* modes = modal_[c] ? &solution : nullptr;
   const int rows = row_begin_[c + 1] - row_begin_[c];
   RowMatrix dr = RowMatrix::Zero(rows, kNumParams);
   if (!solution.derivatives_undefined.empty()) {
     RowMatrix none;
-    return Rows(c, p, solution, r, none);
+    return Rows(c, p, modes, r, none);
   }
-  if (!Rows(c, p, solution, r, dr)) return false;
+  if (!Rows(c, p, modes, r, dr)) return false;
   *defined = true;
   // Chain rule through the coordinates: coordinate i sets free()[i] and every
   // parameter tied to it, d value / d x = PhysicalStd(i, x, 1).
