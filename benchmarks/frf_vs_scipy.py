@@ -31,7 +31,7 @@ the wall time of the `ringid identify` command (process start, reading the
 report's seconds.
 
 Usage: /usr/bin/python3 benchmarks/frf_vs_scipy.py [--seeds=1,2,3] [--runs=3]
-           [--ringid=build/ringid] [--python=build/python]
+           [--ringid=build/ringid] [--python=build/python] [--keep=FOLDER]
 Exit status 2 with one line when SciPy, NumPy or ringid is missing.
 """
 import argparse
@@ -201,6 +201,7 @@ def main():
     parser.add_argument("--runs", type=int, default=3, help="median of this many runs of each")
     parser.add_argument("--ringid", default=os.path.join(ROOT, "build", "ringid"))
     parser.add_argument("--python", default=os.path.join(ROOT, "build", "python"))
+    parser.add_argument("--keep", help="write the datasets and ringid's reports to this folder")
     args = parser.parse_args()
     if not os.access(args.ringid, os.X_OK):
         print("frf_vs_scipy: needs the ringid command, not found at %s (build it, or --ringid)"
@@ -213,7 +214,10 @@ def main():
         module = None
 
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with tempfile.TemporaryDirectory() as scratch:
+        folder = args.keep or scratch
+        if args.keep:
+            os.makedirs(folder, exist_ok=True)
         gap = check_model(args.ringid, folder)
         for seed in [int(s) for s in args.seeds.split(",")]:
             path, dataset, truth = simulate(args.ringid, SPEC, seed, folder, "hammer_%d" % seed)
