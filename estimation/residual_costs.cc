@@ -276,14 +276,17 @@ ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
       for (int c = 0; c < setup.num_conditions(); ++c) {
         const int row = residuals_.row_begin(c), rows = residuals_.row_begin(c + 1) - row;
         const int own = setup.own_begin(c), size = setup.own_begin(c + 1) - own;
-        RowMatrix Js(rows, ns), Jo(rows, size);
+        // Without own coordinates the shared block is whole rows of J.
+        const bool direct = size == 0 && ns == n;
+        RowMatrix Js(direct ? 0 : rows, ns), Jo(rows, size);
         bool defined = false;
-        if (!residuals_.EvaluateConditionJacobian(c, x[0], x[0] + own, r + row, Js.data(),
-                                                  Jo.data(), &defined)) {
+        if (!residuals_.EvaluateConditionJacobian(
+                c, x[0], x[0] + own, r + row, direct ? &J(row, 0) : Js.data(),
+                size ? Jo.data() : nullptr, &defined)) {
           return false;
         }
         if (!defined) return numeric_->Evaluate(x, r, jacobians);
-        J.block(row, 0, rows, ns) = Js;
+        if (!direct) J.block(row, 0, rows, ns) = Js;
         J.block(row, own, rows, size) = Jo;
       }
       const auto& priors = residuals_.priors();

@@ -249,8 +249,11 @@ bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution* solut
     if (!done) return false;
     k += n;
   }
-  return Eigen::Map<const Eigen::VectorXd>(r, end - row_begin_[c]).allFinite() &&
-         (!derive || dr.allFinite());
+  if (!AllFinite(r, end - row_begin_[c])) return false;
+  for (int row = 0; derive && row < dr.rows(); ++row) {
+    if (!AllFinite(dr.data() + static_cast<size_t>(row) * dr.outerStride(), dr.cols())) return false;
+  }
+  return true;
 }
 
 ModalSolution ModalResiduals::SolveCondition(int c, const double* shared,
@@ -290,16 +293,26 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
   *defined = true;
   // Chain rule through the coordinates: coordinate i sets free()[i] and every
   // parameter tied to it, d value / d x = PhysicalStd(i, x, 1).
+  // Row by row: dr and J are row-major.
   const auto chain = [&](int begin, int end, const double* x, double* out) {
     if (!out) return;
-    Eigen::Map<RowMatrix> J(out, rows, end - begin);
+    const int n = end - begin;
+    std::vector<double> scale(n);
+    std::vector<std::vector<int>> from(n);  // free()[i], then the parameters tied to it
     for (int i = begin; i < end; ++i) {
-      const double scale = setup_.PhysicalStd(i, x[i - begin], 1.0);
-      Eigen::VectorXd column = dr.col(static_cast<int>(setup_.free()[i]));
-      for (const auto& [from, to] : setup_.ties()) {
-        if (to == setup_.free()[i]) column += dr.col(static_cast<int>(from));
+      scale[i - begin] = setup_.PhysicalStd(i, x[i - begin], 1.0);
+      from[i - begin].push_back(static_cast<int>(setup_.free()[i]));
+      for (const auto& [tied, to] : setup_.ties()) {
+        if (to == setup_.free()[i]) from[i - begin].push_back(static_cast<int>(tied));
       }
-      J.col(i - begin) = column * scale;
+    }
+    for (int row = 0; row < rows; ++row) {
+      const double* d = dr.data() + static_cast<size_t>(row) * dr.cols();
+      for (int i = 0; i < n; ++i) {
+        double v = d[from[i][0]];
+        for (size_t t = 1; t < from[i].size(); ++t) v += d[from[i][t]];
+        out[static_cast<size_t>(row) * n + i] = v * scale[i];
+      }
     }
   };
   chain(0, setup_.num_shared(), shared, jacobian_shared);

@@ -44,7 +44,7 @@ bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
   double* jac[] = {J.data()};
   const double* params[] = {x.data()};
-  if (!cost->Evaluate(params, r.data(), jac) || !J.allFinite()) return false;
+  if (!cost->Evaluate(params, r.data(), jac) || !AllFinite(J.data(), J.size())) return false;
   *jacobian = J;
   return true;
 }
