@@ -100,7 +100,7 @@ bool CarriedDifferences(const ceres::CostFunction& cost, Rows rows, const Solve&
 // rows in between: the differences are made once.
 class LastJacobian {
  public:
-  // Copies them where x is that point.
+  // Copies them where x is that point and every block asked for was made.
   bool Recall(const ceres::CostFunction& cost, double const* const* x, double* r,
               double** jacobians) const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -108,6 +108,7 @@ class LastJacobian {
     const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
     for (size_t k = 0, at = 0; k < sizes.size(); at += sizes[k++]) {
       if (!std::equal(x[k], x[k] + sizes[k], x_.begin() + at)) return false;
+      if (jacobians && jacobians[k] && jacobians_[k].empty()) return false;
     }
     std::copy(r_.begin(), r_.end(), r);
     for (size_t k = 0; jacobians && k < sizes.size(); ++k) {
@@ -115,8 +116,8 @@ class LastJacobian {
     }
     return true;
   }
-  // Differentiates at x by `differentiate` (r, every block's Jacobian) and
-  // keeps the result.
+  // Differentiates at x by `differentiate` (r and the blocks asked for, as
+  // CostFunction::Evaluate) and keeps the result.
   template <class Differentiate>
   bool Make(const ceres::CostFunction& cost, double const* const* x, double* r, double** jacobians,
             const Differentiate& differentiate) const {
@@ -125,12 +126,12 @@ class LastJacobian {
     x_.clear();
     r_.resize(cost.num_residuals());
     jacobians_.resize(sizes.size());
-    std::vector<double*> all;
+    std::vector<double*> made;
     for (size_t k = 0; k < sizes.size(); ++k) {
-      jacobians_[k].resize(static_cast<size_t>(cost.num_residuals()) * sizes[k]);
-      all.push_back(jacobians_[k].data());
+      jacobians_[k].resize(jacobians[k] ? static_cast<size_t>(cost.num_residuals()) * sizes[k] : 0);
+      made.push_back(jacobians[k] ? jacobians_[k].data() : nullptr);
     }
-    if (!differentiate(r_.data(), all.data())) return false;
+    if (!differentiate(r_.data(), made.data())) return false;
     for (size_t k = 0; k < sizes.size(); ++k) {
       x_.insert(x_.end(), x[k], x[k] + sizes[k]);
       if (jacobians[k]) std::copy(jacobians_[k].begin(), jacobians_[k].end(), jacobians[k]);
@@ -142,7 +143,7 @@ class LastJacobian {
  private:
   mutable std::mutex mutex_;
   mutable std::vector<double> x_, r_;  // x_ empty: nothing kept
-  mutable std::vector<std::vector<double>> jacobians_;
+  mutable std::vector<std::vector<double>> jacobians_;  // empty: not made
 };
 
 // One condition's rows, differentiated by CarriedDifferences.
@@ -163,8 +164,8 @@ class NumericConditionCost final : public ceres::CostFunction {
       return rows_.residuals->SolveCondition(rows_.condition, rows_.shared ? at[0] : nullptr,
                                              rows_.own ? at[rows_.shared ? 1 : 0] : nullptr);
     };
-    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** all) {
-      return CarriedDifferences(*this, rows_, solve, x, rows, all);
+    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** made) {
+      return CarriedDifferences(*this, rows_, solve, x, rows, made);
     });
   }
 
@@ -209,14 +210,19 @@ class AnalyticConditionCost final : public ceres::CostFunction {
     set_num_residuals(numeric_.num_residuals());
   }
   bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    if (last_.Recall(*this, x, r, jacobians)) return true;
     const double* s = shared_ ? x[0] : nullptr;
     const double* o = own_ ? x[shared_ ? 1 : 0] : nullptr;
     if (!jacobians) return residuals_.EvaluateCondition(condition_, s, o, r);
-    double* js = shared_ ? jacobians[0] : nullptr;
-    double* jo = own_ ? jacobians[shared_ ? 1 : 0] : nullptr;
-    bool defined = false;
-    if (!residuals_.EvaluateConditionJacobian(condition_, s, o, r, js, jo, &defined)) return false;
-    return defined || numeric_.Evaluate(x, r, jacobians);
+    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** made) {
+      double* js = shared_ ? made[0] : nullptr;
+      double* jo = own_ ? made[shared_ ? 1 : 0] : nullptr;
+      bool defined = false;
+      if (!residuals_.EvaluateConditionJacobian(condition_, s, o, rows, js, jo, &defined)) {
+        return false;
+      }
+      return defined || numeric_.Evaluate(x, rows, made);
+    });
   }
 
  private:
@@ -224,6 +230,7 @@ class AnalyticConditionCost final : public ceres::CostFunction {
   int condition_;
   bool shared_, own_;
   NumericConditionCost numeric_;
+  LastJacobian last_;
 };
 
 // The priors, with their exact derivatives, on the shared block.

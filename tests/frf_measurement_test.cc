@@ -108,7 +108,7 @@ TEST(FrfMeasurementTest, TheExactJacobianIsTheCentralDifferences) {
 // search, then the step taken) and for the rows between; and a condition of
 // FRFs alone solves no modes. So the first Jacobian costs 2n + 1 evaluations,
 // and the rows and Jacobian at that point again none; the Jacobian is the
-// one identify's analysis evaluates there.
+// one identify's analysis evaluates there. The exact Jacobian is kept too.
 TEST(FrfMeasurementTest, ANumericJacobianIsMadeOncePerPointAndSolvesNoModes) {
   std::mt19937_64 rng(10);
   const Dataset d = Hammer(0.02, 0.15, 10.0, &rng);
@@ -137,6 +137,17 @@ TEST(FrfMeasurementTest, ANumericJacobianIsMadeOncePerPointAndSolvesNoModes) {
       ASSERT_EQ(J.values[k], analysis(i, J.cols[k])) << "row " << i << ", column " << J.cols[k];
     }
   }
+  // The exact Jacobian likewise: one evaluation, then none.
+  ResidualOptions analytic;
+  analytic.derivatives = Derivatives::kAnalytic;
+  const auto exact = Problem::Create(RigidRingModel(), d, analytic, &status);
+  ASSERT_TRUE(exact) << status.message;
+  ceres::Problem exact_fit;
+  internal::AddResidualBlocks(exact->residuals(), &x, &exact_fit);
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_TRUE(exact_fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &r, nullptr, &J));
+  }
+  EXPECT_EQ(exact->evaluations(), 1);
 }
 
 // From the truth with 2 % noise: the chi-square per degree of freedom near 1
