@@ -265,11 +265,13 @@ void BM_FrfJacobian(benchmark::State& state, Derivatives derivatives) {
 BENCHMARK_CAPTURE(BM_FrfJacobian, numeric, Derivatives::kNumeric)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FrfJacobian, analytic, Derivatives::kAnalytic)->Unit(benchmark::kMillisecond);
 
-// Identify with one start, numeric derivatives (the default), from 15 % off.
-void BM_FrfFit(benchmark::State& state) {
+// Identify with one start from 15 % off: numeric derivatives (the default)
+// and exact.
+void BM_FrfFit(benchmark::State& state, Derivatives derivatives) {
   const Dataset d = HammerFrfs();
   IdentifyOptions o;
   o.starts = 1;
+  o.residuals.derivatives = derivatives;
   for (auto _ : state) {
     IdentifyResult s;
     Identify(RigidRingModel(), d, o, &s);
@@ -278,7 +280,8 @@ void BM_FrfFit(benchmark::State& state) {
     benchmark::DoNotOptimize(s);
   }
 }
-BENCHMARK(BM_FrfFit)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrfFit, numeric, Derivatives::kNumeric)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrfFit, analytic, Derivatives::kAnalytic)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ringid
