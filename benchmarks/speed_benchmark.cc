@@ -10,11 +10,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <random>
+#include <string>
 
 
 #include "datasets/dataset.h"
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
+#include "estimation/problem.h"
+#include "estimation/uncertainty.h"
+#include "model/frequency_response.h"
 #include "model/rigid_ring_model.h"
 #include "report/campaign_merge.h"
 #include "validation/speed_cases.h"
@@ -171,6 +177,111 @@ void BM_Forces(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Forces)->Unit(benchmark::kMillisecond);
+
+// Issue 36: the standing hammer test of benchmarks/frf_vs_scipy.py (28 FRFs x
+// 491 lines, 2 % noise, masses free), every free parameter 15 % off the
+// truth, up and down in turn.
+Dataset HammerFrfs() {
+  const Parameters truth = ExampleCarTire();
+  std::mt19937_64 rng(1);
+  Dataset d = PlanSimulation(truth, 0.15, {0}, {}, &rng);
+  FreeMasses(truth, 0.15, &rng, &d);
+  d.conditions[0].frf = HammerTest();
+  SimulateOptions so;
+  so.modes = false;
+  std::string why;
+  if (!Simulate(RigidRingModel(), truth, so, &rng, &d, &why)) {
+    std::fprintf(stderr, "ringid_benchmarks: %s\n", why.c_str());
+    std::abort();
+  }
+  int k = 0;
+  for (auto& [q, v] : d.initial) v = truth[q] * (k++ % 2 ? 0.85 : 1.15);
+  return d;
+}
+
+std::unique_ptr<Problem> HammerProblem(Derivatives derivatives) {
+  ResidualOptions o;
+  o.derivatives = derivatives;
+  Status status;
+  auto problem = Problem::Create(RigidRingModel(), HammerFrfs(), o, &status);
+  Require(status);
+  return problem;
+}
+
+// The model's H alone: 28 functions at 491 lines.
+void BM_FrfModel(benchmark::State& state) {
+  const Dataset d = HammerFrfs();
+  const Frf& frf = *d.conditions[0].frf;
+  ResponseRequest request;
+  const auto on_rim = [](const std::optional<FrfPoint>& p) { return p && p->on == FrfBody::kRim; };
+  for (const FrfInput& in : frf.inputs) {
+    request.inputs.push_back(
+        {in.contact, {in.coordinates.begin(), in.coordinates.end()}, on_rim(in.point)});
+  }
+  for (const FrfOutput& out : frf.outputs) {
+    request.outputs.push_back({out.channel, {out.coordinates.begin(), out.coordinates.end()},
+                               static_cast<int>(out.quantity), on_rim(out.point)});
+  }
+  for (const FrfFunction& f : frf.functions) request.pairs.push_back({f.output, f.input});
+  request.frequencies_hz = frf.frequencies_hz;
+  Parameters p = ExampleCarTire();
+  const RigidRingModel model;
+  int i = 0;
+  for (auto _ : state) {
+    NextSpeedPoint(&p, &i);
+    const ResponseResult r = FrequencyResponse(model, p, 0, request);
+    if (!r.ok) state.SkipWithError(r.error.c_str());
+    benchmark::DoNotOptimize(r.H.data());
+  }
+}
+BENCHMARK(BM_FrfModel)->Unit(benchmark::kMicrosecond);
+
+// One evaluation of the weighted residuals (27,496 rows), as a fit makes it.
+void BM_FrfResiduals(benchmark::State& state) {
+  const auto problem = HammerProblem(Derivatives::kNumeric);
+  Eigen::VectorXd x = problem->start(), r(problem->num_residuals());
+  int i = 0;
+  for (auto _ : state) {
+    x[i++ % x.size()] += 1e-9;  // a new point each time
+    if (!problem->residuals().Evaluate(x.data(), r.data())) state.SkipWithError("no residuals");
+    benchmark::DoNotOptimize(r.data());
+  }
+}
+BENCHMARK(BM_FrfResiduals)->Unit(benchmark::kMicrosecond);
+
+// One Jacobian (27,496 x 19) as the fit evaluates it: numeric (central
+// differences, the default) and exact.
+void BM_FrfJacobian(benchmark::State& state, Derivatives derivatives) {
+  const auto problem = HammerProblem(derivatives);
+  Eigen::VectorXd x = problem->start();
+  Eigen::MatrixXd J;
+  int i = 0;
+  for (auto _ : state) {
+    x[i++ % x.size()] += 1e-9;
+    if (!internal::EvaluateJacobian(problem->residuals(), x, &J)) state.SkipWithError("no J");
+    benchmark::DoNotOptimize(J.data());
+  }
+}
+BENCHMARK_CAPTURE(BM_FrfJacobian, numeric, Derivatives::kNumeric)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrfJacobian, analytic, Derivatives::kAnalytic)->Unit(benchmark::kMillisecond);
+
+// Identify with one start from 15 % off: numeric derivatives (the default)
+// and exact.
+void BM_FrfFit(benchmark::State& state, Derivatives derivatives) {
+  const Dataset d = HammerFrfs();
+  IdentifyOptions o;
+  o.starts = 1;
+  o.residuals.derivatives = derivatives;
+  for (auto _ : state) {
+    IdentifyResult s;
+    Identify(RigidRingModel(), d, o, &s);
+    if (!s.status.ok()) state.SkipWithError("fit failed");
+    state.counters["evaluations"] = static_cast<double>(s.evaluations);
+    benchmark::DoNotOptimize(s);
+  }
+}
+BENCHMARK_CAPTURE(BM_FrfFit, numeric, Derivatives::kNumeric)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrfFit, analytic, Derivatives::kAnalytic)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ringid

@@ -141,25 +141,26 @@ class FrfKind final : public Measurement {
     const ResponseResult model =
         FrequencyResponse(*at.model, *at.parameters, d.conditions[c].speed_m_s, request, params);
     if (!model.ok) return false;
+    // The lines rise (contract §9): those in the band are a run from `first`.
+    const int first = static_cast<int>(
+        std::find_if(frf.frequencies_hz.begin(), frf.frequencies_hz.end(),
+                     [&](double hz) { return InBand(hz, o); }) -
+        frf.frequencies_hz.begin());
+    const int lines = static_cast<int>(model.H.rows());
     int row = 0;
     for (int f = 0; f < static_cast<int>(frf.functions.size()); ++f) {
       const FrfFunction& fn = frf.functions[f];
-      int l = 0;  // the line within the band
-      for (size_t line = 0; line < frf.frequencies_hz.size(); ++line) {
-        if (!InBand(frf.frequencies_hz[line], o)) continue;
-        const double sigma = fn.sigma[line];
-        const Complex z = (model.H(l, f) - fn.h[line]) / sigma;
-        r[row] = z.real();
-        r[row + 1] = z.imag();
-        if (params) {
-          for (size_t k = 0; k < params->size(); ++k) {
-            const Complex dz = model.dH[k](l, f) / sigma;
-            dr(row, (*params)[k]) = dz.real();
-            dr(row + 1, (*params)[k]) = dz.imag();
-          }
+      const Complex* H = model.H.col(f).data();
+      for (int l = 0; l < lines; ++l, row += 2) {
+        const double inverse = 1 / fn.sigma[first + l];
+        const Complex z = H[l] - fn.h[first + l];
+        r[row] = z.real() * inverse;
+        r[row + 1] = z.imag() * inverse;
+        for (size_t k = 0; params && k < params->size(); ++k) {
+          const Complex dz = model.dH[k](l, f) * inverse;
+          dr(row, (*params)[k]) = dz.real();
+          dr(row + 1, (*params)[k]) = dz.imag();
         }
-        row += 2;
-        ++l;
       }
     }
     return true;

@@ -1,19 +1,25 @@
 // The residuals of ModalResiduals as Ceres cost functions: per condition
 // (numeric or exact Jacobian), the priors with exact derivatives, and all
 // rows as one block; central differences keep the labels of the point they
-// perturb.
+// perturb, and are made once per point.
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
-#include <ceres/dynamic_numeric_diff_cost_function.h>
+#include <ceres/cost_function.h>
 
 #include "estimation/residuals.h"
 
 namespace ringid {
 namespace internal {
 namespace {
+
+constexpr double kRelativeStep = 1e-4;
 
 // One condition's rows as a function of the shared block and its own block;
 // either may be absent (size 0).
@@ -42,20 +48,103 @@ struct AllRows {
 // keep the labels of the point they perturb (ModalModel::SolveFrom): a step
 // across a relabelling of nearly degenerate modes is no derivative, and
 // carrying spares each perturbed point a continuation in speed. `Rows` is
-// ConditionRows or AllRows; `Solve` gives its `near` at x.
+// ConditionRows or AllRows; `Solve` gives its `near` at x. The arithmetic is
+// ceres::DynamicNumericDiffCostFunction<CENTRAL>'s (step max(sqrt(eps),
+// 1e-4 |x_j|), column (r+ - r-) (1/step)/2), each column made contiguous and
+// the blocks written row-major at the end.
 template <class Rows, class Solve>
 bool CarriedDifferences(const ceres::CostFunction& cost, Rows rows, const Solve& solve,
                         double const* const* x, double* r, double** jacobians) {
   const auto near = solve(x);
   rows.near = &near;
-  ceres::NumericDiffOptions options;
-  options.relative_step_size = 1e-4;
-  ceres::DynamicNumericDiffCostFunction<Rows, ceres::CENTRAL> numeric(
-      &rows, ceres::DO_NOT_TAKE_OWNERSHIP, options);
-  for (int size : cost.parameter_block_sizes()) numeric.AddParameterBlock(size);
-  numeric.SetNumResiduals(cost.num_residuals());
-  return numeric.Evaluate(x, r, jacobians);
+  if (!rows(x, r)) return false;
+  if (!jacobians) return true;
+  const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
+  const int m = cost.num_residuals();
+  std::vector<std::vector<double>> at;
+  std::vector<const double*> blocks;
+  for (size_t b = 0; b < sizes.size(); ++b) at.emplace_back(x[b], x[b] + sizes[b]);
+  for (const std::vector<double>& block : at) blocks.push_back(block.data());
+  const double min_step = std::sqrt(std::numeric_limits<double>::epsilon());
+  std::vector<double> plus(m), minus(m), columns;
+  for (size_t b = 0; b < sizes.size(); ++b) {
+    if (!jacobians[b]) continue;
+    columns.resize(static_cast<size_t>(m) * sizes[b]);
+    for (int j = 0; j < sizes[b]; ++j) {
+      const double xj = at[b][j];
+      const double step = std::max(min_step, std::abs(xj) * kRelativeStep);
+      at[b][j] = xj + step;
+      const bool up = rows(blocks.data(), plus.data());
+      at[b][j] = xj - step;
+      const bool down = up && rows(blocks.data(), minus.data());
+      at[b][j] = xj;
+      if (!down) return false;
+      double one_over_step = 1.0 / step;
+      one_over_step /= 2;
+      double* column = columns.data() + static_cast<size_t>(j) * m;
+      for (int i = 0; i < m; ++i) column[i] = (plus[i] - minus[i]) * one_over_step;
+    }
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < sizes[b]; ++j) {
+        jacobians[b][static_cast<size_t>(i) * sizes[b] + j] = columns[static_cast<size_t>(j) * m + i];
+      }
+    }
+  }
+  return true;
 }
+
+// The point a cost function last differentiated, its rows and Jacobian
+// (each block's, row-major). Ceres' trust region asks for them twice at a
+// point where the problem has bounds (its projected line search evaluates
+// the candidate's gradient, then the accepted step its Jacobian) and for the
+// rows in between: the differences are made once.
+class LastJacobian {
+ public:
+  // Copies them where x is that point and every block asked for was made.
+  bool Recall(const ceres::CostFunction& cost, double const* const* x, double* r,
+              double** jacobians) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (x_.empty()) return false;
+    const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
+    for (size_t k = 0, at = 0; k < sizes.size(); at += sizes[k++]) {
+      if (!std::equal(x[k], x[k] + sizes[k], x_.begin() + at)) return false;
+      if (jacobians && jacobians[k] && jacobians_[k].empty()) return false;
+    }
+    std::copy(r_.begin(), r_.end(), r);
+    for (size_t k = 0; jacobians && k < sizes.size(); ++k) {
+      if (jacobians[k]) std::copy(jacobians_[k].begin(), jacobians_[k].end(), jacobians[k]);
+    }
+    return true;
+  }
+  // Differentiates at x by `differentiate` (r and the blocks asked for, as
+  // CostFunction::Evaluate) and keeps the result.
+  template <class Differentiate>
+  bool Make(const ceres::CostFunction& cost, double const* const* x, double* r, double** jacobians,
+            const Differentiate& differentiate) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
+    x_.clear();
+    r_.resize(cost.num_residuals());
+    jacobians_.resize(sizes.size());
+    std::vector<double*> made;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+      jacobians_[k].resize(jacobians[k] ? static_cast<size_t>(cost.num_residuals()) * sizes[k] : 0);
+      made.push_back(jacobians[k] ? jacobians_[k].data() : nullptr);
+    }
+    if (!differentiate(r_.data(), made.data())) return false;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+      x_.insert(x_.end(), x[k], x[k] + sizes[k]);
+      if (jacobians[k]) std::copy(jacobians_[k].begin(), jacobians_[k].end(), jacobians[k]);
+    }
+    std::copy(r_.begin(), r_.end(), r);
+    return true;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::vector<double> x_, r_;  // x_ empty: nothing kept
+  mutable std::vector<std::vector<double>> jacobians_;  // empty: not made
+};
 
 // One condition's rows, differentiated by CarriedDifferences.
 class NumericConditionCost final : public ceres::CostFunction {
@@ -69,16 +158,20 @@ class NumericConditionCost final : public ceres::CostFunction {
     set_num_residuals(residuals.row_begin(condition + 1) - residuals.row_begin(condition));
   }
   bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    if (last_.Recall(*this, x, r, jacobians)) return true;
     if (!jacobians) return rows_(x, r);
     const auto solve = [&](double const* const* at) {
       return rows_.residuals->SolveCondition(rows_.condition, rows_.shared ? at[0] : nullptr,
                                              rows_.own ? at[rows_.shared ? 1 : 0] : nullptr);
     };
-    return CarriedDifferences(*this, rows_, solve, x, r, jacobians);
+    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** made) {
+      return CarriedDifferences(*this, rows_, solve, x, rows, made);
+    });
   }
 
  private:
   ConditionRows rows_;
+  LastJacobian last_;
 };
 
 // Every row (one block of all coordinates), differentiated by CarriedDifferences.
@@ -117,14 +210,19 @@ class AnalyticConditionCost final : public ceres::CostFunction {
     set_num_residuals(numeric_.num_residuals());
   }
   bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
+    if (last_.Recall(*this, x, r, jacobians)) return true;
     const double* s = shared_ ? x[0] : nullptr;
     const double* o = own_ ? x[shared_ ? 1 : 0] : nullptr;
     if (!jacobians) return residuals_.EvaluateCondition(condition_, s, o, r);
-    double* js = shared_ ? jacobians[0] : nullptr;
-    double* jo = own_ ? jacobians[shared_ ? 1 : 0] : nullptr;
-    bool defined = false;
-    if (!residuals_.EvaluateConditionJacobian(condition_, s, o, r, js, jo, &defined)) return false;
-    return defined || numeric_.Evaluate(x, r, jacobians);
+    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** made) {
+      double* js = shared_ ? made[0] : nullptr;
+      double* jo = own_ ? made[shared_ ? 1 : 0] : nullptr;
+      bool defined = false;
+      if (!residuals_.EvaluateConditionJacobian(condition_, s, o, rows, js, jo, &defined)) {
+        return false;
+      }
+      return defined || numeric_.Evaluate(x, rows, made);
+    });
   }
 
  private:
@@ -132,6 +230,7 @@ class AnalyticConditionCost final : public ceres::CostFunction {
   int condition_;
   bool shared_, own_;
   NumericConditionCost numeric_;
+  LastJacobian last_;
 };
 
 // The priors, with their exact derivatives, on the shared block.
@@ -184,14 +283,17 @@ ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
       for (int c = 0; c < setup.num_conditions(); ++c) {
         const int row = residuals_.row_begin(c), rows = residuals_.row_begin(c + 1) - row;
         const int own = setup.own_begin(c), size = setup.own_begin(c + 1) - own;
-        RowMatrix Js(rows, ns), Jo(rows, size);
+        // Without own coordinates the shared block is whole rows of J.
+        const bool direct = size == 0 && ns == n;
+        RowMatrix Js(direct ? 0 : rows, ns), Jo(rows, size);
         bool defined = false;
-        if (!residuals_.EvaluateConditionJacobian(c, x[0], x[0] + own, r + row, Js.data(),
-                                                  Jo.data(), &defined)) {
+        if (!residuals_.EvaluateConditionJacobian(
+                c, x[0], x[0] + own, r + row, direct ? &J(row, 0) : Js.data(),
+                size ? Jo.data() : nullptr, &defined)) {
           return false;
         }
         if (!defined) return numeric_->Evaluate(x, r, jacobians);
-        J.block(row, 0, rows, ns) = Js;
+        if (!direct) J.block(row, 0, rows, ns) = Js;
         J.block(row, own, rows, size) = Jo;
       }
       const auto& priors = residuals_.priors();

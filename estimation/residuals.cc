@@ -45,6 +45,8 @@ ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
     }
   }
   row_begin_.push_back(static_cast<int>(slots_.size()));
+  modal_.assign(dataset.conditions.size(), false);
+  for (const MeasuredMode& m : dataset.modes) modal_[m.condition] = true;
   // The parameters a coordinate moves: the free ones and those tied to them.
   for (int i = 0; i < kNumParams; ++i) {
     const auto tie = setup.ties().find(ParamAt(i));
@@ -228,12 +230,12 @@ bool ModalResiduals::Pair(const double* x, std::vector<ModalSolution>* solutions
   return true;
 }
 
-bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution& solution, double* r,
+bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution* solution, double* r,
                           Eigen::Ref<RowMatrix> dr) const {
   std::vector<int> pairs(dataset_.modes.size(), -1);
   std::string why;
-  if (!solution.ok || !PairCondition(c, solution, &pairs, &why)) return false;
-  const ModelAt at{&model_, &p, &solution, &pairs};
+  if (solution && (!solution->ok || !PairCondition(c, *solution, &pairs, &why))) return false;
+  const ModelAt at{&model_, &p, solution, solution ? &pairs : nullptr};
   const bool derive = dr.size() > 0;
   const int end = row_begin_[c + 1];
   for (int k = row_begin_[c]; k < end;) {
@@ -247,14 +249,16 @@ bool ModalResiduals::Rows(int c, const Parameters& p, const ModalSolution& solut
     if (!done) return false;
     k += n;
   }
-  for (int k = row_begin_[c]; k < end; ++k) {
-    if (!std::isfinite(r[k - row_begin_[c]])) return false;
+  if (!AllFinite(r, end - row_begin_[c])) return false;
+  for (int row = 0; derive && row < dr.rows(); ++row) {
+    if (!AllFinite(dr.data() + static_cast<size_t>(row) * dr.outerStride(), dr.cols())) return false;
   }
-  return !derive || dr.allFinite();
+  return true;
 }
 
 ModalSolution ModalResiduals::SolveCondition(int c, const double* shared,
                                              const double* own) const {
+  if (!modal_[c]) return ModalSolution{};
   ++evaluations_;
   return model_.Solve(setup_.Decode(shared, own, c), dataset_.conditions[c].speed_m_s);
 }
@@ -263,10 +267,11 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
                                        double* r, const ModalSolution* near) const {
   ++evaluations_;
   const Parameters p = setup_.Decode(shared, own, c);
+  RowMatrix none;
+  if (!modal_[c]) return Rows(c, p, nullptr, r, none);
   const double speed = dataset_.conditions[c].speed_m_s;
   const ModalSolution solution = near ? model_.SolveFrom(*near, p, speed) : model_.Solve(p, speed);
-  RowMatrix none;
-  return Rows(c, p, solution, r, none);
+  return Rows(c, p, &solution, r, none);
 }
 
 bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, const double* own,
@@ -275,27 +280,39 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
   ++evaluations_;
   *defined = false;
   const Parameters p = setup_.Decode(shared, own, c);
-  const ModalSolution solution = model_.Solve(p, dataset_.conditions[c].speed_m_s, true);
+  const ModalSolution solution =
+      modal_[c] ? model_.Solve(p, dataset_.conditions[c].speed_m_s, true) : ModalSolution{};
+  const ModalSolution* modes = modal_[c] ? &solution : nullptr;
   const int rows = row_begin_[c + 1] - row_begin_[c];
   RowMatrix dr = RowMatrix::Zero(rows, kNumParams);
   if (!solution.derivatives_undefined.empty()) {
     RowMatrix none;
-    return Rows(c, p, solution, r, none);
+    return Rows(c, p, modes, r, none);
   }
-  if (!Rows(c, p, solution, r, dr)) return false;
+  if (!Rows(c, p, modes, r, dr)) return false;
   *defined = true;
   // Chain rule through the coordinates: coordinate i sets free()[i] and every
   // parameter tied to it, d value / d x = PhysicalStd(i, x, 1).
+  // Row by row: dr and J are row-major.
   const auto chain = [&](int begin, int end, const double* x, double* out) {
     if (!out) return;
-    Eigen::Map<RowMatrix> J(out, rows, end - begin);
+    const int n = end - begin;
+    std::vector<double> scale(n);
+    std::vector<std::vector<int>> from(n);  // free()[i], then the parameters tied to it
     for (int i = begin; i < end; ++i) {
-      const double scale = setup_.PhysicalStd(i, x[i - begin], 1.0);
-      Eigen::VectorXd column = dr.col(static_cast<int>(setup_.free()[i]));
-      for (const auto& [from, to] : setup_.ties()) {
-        if (to == setup_.free()[i]) column += dr.col(static_cast<int>(from));
+      scale[i - begin] = setup_.PhysicalStd(i, x[i - begin], 1.0);
+      from[i - begin].push_back(static_cast<int>(setup_.free()[i]));
+      for (const auto& [tied, to] : setup_.ties()) {
+        if (to == setup_.free()[i]) from[i - begin].push_back(static_cast<int>(tied));
       }
-      J.col(i - begin) = column * scale;
+    }
+    for (int row = 0; row < rows; ++row) {
+      const double* d = dr.data() + static_cast<size_t>(row) * dr.cols();
+      for (int i = 0; i < n; ++i) {
+        double v = d[from[i][0]];
+        for (size_t t = 1; t < from[i].size(); ++t) v += d[from[i][t]];
+        out[static_cast<size_t>(row) * n + i] = v * scale[i];
+      }
     }
   };
   chain(0, setup_.num_shared(), shared, jacobian_shared);

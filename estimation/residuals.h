@@ -59,7 +59,8 @@ class ModalResiduals {
   // shared coordinates and that condition's own; rows of the priors follow.
   bool EvaluateCondition(int c, const double* shared, const double* own, double* r,
                          const ModalSolution* near = nullptr) const;
-  // Condition c's model solution there (one evaluation).
+  // Condition c's model solution there (one evaluation); an empty one where
+  // the condition measures no mode (nothing of it reads the modes).
   ModalSolution SolveCondition(int c, const double* shared, const double* own) const;
   // The same rows and their exact derivatives with respect to the shared and
   // own coordinates (row-major; either may be null). False as
@@ -118,10 +119,10 @@ class ModalResiduals {
   const Dataset& dataset_;
   const ParameterSetup& setup_;
   ResidualOptions options_;
-  // Condition c's rows from its parameters p and model solution and, where
-  // dr is not empty, their derivatives with respect to each catalogue
-  // parameter.
-  bool Rows(int c, const Parameters& p, const ModalSolution& solution, double* r,
+  // Condition c's rows from its parameters p and model solution (null where
+  // it measures no mode) and, where dr is not empty, their derivatives with
+  // respect to each catalogue parameter.
+  bool Rows(int c, const Parameters& p, const ModalSolution* solution, double* r,
             Eigen::Ref<RowMatrix> dr) const;
   // Pairs the measured modes of condition c with `solution`'s
   // (datasets/pairing.h).
@@ -131,10 +132,25 @@ class ModalResiduals {
   std::vector<Slot> slots_;
   std::vector<PriorTerm> priors_;
   std::vector<int> row_begin_;  // per condition, then the first prior row
+  // Per condition: whether it measures modes, the only rows that read the
+  // model's modes (FRFs and statics do not: their conditions skip the solve).
+  std::vector<bool> modal_;
   std::vector<int> derived_;    // catalogue parameters some coordinate moves
   int num_residuals_ = 0;
   mutable std::atomic<long> evaluations_{0};
 };
+
+// Whether v[0, n) are all finite, without a branch per value (a residual
+// block's Jacobian has millions): v * 0 is 0 but where v is not finite.
+inline bool AllFinite(const double* v, size_t n) {
+  double zero[4] = {0, 0, 0, 0};
+  size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    for (int k = 0; k < 4; ++k) zero[k] += v[i + k] * 0.0;
+  }
+  for (; i < n; ++i) zero[0] += v[i] * 0.0;
+  return zero[0] + zero[1] + zero[2] + zero[3] == 0;
+}
 
 // The Ceres cost functions (estimation/residual_costs.cc).
 

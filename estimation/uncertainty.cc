@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include <Eigen/SVD>
-#include <ceres/ceres.h>
 
 #include "estimation/statistics.h"
 #include "estimation/structure.h"
@@ -45,33 +44,28 @@ bool EvaluateJacobian(const ModalResiduals& residuals, const Eigen::VectorXd& x,
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
   double* jac[] = {J.data()};
   const double* params[] = {x.data()};
-  if (!cost->Evaluate(params, r.data(), jac) || !J.allFinite()) return false;
+  if (!cost->Evaluate(params, r.data(), jac) || !AllFinite(J.data(), J.size())) return false;
   *jacobian = J;
   return true;
 }
 
 namespace {
 
-// The Jacobian already evaluated at x, for Ceres' covariance, which reads
-// it there only: no second evaluation of the model.
-class EvaluatedCost final : public ceres::CostFunction {
- public:
-  explicit EvaluatedCost(const Eigen::MatrixXd& jacobian) : jacobian_(jacobian) {
-    set_num_residuals(static_cast<int>(jacobian.rows()));
-    mutable_parameter_block_sizes()->push_back(static_cast<int>(jacobian.cols()));
+// Ceres' dense-SVD covariance with the null space dropped, from J's SVD:
+// V diag(1 / s_i^2) V^T over the singular values within `tolerance` of the
+// largest (Ceres' min_reciprocal_condition_number is tolerance^2, on s^2).
+// False where it is not finite (J zero).
+bool Covariance(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, double tolerance,
+                Eigen::MatrixXd* covariance) {
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::VectorXd inverse_squared = Eigen::VectorXd::Zero(s.size());
+  for (int i = 0; i < s.size(); ++i) {
+    if (s[i] / s[0] < tolerance) break;
+    inverse_squared[i] = 1.0 / (s[i] * s[i]);
   }
-  bool Evaluate(double const* const*, double* r, double** jacobians) const override {
-    Eigen::Map<Eigen::VectorXd>(r, jacobian_.rows()).setZero();  // unused by the covariance
-    if (jacobians && jacobians[0]) {
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          jacobians[0], jacobian_.rows(), jacobian_.cols()) = jacobian_;
-    }
-    return true;
-  }
-
- private:
-  Eigen::MatrixXd jacobian_;
-};
+  *covariance = svd.matrixV() * inverse_squared.asDiagonal() * svd.matrixV().transpose();
+  return covariance->allFinite();
+}
 
 }  // namespace
 
@@ -96,8 +90,6 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
     u.error = u.covariance_error = "the Jacobian could not be evaluated at the fitted point";
     return u;
   }
-  ceres::Problem problem;
-  problem.AddResidualBlock(new EvaluatedCost(J), nullptr, x.data());
   u.ok = true;
   // Finite differences leave noise along directions the model cannot see;
   // those are decided exactly and projected out.
@@ -120,28 +112,13 @@ Uncertainty AnalyzeUncertainty(const ModalResiduals& residuals,
                              : std::numeric_limits<double>::infinity();
   u.null_space = svd.matrixV().rightCols(n - u.rank);
 
-  // Ceres' covariance on a rank-deficient problem: dense SVD, dropping the
-  // eigenvalues of J^T J below the same cut. Never read it if Compute fails.
-  ceres::Covariance::Options copt;
-  copt.algorithm_type = ceres::DENSE_SVD;
-  copt.null_space_rank = -1;
-  copt.min_reciprocal_condition_number =
-      options.rank_tolerance * options.rank_tolerance;
-  ceres::Covariance covariance(copt);
-  std::vector<std::pair<const double*, const double*>> blocks = {
-      {x.data(), x.data()}};
-  if (covariance.Compute(blocks, &problem)) {
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(n, n);
-    if (covariance.GetCovarianceBlock(x.data(), x.data(), c.data()) &&
-        c.allFinite()) {
-      u.covariance = c;
-      u.covariance_ok = true;
-    } else {
-      u.covariance_error = "covariance block could not be read";
-    }
-  } else {
-    u.covariance_error = "ceres::Covariance::Compute failed";
-  }
+  // The covariance of the Jacobian as evaluated (dense SVD, null space
+  // dropped below the same cut): its SVD above where nothing was projected.
+  u.covariance_ok =
+      S.cols() ? Covariance(Eigen::JacobiSVD<Eigen::MatrixXd>(J, Eigen::ComputeFullV),
+                            options.rank_tolerance, &u.covariance)
+               : Covariance(svd, options.rank_tolerance, &u.covariance);
+  if (!u.covariance_ok) u.covariance_error = "the covariance is not finite";
 
   for (int i = 0; i < n; ++i) {
     const double in_null =

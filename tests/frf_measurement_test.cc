@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include <ceres/crs_matrix.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,8 @@
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
 #include "estimation/problem.h"
+#include "estimation/residuals.h"
+#include "estimation/uncertainty.h"
 #include "model/forced_response.h"
 #include "tests/test_support.h"
 
@@ -98,6 +101,53 @@ TEST(FrfMeasurementTest, TheExactJacobianIsTheCentralDifferences) {
     EXPECT_LT((numeric - J.col(i)).norm(), 1e-6 * J.col(i).norm() + 1e-9)
         << problem->coordinate_name(i);
   }
+}
+
+// Numeric differences are made once per point: Ceres' trust region asks a
+// bounded problem for the Jacobian at its candidate twice (its projected line
+// search, then the step taken) and for the rows between; and a condition of
+// FRFs alone solves no modes. So the first Jacobian costs 2n + 1 evaluations,
+// and the rows and Jacobian at that point again none; the Jacobian is the
+// one identify's analysis evaluates there. The exact Jacobian is kept too.
+TEST(FrfMeasurementTest, ANumericJacobianIsMadeOncePerPointAndSolvesNoModes) {
+  std::mt19937_64 rng(10);
+  const Dataset d = Hammer(0.02, 0.15, 10.0, &rng);
+  Status status;
+  const auto problem = Problem::Create(RigidRingModel(), d, ResidualOptions{}, &status);
+  ASSERT_TRUE(problem) << status.message;
+  Eigen::VectorXd x = problem->start();
+  ceres::Problem fit;
+  internal::AddResidualBlocks(problem->residuals(), &x, &fit);
+  const long before = problem->evaluations();
+  double cost = 0;
+  std::vector<double> r, again;
+  ceres::CRSMatrix J, J_again;
+  ASSERT_TRUE(fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &r, nullptr, &J));
+  EXPECT_EQ(problem->evaluations() - before, 2 * x.size() + 1);
+  ASSERT_TRUE(fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &again, nullptr, &J_again));
+  ASSERT_TRUE(fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr));
+  EXPECT_EQ(problem->evaluations() - before, 2 * x.size() + 1);
+  EXPECT_EQ(again, r);
+  EXPECT_EQ(J_again.values, J.values);
+  Eigen::MatrixXd analysis;
+  ASSERT_TRUE(internal::EvaluateJacobian(problem->residuals(), x, &analysis));
+  ASSERT_EQ(J.num_rows, analysis.rows());
+  for (int i = 0; i < J.num_rows; ++i) {
+    for (int k = J.rows[i]; k < J.rows[i + 1]; ++k) {
+      ASSERT_EQ(J.values[k], analysis(i, J.cols[k])) << "row " << i << ", column " << J.cols[k];
+    }
+  }
+  // The exact Jacobian likewise: one evaluation, then none.
+  ResidualOptions analytic;
+  analytic.derivatives = Derivatives::kAnalytic;
+  const auto exact = Problem::Create(RigidRingModel(), d, analytic, &status);
+  ASSERT_TRUE(exact) << status.message;
+  ceres::Problem exact_fit;
+  internal::AddResidualBlocks(exact->residuals(), &x, &exact_fit);
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_TRUE(exact_fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &r, nullptr, &J));
+  }
+  EXPECT_EQ(exact->evaluations(), 1);
 }
 
 // From the truth with 2 % noise: the chi-square per degree of freedom near 1
