@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <ceres/cost_function.h>
+#include <ceres/dynamic_numeric_diff_cost_function.h>
 
 #include "estimation/residuals.h"
 
@@ -48,49 +49,20 @@ struct AllRows {
 // keep the labels of the point they perturb (ModalModel::SolveFrom): a step
 // across a relabelling of nearly degenerate modes is no derivative, and
 // carrying spares each perturbed point a continuation in speed. `Rows` is
-// ConditionRows or AllRows; `Solve` gives its `near` at x. The arithmetic is
-// ceres::DynamicNumericDiffCostFunction<CENTRAL>'s (step max(sqrt(eps),
-// 1e-4 |x_j|), column (r+ - r-) (1/step)/2), each column made contiguous and
-// the blocks written row-major at the end.
+// ConditionRows or AllRows; `Solve` gives its `near` at x. Ceres'
+// DynamicNumericDiffCostFunction<CENTRAL> makes the differences.
 template <class Rows, class Solve>
 bool CarriedDifferences(const ceres::CostFunction& cost, Rows rows, const Solve& solve,
                         double const* const* x, double* r, double** jacobians) {
   const auto near = solve(x);
   rows.near = &near;
-  if (!rows(x, r)) return false;
-  if (!jacobians) return true;
-  const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
-  const int m = cost.num_residuals();
-  std::vector<std::vector<double>> at;
-  std::vector<const double*> blocks;
-  for (size_t b = 0; b < sizes.size(); ++b) at.emplace_back(x[b], x[b] + sizes[b]);
-  for (const std::vector<double>& block : at) blocks.push_back(block.data());
-  const double min_step = std::sqrt(std::numeric_limits<double>::epsilon());
-  std::vector<double> plus(m), minus(m), columns;
-  for (size_t b = 0; b < sizes.size(); ++b) {
-    if (!jacobians[b]) continue;
-    columns.resize(static_cast<size_t>(m) * sizes[b]);
-    for (int j = 0; j < sizes[b]; ++j) {
-      const double xj = at[b][j];
-      const double step = std::max(min_step, std::abs(xj) * kRelativeStep);
-      at[b][j] = xj + step;
-      const bool up = rows(blocks.data(), plus.data());
-      at[b][j] = xj - step;
-      const bool down = up && rows(blocks.data(), minus.data());
-      at[b][j] = xj;
-      if (!down) return false;
-      double one_over_step = 1.0 / step;
-      one_over_step /= 2;
-      double* column = columns.data() + static_cast<size_t>(j) * m;
-      for (int i = 0; i < m; ++i) column[i] = (plus[i] - minus[i]) * one_over_step;
-    }
-    for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < sizes[b]; ++j) {
-        jacobians[b][static_cast<size_t>(i) * sizes[b] + j] = columns[static_cast<size_t>(j) * m + i];
-      }
-    }
-  }
-  return true;
+  ceres::NumericDiffOptions options;
+  options.relative_step_size = kRelativeStep;
+  ceres::DynamicNumericDiffCostFunction<Rows, ceres::CENTRAL> numeric(
+      &rows, ceres::DO_NOT_TAKE_OWNERSHIP, options);
+  for (int size : cost.parameter_block_sizes()) numeric.AddParameterBlock(size);
+  numeric.SetNumResiduals(cost.num_residuals());
+  return numeric.Evaluate(x, r, jacobians);
 }
 
 // The point a cost function last differentiated, its rows and Jacobian
