@@ -57,5 +57,8 @@ long=(
   SuitesTest.StaticStiffnessesAndModesIdentifyScatteredTiresFromScatteredStarts
   # A noise-free FRF fit (0.5 s optimised): the noisy one beside it runs the same paths.
   FrfMeasurementTest.ANoiseFreeHammerTestGivesTheTruthWithTheMassesFree
+  # Two FRF fits of six starts, each through the modal stage (1 s optimised):
+  # FrfStartTest's extraction test and the fits of frf_measurement_test run its paths.
+  FrfStartTest.FromInitialValuesScatteredByAFactorThreeTheBestFitIsFound
 )
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -E "$(IFS='|'; echo "${long[*]}")"
