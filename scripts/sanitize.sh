@@ -57,5 +57,10 @@ long=(
   SuitesTest.StaticStiffnessesAndModesIdentifyScatteredTiresFromScatteredStarts
   # A noise-free FRF fit (0.5 s optimised): the noisy one beside it runs the same paths.
   FrfMeasurementTest.ANoiseFreeHammerTestGivesTheTruthWithTheMassesFree
+  # Diagnoses of FRFs (1.4 and 2.4 s of CPU optimised): AbsorbedBy and BaselineFrom
+  # run under the sanitizers in AnAbsorptionIsSaidOnlyWhereTheDataConfirmIt and
+  # ABaselineStartFromAnAbsorbedSensorMassMovesItIntoTheMasses (0.1 s each).
+  DiagnoseTest.OnFrfsTheFreeMassesAbsorbASensorMassAndTheReportSaysSo
+  DiagnoseTest.OnFrfsALugCouplingIsNamedAboveItsStatedDetectableSizeAndNotBelow
 )
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -E "$(IFS='|'; echo "${long[*]}")"
