@@ -142,6 +142,118 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
   return out;
 }
 
+namespace {
+
+// The coordinate of `fit` named `name` (-1 where none: `name` is not free).
+int CoordinateNamed(const IdentifyResult& fit, const std::string& name) {
+  const auto& names = fit.coordinate_names;
+  const auto at = std::find(names.begin(), names.end(), name);
+  return at == names.end() ? -1 : static_cast<int>(at - names.begin());
+}
+
+// A component of a structural invariance counts where it is above rounding
+// (as estimation/structure.cc reads them).
+constexpr double kInvariancePart = 1e-8;
+// The data confirm an invariance where the exact Jacobian along it is this
+// small against the effect parameter's own column: the system's entries miss
+// what an FRF's axle channels and contact inputs read of the parameters
+// (k_bz in the axle's force, dk_bz with it), which the data then separate.
+constexpr double kUnseenAlong = 1e-6;
+
+bool InEffect(const Effect& effect, const std::string& name) {
+  for (Param q : effect.parameters()) {
+    if (name == ParamName(q)) return true;
+  }
+  return false;
+}
+
+// A sizing parameter of the effect (coordinate k of its fit) moving with free
+// baseline parameters `by` along `direction`, which the data do not see.
+struct Absorption {
+  int k;
+  Eigen::VectorXd direction;
+  std::vector<std::string> by;
+};
+
+// Each sizing parameter of `effect` that takes part, with free baseline
+// parameters, in a structural invariance of `fit` that `dataset`'s exact
+// Jacobian at the fit confirms.
+std::vector<Absorption> Absorptions(const RigidRingModel& model, const Dataset& dataset,
+                                    const Effect& effect, const IdentifyResult& fit,
+                                    const ResidualOptions& options) {
+  std::vector<Absorption> out;
+  for (Param p : effect.parameters()) {
+    const int k = CoordinateNamed(fit, ParamName(p));
+    if (k < 0 || Info(p).domain == Domain::kPositive) continue;  // m_a sizes nothing
+    for (const Eigen::VectorXd& v : fit.uncertainty.structural_readable) {
+      const double big = v.cwiseAbs().maxCoeff();
+      if (!(std::abs(v[k]) > kInvariancePart * big)) continue;
+      Absorption a{k, v, {}};
+      for (int i = 0; i < v.size(); ++i) {
+        const std::string& name = fit.coordinate_names[i];
+        if (std::abs(v[i]) > kInvariancePart * big && !InEffect(effect, name)) a.by.push_back(name);
+      }
+      if (!a.by.empty()) {
+        out.push_back(std::move(a));
+        break;
+      }
+    }
+  }
+  if (out.empty()) return out;
+  Dataset at = dataset;
+  for (const ParameterEstimate& e : fit.estimates) {
+    if (e.free) at.initial[e.param()] = e.value;
+  }
+  Status status;
+  const auto problem = Problem::Create(model, at, options, &status);
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  if (!problem || problem->setup().size() != fit.x.size() ||
+      !problem->Evaluate(fit.x, &r, &J)) {
+    return {};
+  }
+  std::vector<Absorption> confirmed;
+  for (Absorption& a : out) {
+    const double own = (J.col(a.k) * a.direction[a.k]).norm();
+    if ((J * a.direction).norm() <= kUnseenAlong * own) confirmed.push_back(std::move(a));
+  }
+  return confirmed;
+}
+
+}  // namespace
+
+std::map<std::string, std::vector<std::string>> AbsorbedBy(const RigidRingModel& model,
+                                                           const Dataset& dataset,
+                                                           const Effect& effect,
+                                                           const IdentifyResult& fit,
+                                                           const ResidualOptions& options) {
+  std::map<std::string, std::vector<std::string>> out;
+  for (const Absorption& a : Absorptions(model, dataset, effect, fit, options)) {
+    out[fit.coordinate_names[a.k]] = a.by;
+  }
+  return out;
+}
+
+Dataset BaselineFrom(const RigidRingModel& model, const Dataset& dataset, const Effect& effect,
+                     const IdentifyResult& fit, const ResidualOptions& options) {
+  Dataset d = dataset;
+  for (const ParameterEstimate& e : fit.estimates) {
+    if (e.free) d.initial[e.param()] = e.value;
+  }
+  ParameterSetup setup;
+  std::string error;
+  if (ParameterSetup::Build(model, d, &setup, &error) && setup.size() == fit.x.size()) {
+    Eigen::VectorXd x = fit.x;
+    for (const Absorption& a : Absorptions(model, dataset, effect, fit, options)) {
+      x -= (x[a.k] / a.direction[a.k]) * a.direction;
+    }
+    const Parameters moved = setup.Decode(x.data(), 0);
+    for (Param q : setup.free()) d.initial[q] = moved[q];
+  }
+  for (Param q : effect.parameters()) d.initial.erase(q);
+  return d;
+}
+
 std::string DetectableSizes(const RigidRingModel& baseline, const Dataset& warm,
                             const DiagnoseOptions& o, DiagnosisResult* r) {
   const double zero = RecalibratedCost(baseline, baseline, r->baseline.parameters, warm, o);

@@ -332,6 +332,9 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   for (Param p : effect.parameters()) {
     if (s.parameters.IsSet(p)) f.values[ParamName(p)] = s.parameters[p];
   }
+  // What free parameters absorb, these data cannot show: never supported.
+  f.absorbed_by = internal::AbsorbedBy(model, dataset, effect, s, o.fit.residuals);
+  f.supported = f.supported && !f.AbsorbedWhole();
   std::vector<ModalResiduals::Slot> es;
   std::vector<double> er;
   if (ResidualsAt(model, dataset, s.x, &es, &er, o.fit.residuals)) {
@@ -342,6 +345,7 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   f.minimal_detectable =
       internal::MinimalDetectable(baseline, effect, warm, r.baseline.uncertainty.jacobian,
                                   r.baseline.uncertainty.rank, o, o.detectable_likelihood_ratio);
+  for (const auto& [name, by] : f.absorbed_by) f.minimal_detectable.erase(name);
   return f;
 }
 
@@ -354,7 +358,7 @@ std::string Group(const EffectFit& best, const DiagnoseOptions& o, DiagnosisResu
   std::ostringstream others;
   char b[160];
   for (EffectFit& f : r->ranking) {
-    if (!f.ok) continue;
+    if (!f.ok || f.AbsorbedWhole()) continue;  // the baseline itself, on these data
     const int dof = std::max(std::abs(f.extra_parameters - best.extra_parameters), 1);
     f.chi2_above_verdict = f.chi2 - best.chi2;
     f.group_threshold = ChiSquareCritical(o.effect_significance, dof);
@@ -413,7 +417,43 @@ void Verdict(const RigidRingModel& baseline, const Dataset& warm, const std::vec
   }
 }
 
+// The explanation's end: for a "none" verdict the sizes a re-calibration
+// would absorb, and for any verdict the effects' parameters that free
+// parameters absorb whatever their size.
+void Conclude(const RigidRingModel& baseline, const Dataset& warm, const DiagnoseOptions& o,
+              DiagnosisResult* r, std::ostringstream* why) {
+  if (!r->verdict && r->p_value) {
+    if (!r->absorbed.empty() && r->significant) *why << "; part of it sits in the parameters";
+    const std::string sizes = internal::DetectableSizes(baseline, warm, o, r);
+    if (!sizes.empty()) *why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
+  }
+  std::string whole;
+  for (const EffectFit& f : r->ranking) {
+    for (const auto& [name, by] : f.absorbed_by) {
+      whole += std::string(whole.empty() ? "" : ", ") + f.effect->name() + "'s " + name + " (by";
+      for (size_t i = 0; i < by.size(); ++i) whole += (i ? ", " : " ") + by[i];
+      whole += ")";
+    }
+  }
+  if (!whole.empty()) {
+    *why << ". Free parameters absorb these whatever their size, so these data cannot show them "
+            "while those are free: "
+         << whole;
+  }
+}
+
 }  // namespace
+
+bool EffectFit::AbsorbedWhole() const {
+  if (!effect || absorbed_by.empty()) return false;
+  for (Param p : effect->parameters()) {
+    const std::string name = ParamName(p);
+    if (Info(p).domain != Domain::kPositive && values.count(name) && !absorbed_by.count(name)) {
+      return false;
+    }
+  }
+  return true;
+}
 
 // Whether `s`, a fit with `effect`, holds the effect at 0 (it is then the
 // baseline's model).
@@ -472,7 +512,8 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     for (int k = 0; k < n; ++k) {
       const IdentifyResult& s = fits[k];
       if (s.status.ok() && s.cost < r->baseline.cost - 0.5 * kSameOptimumChiSquare &&
-          EffectOff(*candidates[k], s) && (better < 0 || s.cost < fits[better].cost)) {
+          (EffectOff(*candidates[k], s) || r->ranking[k].AbsorbedWhole()) &&
+          (better < 0 || s.cost < fits[better].cost)) {
         better = k;
       }
     }
@@ -481,9 +522,9 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     IdentifyOptions one = o.fit;
     one.starts = 1;
     IdentifyResult recalibrated;
-    Dataset from = WarmStart(dataset, fits[better]);
-    for (Param q : r->ranking[better].effect->parameters()) from.initial.erase(q);
-    Identify(baseline, from, one, &recalibrated);
+    const Effect& off = *r->ranking[better].effect;  // at 0, or moved there along what absorbs it
+    Identify(baseline, internal::BaselineFrom(baseline.With(&off), dataset, off, fits[better],
+                                              o.fit.residuals), one, &recalibrated);
     steps.Done();
     if (!recalibrated.status.ok() || !(recalibrated.cost < r->baseline.cost)) break;
     // The baseline's starts, and this one after them.
@@ -494,8 +535,8 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     recalibrated.start_origins.push_back(StartOrigin::kEffectAtZero);
     recalibrated.start_agreement = r->baseline.start_agreement;
     recalibrated.start_agreement.verdict +=
-        "; a fit holding an effect at 0 then found a lower chi-square, from which the baseline "
-        "was calibrated again";
+        "; a fit holding an effect at 0 (or one free parameters absorb, moved to 0 along them) "
+        "then found a lower chi-square, from which the baseline was calibrated again";
     r->baseline = std::move(recalibrated);
     steps.More(n);  // the candidates again
   }
@@ -538,11 +579,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     if (r->verdict && r->ranking[k].effect == r->verdict) verdict_fit = &ranked_fits[k];
   }
   r->absorbed = Absorbed(r->baseline, verdict_fit, o);
-  if (!r->verdict && r->p_value) {
-    if (!r->absorbed.empty() && r->significant) why << "; part of it sits in the parameters";
-    const std::string sizes = internal::DetectableSizes(baseline, warm, o, r);
-    if (!sizes.empty()) why << ". A re-calibration of the baseline would absorb, undetected: " << sizes;
-  }
+  Conclude(baseline, warm, o, r, &why);
   r->explanation = why.str();
   steps.Done();
   r->status = Status::Success();
@@ -603,6 +640,11 @@ std::string DiagnosisResult::FullReport() const {
                   f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-", versus,
                   f.supported ? "  supported" : "");
     o << line;
+    for (const auto& [name, by] : f.absorbed_by) {
+      o << "    " << name << ": absorbed whatever its size by the free";
+      for (size_t i = 0; i < by.size(); ++i) o << (i ? ", " : " ") << by[i];
+      o << "\n";
+    }
   }
   if (held_out_before) {
     std::snprintf(line, sizeof line, "  baseline held-out chi2 %.1f\n", *held_out_before);

@@ -71,12 +71,20 @@ struct EffectFit {
   // Per effect parameter: the smallest |value| whose signature a
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).
   std::map<std::string, double> minimal_detectable;
+  // Per effect parameter that free baseline parameters absorb whatever its
+  // size (a structural invariance of the effect's fit: a sensor mass and
+  // free m_b, I_by, I_bx, I_bz), those parameters; such a parameter has no
+  // minimal_detectable. An effect whose every sizing parameter is absorbed
+  // (AbsorbedWhole) is never supported: these data cannot show it.
+  std::map<std::string, std::vector<std::string>> absorbed_by;
   // Against the verdict's effect (NaN where there is none): this fit's
   // chi-square minus the verdict's, and the chi-square significant at the
   // report's level on max(|difference in parameters|, 1) degrees of freedom.
   // Below it in magnitude the two are one group.
   double chi2_above_verdict = kNotAvailable;
   double group_threshold = kNotAvailable;
+
+  bool AbsorbedWhole() const;
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -88,6 +96,7 @@ struct EffectFit {
     a->Visit("supported", &supported);
     a->Visit("values", &values);
     a->Visit("minimal_detectable", &minimal_detectable);
+    a->Visit("absorbed_by", &absorbed_by);
     a->Visit("where", &where);
     a->Group("evidence", [&](auto* g) {
       g->Visit("chi2", &chi2);

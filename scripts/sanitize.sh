@@ -60,5 +60,10 @@ long=(
   # Two FRF fits of six starts, each through the modal stage (1 s optimised):
   # FrfStartTest's extraction test and the fits of frf_measurement_test run its paths.
   FrfStartTest.FromInitialValuesScatteredByAFactorThreeTheBestFitIsFound
+  # Diagnoses of FRFs (1.4 and 2.4 s of CPU optimised): AbsorbedBy and BaselineFrom
+  # run under the sanitizers in AnAbsorptionIsSaidOnlyWhereTheDataConfirmIt and
+  # ABaselineStartFromAnAbsorbedSensorMassMovesItIntoTheMasses (0.1 s each).
+  DiagnoseTest.OnFrfsTheFreeMassesAbsorbASensorMassAndTheReportSaysSo
+  DiagnoseTest.OnFrfsALugCouplingIsNamedAboveItsStatedDetectableSizeAndNotBelow
 )
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -E "$(IFS='|'; echo "${long[*]}")"
