@@ -430,7 +430,7 @@ void Conclude(const RigidRingModel& baseline, const Dataset& warm, const Diagnos
   std::string whole;
   for (const EffectFit& f : r->ranking) {
     for (const auto& [name, by] : f.absorbed_by) {
-      whole += std::string(whole.empty() ? "" : ", ") + f.effect->name() + "'s " + name + " (by";
+      whole += (whole.empty() ? "" : ", ") + name + " of " + f.effect->name() + " (by";
       for (size_t i = 0; i < by.size(); ++i) whole += (i ? ", " : " ") + by[i];
       whole += ")";
     }

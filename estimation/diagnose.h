@@ -72,8 +72,9 @@ struct EffectFit {
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).
   std::map<std::string, double> minimal_detectable;
   // Per effect parameter that free baseline parameters absorb whatever its
-  // size (a structural invariance of the effect's fit: a sensor mass and
-  // free m_b, I_by, I_bx, I_bz), those parameters; such a parameter has no
+  // size (a structural invariance of the effect's fit that the data's
+  // Jacobian confirms: a sensor mass on FRFs and free m_b, I_by, I_bx,
+  // I_bz), those parameters (internal::AbsorbedBy); such a parameter has no
   // minimal_detectable. An effect whose every sizing parameter is absorbed
   // (AbsorbedWhole) is never supported: these data cannot show it.
   std::map<std::string, std::vector<std::string>> absorbed_by;

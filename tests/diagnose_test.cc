@@ -366,7 +366,7 @@ TEST(DiagnoseTest, OnFrfsTheFreeMassesAbsorbASensorMassAndTheReportSaysSo) {
   ASSERT_TRUE(sidewall->absorbed_by.count("dk_bz"));
   EXPECT_EQ(sidewall->absorbed_by.at("dk_bz"), std::vector<std::string>{"k_cz"});
   EXPECT_FALSE(sidewall->AbsorbedWhole()) << "dk_bpsi still sizes it";
-  EXPECT_NE(r.explanation.find("sensor_mass's dm (by m_b, I_by, I_bx, I_bz)"), std::string::npos)
+  EXPECT_NE(r.explanation.find("dm of sensor_mass (by m_b, I_by, I_bx, I_bz)"), std::string::npos)
       << r.explanation;
   EXPECT_NE(r.FullReport().find("dm: absorbed whatever its size by the free m_b"),
             std::string::npos);
