@@ -30,18 +30,7 @@ void BenchFrfPage(const BenchFrfReport& report, Page* page) {
                    {"K_cx and sigma_cx both identifiable", NumberCell(v.contact_separated, "%.0f")},
                    {"failed fits", NumberCell(v.failed_fits, "%.0f")},
                    {"seconds per fit", NumberCell(v.seconds_per_fit)}});
-    std::vector<Row> rows;
-    for (const StaticParameter& r : v.parameters) {
-      rows.push_back({TextCell(ToString(r.param)), NumberCell(r.yes, "%.0f"),
-                      NumberCell(r.practically_no, "%.0f"), NumberCell(r.no, "%.0f"),
-                      NumberCell(static_cast<double>(r.intervals), "%.0f"),
-                      PercentCell(r.coverage_95), NumberCell(r.mean_z, "%+.2f"),
-                      NumberCell(r.rms_z, "%.2f")});
-    }
-    page->TableSection("Parameters, " + v.name,
-                       {"parameter", "yes", "practically_no", "no", "intervals",
-                        "95 % coverage (%)", "mean z", "rms z"},
-                       rows);
+    CoverageTable("Parameters, " + v.name, v.parameters, page);
   }
 }
 

@@ -20,16 +20,21 @@ void BenchStaticPage(const BenchStaticReport& report, Page* page) {
              Format(100 * suite.identifiable_share, "%.0f") + " % of the fits has its 95 % "
              "intervals cover the truth in " + Format(100 * low, "%.0f") + "-" +
              Format(100 * high, "%.0f") + " % of them.");
+  CoverageTable("Parameters", suite.parameters, page);
+}
+
+void CoverageTable(const std::string& title, const std::vector<StaticParameter>& parameters,
+                   Page* page) {
   std::vector<Row> rows;
-  for (const StaticParameter& r : suite.parameters) {
+  for (const StaticParameter& r : parameters) {
     rows.push_back({TextCell(ToString(r.param)), NumberCell(r.yes, "%.0f"),
                     NumberCell(r.practically_no, "%.0f"), NumberCell(r.no, "%.0f"),
                     NumberCell(static_cast<double>(r.intervals), "%.0f"),
                     PercentCell(r.coverage_95), NumberCell(r.mean_z, "%+.2f"),
                     NumberCell(r.rms_z, "%.2f")});
   }
-  page->TableSection("Parameters", {"parameter", "yes", "practically_no", "no", "intervals",
-                                    "95 % coverage (%)", "mean z", "rms z"},
+  page->TableSection(title, {"parameter", "yes", "practically_no", "no", "intervals",
+                             "95 % coverage (%)", "mean z", "rms z"},
                      rows);
 }
 

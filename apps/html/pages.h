@@ -24,6 +24,9 @@ void BenchRollingPage(const BenchRollingReport& report, Page* page);
 void BenchSpeedPage(const BenchSpeedReport& report, Page* page);
 void BenchForcesPage(const BenchForcesReport& report, Page* page);
 void BenchStaticPage(const BenchStaticReport& report, Page* page);
+// A row per parameter: its classes, intervals, coverage and z (the static and frf suites).
+void CoverageTable(const std::string& title, const std::vector<StaticParameter>& parameters,
+                   Page* page);
 void BenchFrfPage(const BenchFrfReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
