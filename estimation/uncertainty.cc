@@ -54,11 +54,12 @@ namespace {
 // Ceres' dense-SVD covariance with the null space dropped, from J's SVD:
 // V diag(1 / s_i^2) V^T over the singular values within `tolerance` of the
 // largest (Ceres' min_reciprocal_condition_number is tolerance^2, on s^2).
-// False where it is not finite (J zero).
+// Fewer rows than parameters leave V's last columns without a singular value:
+// null space too. False where it is not finite (J zero).
 bool Covariance(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, double tolerance,
                 Eigen::MatrixXd* covariance) {
   const Eigen::VectorXd& s = svd.singularValues();
-  Eigen::VectorXd inverse_squared = Eigen::VectorXd::Zero(s.size());
+  Eigen::VectorXd inverse_squared = Eigen::VectorXd::Zero(svd.matrixV().cols());
   for (int i = 0; i < s.size(); ++i) {
     if (s[i] / s[0] < tolerance) break;
     inverse_squared[i] = 1.0 / (s[i] * s[i]);

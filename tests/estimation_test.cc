@@ -233,6 +233,43 @@ TEST(IdentifyTest, AnExactlyDeterminedFitSaysItCannotJudgeTheModel) {
   EXPECT_NE(s.fit.verdict.find("cannot say whether the model is right"), std::string::npos);
 }
 
+// One frequency and two free stiffnesses: J is one row j, and the covariance
+// on the determined direction is the pseudo-inverse j^T j / |j|^4 (the fuzzer
+// found the SVD's n - m missing singular values read past their end).
+TEST(IdentifyTest, FewerRowsThanParametersGiveThePseudoInverseOfOneRow) {
+  const Parameters truth = PaperIdentified();
+  std::mt19937_64 rng(5);
+  Dataset d = WellPosed(truth, &rng);
+  d.modes.resize(1);
+  MeasuredMode& m = d.modes.front();
+  m.damping_ratio.reset();
+  m.damping_sigma.reset();
+  m.shape.clear();
+  m.shape_sigma.reset();
+  for (Param p : kFree) {
+    d.known[p] = truth[p];
+    d.initial.erase(p);
+  }
+  for (Param p : {Param::k_bx, Param::k_btheta}) {
+    d.known.erase(p);
+    d.initial[p] = truth[p];
+  }
+  IdentifyOptions o;
+  o.starts = 1;
+  IdentifyResult s;
+  Identify(RigidRingModel(), d, o, &s);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_TRUE(s.uncertainty.ok && s.uncertainty.covariance_ok) << s.uncertainty.covariance_error;
+  ASSERT_EQ(s.uncertainty.structural_directions.cols(), 0);
+  const Eigen::RowVectorXd j = s.uncertainty.jacobian.row(0);
+  ASSERT_EQ(j.size(), 2);
+  ASSERT_GT(j.norm(), 0);
+  const Eigen::MatrixXd expected = j.transpose() * j / std::pow(j.squaredNorm(), 2);
+  EXPECT_EQ(s.uncertainty.rank, 1);
+  EXPECT_LT((s.uncertainty.covariance - expected).norm(), 1e-9 * expected.norm())
+      << s.uncertainty.covariance << "\nexpected\n" << expected;
+}
+
 // A bound that excludes the truth of a well-determined parameter holds it
 // exactly at that bound, flagged, and the report says so.
 TEST(IdentifyTest, AParameterLeftOnABoundIsFlagged) {
