@@ -101,6 +101,16 @@ void BestAssignment(const Eigen::MatrixXd& mac, int row, std::vector<bool>* used
   }
 }
 
+// `at`'s values of `setup`'s free parameters, in its coordinates.
+Eigen::VectorXd InSetup(const ParameterSetup& setup, const std::vector<Parameters>& at,
+                        const Eigen::VectorXd& from) {
+  Eigen::VectorXd x = from;
+  for (int i = 0; i < setup.size(); ++i) {
+    x[i] = setup.ToCoordinate(i, at[std::max(setup.condition_of(i), 0)][setup.free()[i]]);
+  }
+  return x;
+}
+
 }  // namespace
 
 std::vector<std::pair<Dof, double>> ShapeOnCoordinates(const ModalModel& model, const Frf& frf,
@@ -244,7 +254,8 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d) {
 std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Dataset& d,
                                              const ParameterSetup& setup,
                                              const std::vector<std::vector<FrfMode>>& found,
-                                             const Eigen::VectorXd& from) {
+                                             const Eigen::VectorXd& from,
+                                             const std::function<double(const Eigen::VectorXd&)>& frf_cost) {
   if (found.empty()) return std::nullopt;
   Dataset start = d;  // the FRF dataset's initial values at `from`
   std::vector<Parameters> at;
@@ -274,11 +285,39 @@ std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Data
     for (size_t c = 0; c < at.size(); ++c) at[c] = fitted.Decode(r.x.data(), static_cast<int>(c));
   }
   if (!fitted_once) return std::nullopt;
-  Eigen::VectorXd x = from;
-  for (int i = 0; i < setup.size(); ++i) {
-    x[i] = setup.ToCoordinate(i, at[std::max(setup.condition_of(i), 0)][setup.free()[i]]);
+  Eigen::VectorXd best = InSetup(setup, at, from);
+  if (!frf_cost) return best;
+  // Modes without a shape keep the labels of their output MAC, which may not
+  // separate them: each other order of their labels is fitted too, and the
+  // start is the fit whose FRFs fit best.
+  std::vector<size_t> shapeless;
+  for (size_t k = 0; k < modal.modes.size(); ++k) {
+    if (modal.modes[k].shape.empty()) shapeless.push_back(k);
   }
-  return x;
+  if (shapeless.size() < 2 || shapeless.size() > kMaxPermutedLabels) return best;
+  double best_cost = frf_cost(best);
+  std::vector<ModeLabel> labels;
+  for (size_t k : shapeless) labels.push_back(modal.modes[k].label);
+  const std::vector<ModeLabel> first = labels;
+  std::sort(labels.begin(), labels.end());
+  o.starts = 1;  // from `from`: the labels, not the start, are on trial
+  do {
+    if (labels == first) continue;
+    Dataset other = modal;
+    for (size_t k = 0; k < shapeless.size(); ++k) other.modes[shapeless[k]].label = labels[k];
+    Identify(model, other, o, &r);
+    ParameterSetup fitted;
+    if (!r.status.ok() || !ParameterSetup::Build(model, other, &fitted, &why)) continue;
+    std::vector<Parameters> there;
+    for (size_t c = 0; c < at.size(); ++c) there.push_back(fitted.Decode(r.x.data(), static_cast<int>(c)));
+    const Eigen::VectorXd x = InSetup(setup, there, from);
+    const double cost = frf_cost(x);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = x;
+    }
+  } while (std::next_permutation(labels.begin(), labels.end()));
+  return best;
 }
 
 }  // namespace internal

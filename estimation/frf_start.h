@@ -9,6 +9,7 @@
 #define RINGID_ESTIMATION_FRF_START_H_
 
 #include <complex>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -82,11 +83,17 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d);
 // hold (kLabelRounds); the fitted values in `setup`'s coordinates, the mass
 // it held at `from`'s value. None where there are no modes or the modal
 // stage fails.
+// With `frf_cost` (the FRFs' cost at a point in `setup`'s coordinates), the
+// modes the stage fitted without a shape (at most kMaxPermutedLabels) have
+// their labels tried in every order, each fitted, and the start is the fit
+// of the least FRF cost: two lateral sensors do not tell the three
+// out-of-plane modes apart, and their output MAC can label them wrongly.
 inline constexpr int kModalStageStarts = 2;
-std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Dataset& d,
-                                             const ParameterSetup& setup,
-                                             const std::vector<std::vector<FrfMode>>& found,
-                                             const Eigen::VectorXd& from);
+inline constexpr size_t kMaxPermutedLabels = 3;
+std::optional<Eigen::VectorXd> FrfModalStart(
+    const ModalModel& model, const Dataset& d, const ParameterSetup& setup,
+    const std::vector<std::vector<FrfMode>>& found, const Eigen::VectorXd& from,
+    const std::function<double(const Eigen::VectorXd&)>& frf_cost = nullptr);
 
 }  // namespace internal
 }  // namespace ringid

@@ -391,10 +391,15 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   std::vector<LocalFit> fits(n);
   internal::ParallelFor(n, copies.empty() ? 1 : o.threads, [&](int k) {
     Eigen::VectorXd from = plan[k].x;
-    if (const auto modal = internal::FrfModalStart(model, dataset, problem.setup(), found, from)) {
+    const ModalResiduals& mine = copies.empty() ? residuals : copies[k]->residuals();
+    const auto frf_cost = [&](const Eigen::VectorXd& x) {
+      return internal::CostAt(mine, x.cwiseMax(box.lower).cwiseMin(box.upper));
+    };
+    if (const auto modal =
+            internal::FrfModalStart(model, dataset, problem.setup(), found, from, frf_cost)) {
       from = modal->cwiseMax(box.lower).cwiseMin(box.upper);
     }
-    fits[k] = FitLocally(copies.empty() ? residuals : copies[k]->residuals(), o.method, from,
+    fits[k] = FitLocally(mine, o.method, from,
                          box, o.max_iterations, o.simplex, -1, o.stop_chi_square);
   });
   LocalFit best;

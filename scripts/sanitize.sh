@@ -57,9 +57,10 @@ long=(
   SuitesTest.StaticStiffnessesAndModesIdentifyScatteredTiresFromScatteredStarts
   # A noise-free FRF fit (0.5 s optimised): the noisy one beside it runs the same paths.
   FrfMeasurementTest.ANoiseFreeHammerTestGivesTheTruthWithTheMassesFree
-  # Two FRF fits of six starts, each through the modal stage (1 s optimised):
+  # FRF fits of six starts, each through the modal stage (1-2 s optimised):
   # FrfStartTest's extraction test and the fits of frf_measurement_test run its paths.
   FrfStartTest.FromInitialValuesScatteredByAFactorThreeTheBestFitIsFound
+  FrfStartTest.ShapelessModesAreLabelledByTheFrfsSoTheStartsAgree
   # Diagnoses of FRFs (1.4 and 2.4 s of CPU optimised): AbsorbedBy and BaselineFrom
   # run under the sanitizers in AnAbsorptionIsSaidOnlyWhereTheDataConfirmIt and
   # ABaselineStartFromAnAbsorbedSensorMassMovesItIntoTheMasses (0.1 s each).
