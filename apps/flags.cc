@@ -118,6 +118,12 @@ const std::vector<std::string>& SimulateFlags() {
   return flags;
 }
 
+const std::vector<std::string>& ExtractFlags() {
+  static const std::vector<std::string> flags =
+      Joined({"dataset", "output"}, OptionNames(OptionsOf<ExtractSettings>()));
+  return flags;
+}
+
 const std::vector<std::string>& ForcesFlags() {
   static const std::vector<std::string> flags =
       Joined(Joined({"parameters", "dataset"}, OptionNames(OptionsOf<ForcesSettings>())), {"output"});

@@ -57,6 +57,7 @@ const std::vector<std::string>& FitFlags();
 const std::vector<std::string>& PredictFlags();
 const std::vector<std::string>& SimulateFlags();
 const std::vector<std::string>& ForcesFlags();
+const std::vector<std::string>& ExtractFlags();
 
 // "ringid: LINE" on standard error; kExitUsage.
 int Usage(const std::string& line);

@@ -42,6 +42,7 @@
 #include "model/effects.h"
 #include "model/spelling.h"
 #include "model/rigid_ring_model.h"
+#include "operations/extract.h"
 #include "operations/fit.h"
 #include "operations/simulate.h"
 
@@ -160,6 +161,32 @@ int SimulateCommand(int, char**) {
   std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),
               FLAGS_truth.c_str(), EffectList(s.effects).c_str());
   return kExitOk;
+}
+
+int ExtractCommand(int, char**) {
+  std::string error;
+  ExtractSettings settings;
+  if (!ReadSettings(&settings, &error)) return Usage(error);
+  if (FLAGS_dataset.empty() || FLAGS_output.empty()) {
+    return Usage("extract needs --dataset=FRF.json and --output=MODES.json");
+  }
+  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  Extracted x;
+  InputError bad;
+  if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad)) return Usage(bad.line);
+  std::printf("%9s %10s %8s %7s %-22s %s\n", "condition", "Hz", "zeta", "stable", "label", "shape");
+  for (const ExtractedPole& p : x.poles) {
+    std::printf("%9d %10.3f %8.4f %7d %-22s %s\n", p.condition, p.frequency_hz, p.damping_ratio,
+                p.stable_orders, p.label ? LabelName(*p.label) : "(not kept)",
+                !p.label ? "" : p.shape ? "on the model's coordinates" : "none: the outputs do not determine it");
+  }
+  for (const std::string& note : x.notes) std::printf("note: %s\n", note.c_str());
+  const int rc = Write(FLAGS_output, DatasetToJson(x.dataset));
+  if (rc == kExitOk) {
+    std::printf("wrote %s (%zu modes from %s)\n", FLAGS_output.c_str(), x.dataset.modes.size(),
+                FLAGS_dataset.c_str());
+  }
+  return rc;
 }
 
 int DiagnoseCommand(int argc, char** argv) {
@@ -362,6 +389,12 @@ const std::vector<Command>& Commands() {
        "condition's FRFs as the spec lays them out (format 3). With --lug_forces=FILE,\n"
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
        SimulateFlags(), SimulateCommand, "lug_forces"},
+      {"extract", "--dataset=FRF.json --output=MODES.json",
+       "the modes in a dataset's FRFs (pLSCF: stabilisation diagram, physical\n"
+       "poles, LSFD residues) as a modal dataset identify reads, labelled by fit\n"
+       "from the dataset's initial values; masses made known (modes carry no\n"
+       "modal mass)",
+       ExtractFlags(), ExtractCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"

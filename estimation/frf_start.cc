@@ -29,14 +29,17 @@ int Order(FrfQuantity q) { return static_cast<int>(q); }  // displacement 0, vel
 
 // The physical poles of `frf` with their shapes on the outputs (pLSCF and
 // LSFD at their defaults); none where the extraction fails.
-std::vector<FrfMode> ExtractFrfModes(const Frf& frf) {
+std::vector<FrfMode> ExtractFrfModes(const Frf& frf, const PlscfOptions& o, std::string* why) {
   PlscfResult r;
-  ExtractModes(frf, PlscfOptions{}, &r);
+  ExtractModes(frf, o, &r);
   std::vector<FrfMode> out;
-  if (!r.status.ok()) return out;
+  if (!r.status.ok()) {
+    if (why && why->empty()) *why = r.status.message;
+    return out;
+  }
   for (const ExtractedMode& m : r.modes) {
     if (m.shape.size() != static_cast<int>(frf.outputs.size())) continue;
-    out.push_back({m.frequency_hz, m.damping_ratio, m.shape});
+    out.push_back({m.frequency_hz, m.damping_ratio, m.shape, m.stable_orders});
   }
   return out;
 }
@@ -239,12 +242,13 @@ bool ModalStageDataset(const ModalModel& model, const Dataset& d,
   return true;
 }
 
-std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d) {
+std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptions& o,
+                                             std::string* why) {
   std::vector<std::vector<FrfMode>> found(d.conditions.size());
   bool any = false;
   for (size_t c = 0; c < d.conditions.size(); ++c) {
     if (!d.conditions[c].frf) continue;
-    found[c] = ExtractFrfModes(*d.conditions[c].frf);
+    found[c] = ExtractFrfModes(*d.conditions[c].frf, o, why);
     any = any || !found[c].empty();
   }
   if (!any) found.clear();
@@ -255,7 +259,8 @@ std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Data
                                              const ParameterSetup& setup,
                                              const std::vector<std::vector<FrfMode>>& found,
                                              const Eigen::VectorXd& from,
-                                             const std::function<double(const Eigen::VectorXd&)>& frf_cost) {
+                                             const std::function<double(const Eigen::VectorXd&)>& frf_cost,
+                                             Dataset* stage) {
   if (found.empty()) return std::nullopt;
   Dataset start = d;  // the FRF dataset's initial values at `from`
   std::vector<Parameters> at;
@@ -286,6 +291,7 @@ std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Data
   }
   if (!fitted_once) return std::nullopt;
   Eigen::VectorXd best = InSetup(setup, at, from);
+  if (stage) *stage = modal;
   if (!frf_cost) return best;
   // Modes without a shape keep the labels of their output MAC, which may not
   // separate them: each other order of their labels is fitted too, and the
@@ -315,6 +321,7 @@ std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Data
     if (cost < best_cost) {
       best_cost = cost;
       best = x;
+      if (stage) *stage = std::move(other);
     }
   } while (std::next_permutation(labels.begin(), labels.end()));
   return best;

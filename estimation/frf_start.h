@@ -18,6 +18,7 @@
 
 #include "datasets/dataset.h"
 #include "datasets/frf.h"
+#include "estimation/plscf.h"
 #include "model/modal.h"
 #include "model/rigid_ring_model.h"
 
@@ -34,6 +35,7 @@ struct FrfMode {
   double frequency_hz = 0;
   double damping_ratio = 0;
   Eigen::VectorXcd outputs;
+  int stable_orders = 0;  // of the stabilisation diagram (0: not from one)
 };
 
 // A mode's shape is given on the coordinates the outputs determine (those
@@ -74,7 +76,9 @@ bool ModalStageDataset(const ModalModel& model, const Dataset& d,
 
 // The modes each condition's FRFs hold (pLSCF and LSFD at their defaults,
 // estimation/plscf.h), per condition; empty where no condition's FRFs give one.
-std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d);
+// `why` gets the first extraction's failure, where one fails.
+std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptions& o = {},
+                                             std::string* why = nullptr);
 
 // A start for `setup` (of `d`, a dataset with FRFs) from the point `from`:
 // `found` (ModesInFrfs) labelled by the model at `from`, fitted as modal
@@ -88,12 +92,14 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d);
 // their labels tried in every order, each fitted, and the start is the fit
 // of the least FRF cost: two lateral sensors do not tell the three
 // out-of-plane modes apart, and their output MAC can label them wrongly.
+// `stage`, where given, gets the modal dataset of the fit returned.
 inline constexpr int kModalStageStarts = 2;
 inline constexpr size_t kMaxPermutedLabels = 3;
 std::optional<Eigen::VectorXd> FrfModalStart(
     const ModalModel& model, const Dataset& d, const ParameterSetup& setup,
     const std::vector<std::vector<FrfMode>>& found, const Eigen::VectorXd& from,
-    const std::function<double(const Eigen::VectorXd&)>& frf_cost = nullptr);
+    const std::function<double(const Eigen::VectorXd&)>& frf_cost = nullptr,
+    Dataset* stage = nullptr);
 
 }  // namespace internal
 }  // namespace ringid

@@ -265,7 +265,7 @@ const std::vector<OptionInfo>& EveryOption() {
     std::vector<OptionInfo> all;
     for (const auto& list : {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(),
                              OptionsOf<PredictSettings>(), OptionsOf<SimulateSettings>(),
-                             OptionsOf<ForcesSettings>()}) {
+                             OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>()}) {
       for (const OptionInfo& o : list) {
         if (!FindIn(all, o.name)) all.push_back(o);
       }

@@ -22,6 +22,7 @@
 #include "datasets/synthetic.h"
 #include "estimation/diagnose.h"
 #include "estimation/identify.h"
+#include "estimation/plscf.h"
 #include "model/effects.h"
 #include "model/parameters.h"
 
@@ -135,6 +136,18 @@ struct DiagnoseSettings {
     a->Visit("level", &level,
              "significance level of each effect's likelihood-ratio test and of the verdict's "
              "group (the default is Bonferroni-safe for six candidates)");
+  }
+};
+
+// extract.
+struct ExtractSettings {
+  int max_model_order = PlscfOptions{}.max_order;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("max_model_order", &max_model_order,
+             "extract: the highest order of pLSCF's matrix-fraction model (each order gives "
+             "inputs x order poles); the stabilisation diagram runs from 1 to it");
   }
 };
 

@@ -25,7 +25,7 @@ using testing::SourcePath;
 
 std::vector<std::vector<OptionInfo>> Lists() {
   return {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(), OptionsOf<PredictSettings>(),
-          OptionsOf<SimulateSettings>(), OptionsOf<ForcesSettings>()};
+          OptionsOf<SimulateSettings>(), OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>()};
 }
 
 // An option several operations take is one flag: one kind, default and
