@@ -11,17 +11,22 @@ namespace ringid {
 
 bool ExtractDataset(const std::string& path, const ExtractSettings& s, Extracted* out,
                     InputError* error) {
+  Dataset d;
+  LoadError load;
+  if (!LoadDataset(path, &d, &load)) {
+    *error = InputError::Of(load);
+    return false;
+  }
+  return ExtractDataset(d, path, s, out, error);
+}
+
+bool ExtractDataset(const Dataset& d, const std::string& path, const ExtractSettings& s,
+                    Extracted* out, InputError* error) {
   PlscfOptions plscf;
   plscf.max_order = s.max_model_order;
   std::string why;
   if (!plscf.IsValid(&why)) {
     *error = InputError::Option("--max_model_order: " + why);
-    return false;
-  }
-  Dataset d;
-  LoadError load;
-  if (!LoadDataset(path, &d, &load)) {
-    *error = InputError::Of(load);
     return false;
   }
   const auto refuse = [&](const std::string& field, const std::string& message) {

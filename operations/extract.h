@@ -43,6 +43,9 @@ struct Extracted {
 // False with the error: a dataset without FRFs, or FRFs without a mode.
 bool ExtractDataset(const std::string& path, const ExtractSettings& s, Extracted* out,
                     InputError* error);
+// The same of a dataset read from `source` (its errors name it).
+bool ExtractDataset(const Dataset& d, const std::string& source, const ExtractSettings& s,
+                    Extracted* out, InputError* error);
 
 }  // namespace ringid
 

@@ -17,6 +17,7 @@
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "estimation/interrupt.h"
+#include "operations/extract.h"
 #include "operations/files.h"
 #include "operations/fit.h"
 #include "operations/forces.h"
@@ -294,6 +295,21 @@ std::shared_ptr<SimulateHeld> SimulatePy(py::handle parameters, py::handle outpu
   return held;
 }
 
+std::shared_ptr<Extracted> ExtractPy(py::handle dataset, const py::kwargs& kw) {
+  std::vector<std::string> argv;
+  const ExtractSettings s = ReadOptions<ExtractSettings>("extract", kw, &argv);
+  const auto loaded = DatasetArg(dataset);
+  auto held = std::make_shared<Extracted>();
+  InputError error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = ExtractDataset(loaded->dataset, loaded->Name(), s, held.get(), &error);
+  }
+  if (!ok) throw Error::Of(error);
+  return held;
+}
+
 // "signature\n\nwhat\n\nKeyword arguments ...": the options of S.
 template <class S>
 std::string Doc(const std::string& signature, const std::string& what) {
@@ -348,7 +364,35 @@ void BindSimulate(py::module_& m) {
          "lug_forces: the response dataset to output=).");
 }
 
+void BindExtract(py::module_& m) {
+  py::class_<Extracted, std::shared_ptr<Extracted>>(
+      m, "ExtractResult", "What ringid.extract returns: the modal dataset and every pole found.")
+      .def_property_readonly("dataset", [](const Extracted& x) {
+        auto d = std::make_shared<LoadedDataset>();
+        d->dataset = x.dataset;
+        return d;
+      }, "The modes as a ringid.Dataset, for identify and the others.")
+      .def_property_readonly("poles", [](const Extracted& x) {
+        py::list out;
+        for (const ExtractedPole& p : x.poles) {
+          py::dict d;
+          d["condition"] = p.condition;
+          d["frequency_hz"] = p.frequency_hz;
+          d["damping_ratio"] = p.damping_ratio;
+          d["stable_orders"] = p.stable_orders;
+          d["label"] = p.label ? py::object(py::str(LabelName(*p.label))) : py::object(py::none());
+          d["shape"] = p.shape;
+          out.append(d);
+        }
+        return out;
+      }, "Every physical pole of every condition: condition, frequency_hz, damping_ratio, "
+         "stable_orders, label (None where not kept) and shape (whether the outputs gave one).")
+      .def_property_readonly("notes", [](const Extracted& x) { return x.notes; },
+                             "What the dataset assumes (the masses made known, no sigma).");
+}
+
 void BindOperations(py::module_& m) {
+  BindExtract(m);
   const std::string dataset_arg =
       "dataset: a path, a dict (the file's JSON) or a ringid.Dataset; raises ringid.Error on "
       "bad input, as `ringid` exits 2.";
@@ -399,6 +443,11 @@ void BindOperations(py::module_& m) {
             "writes (simulated.json and simulated_truth.json when not given). With lug_forces=, "
             "the axle's response to those lug forces at speeds= instead, a ResponseDataset "
             "(output= simulated_response.json when not given; no truth).").c_str());
+  m.def("extract", &ExtractPy, py::arg("dataset"),
+        Doc<ExtractSettings>("extract(dataset, **options) -> ExtractResult",
+                             "The modes in a dataset's FRFs as a modal dataset, labelled by fit "
+                             "from its initial values, masses made known: `ringid extract`. " +
+                                 dataset_arg).c_str());
   m.def("forces", &ForcesPy, py::arg("parameters"), py::arg("dataset"),
         Doc<ForcesSettings>(
             "forces(parameters, dataset, **options) -> ForcesResult",

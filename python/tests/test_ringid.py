@@ -369,6 +369,36 @@ class WhatTheModuleLacked(ReportTestCase):
                 ringid.simulate(CAR_TIRE, output=output, truth=truth, frf=spec_path, speeds=[0, 10])
             self.assertIn(spec_path + ": inputs[0].on: ", str(refused.exception))
 
+    def test_extract_equals_the_command_line_and_its_modes_are_the_models(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            with open(HAMMER_SPEC) as f:
+                spec = json.load(f)
+            spec["lines_hz"] = {"from": 5, "to": 250, "step": 1}
+            spec["noise"] = 0
+            spec_path = written(scratch, "spec.json", json.dumps(spec))
+            frfs = os.path.join(scratch, "frfs.json")
+            ringid.simulate(CAR_TIRE, output=frfs, truth=os.path.join(scratch, "t.json"),
+                            frf=spec_path).write()
+            modes = os.path.join(scratch, "modes.json")
+            done = subprocess.run([BINARY, "extract", "--dataset=" + frfs, "--output=" + modes],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(modes) as f:
+                cli = json.load(f)
+            x = ringid.extract(frfs)
+            self.assertEqual(x.dataset.to_dict(), cli)
+            # Noise-free FRFs: each labelled mode at the model's frequency at the truth.
+            model = ringid.predict(CAR_TIRE).to_dict()["modes"]
+            truth_hz = {m["label"]: m["model_hz"] for m in model}
+            self.assertEqual(cli["format"], "ringid-dataset/3")
+            self.assertEqual(len(cli["conditions"][0]["modes"]), 7)
+            for m in cli["conditions"][0]["modes"]:
+                self.assertAlmostEqual(m["frequency_hz"] / truth_hz[m["label"]], 1, delta=1e-6)
+            self.assertEqual([p["label"] is not None for p in x.poles], [True] * 7)
+            with self.assertRaises(ringid.Error) as refused:
+                ringid.extract(TABLE1)
+            self.assertIn(TABLE1 + ": conditions: no condition has an frf block", str(refused.exception))
+
     def test_simulate_with_lug_forces_equals_the_command_line_and_forces_recover_them(self):
         with tempfile.TemporaryDirectory() as scratch:
             lugs, out = os.path.join(scratch, "lugs.json"), os.path.join(scratch, "response.json")
