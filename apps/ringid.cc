@@ -171,9 +171,13 @@ int ExtractCommand(int, char**) {
     return Usage("extract needs --dataset=FRF.json and --output=MODES.json");
   }
   if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
-  Extracted x;
+  ExtractResult x;
   InputError bad;
-  if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad)) return Usage(bad.line);
+  if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad)) {
+    if (x.status.invalid_input()) return Usage(bad.line);
+    std::fprintf(stderr, "ringid: extract: %s\n", bad.line.c_str());
+    return kExitFailure;
+  }
   std::printf("%9s %10s %8s %7s %-22s %s\n", "condition", "Hz", "zeta", "stable", "label", "shape");
   for (const ExtractedPole& p : x.poles) {
     std::printf("%9d %10.3f %8.4f %7d %-22s %s\n", p.condition, p.frequency_hz, p.damping_ratio,

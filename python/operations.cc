@@ -295,17 +295,18 @@ std::shared_ptr<SimulateHeld> SimulatePy(py::handle parameters, py::handle outpu
   return held;
 }
 
-std::shared_ptr<Extracted> ExtractPy(py::handle dataset, const py::kwargs& kw) {
+std::shared_ptr<ExtractResult> ExtractPy(py::handle dataset, const py::kwargs& kw) {
   std::vector<std::string> argv;
   const ExtractSettings s = ReadOptions<ExtractSettings>("extract", kw, &argv);
   const auto loaded = DatasetArg(dataset);
-  auto held = std::make_shared<Extracted>();
+  auto held = std::make_shared<ExtractResult>();
   InputError error;
   bool ok = false;
   {
     py::gil_scoped_release release;
     ok = ExtractDataset(loaded->dataset, loaded->Name(), s, held.get(), &error);
   }
+  if (!ok && !held->status.invalid_input()) throw Error::Usage("extract: " + error.line);
   if (!ok) throw Error::Of(error);
   return held;
 }
@@ -365,14 +366,14 @@ void BindSimulate(py::module_& m) {
 }
 
 void BindExtract(py::module_& m) {
-  py::class_<Extracted, std::shared_ptr<Extracted>>(
+  py::class_<ExtractResult, std::shared_ptr<ExtractResult>>(
       m, "ExtractResult", "What ringid.extract returns: the modal dataset and every pole found.")
-      .def_property_readonly("dataset", [](const Extracted& x) {
+      .def_property_readonly("dataset", [](const ExtractResult& x) {
         auto d = std::make_shared<LoadedDataset>();
         d->dataset = x.dataset;
         return d;
       }, "The modes as a ringid.Dataset, for identify and the others.")
-      .def_property_readonly("poles", [](const Extracted& x) {
+      .def_property_readonly("poles", [](const ExtractResult& x) {
         py::list out;
         for (const ExtractedPole& p : x.poles) {
           py::dict d;
@@ -387,7 +388,7 @@ void BindExtract(py::module_& m) {
         return out;
       }, "Every physical pole of every condition: condition, frequency_hz, damping_ratio, "
          "stable_orders, label (None where not kept) and shape (whether the outputs gave one).")
-      .def_property_readonly("notes", [](const Extracted& x) { return x.notes; },
+      .def_property_readonly("notes", [](const ExtractResult& x) { return x.notes; },
                              "What the dataset assumes (the masses made known, no sigma).");
 }
 

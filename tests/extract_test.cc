@@ -42,7 +42,7 @@ TEST(ExtractTest, NoiseFreeFrfsGiveTheModelsModesLabelledAsTheModelLabelsThem) {
   std::mt19937_64 rng(2);
   const Parameters truth = ScatteredTire(&rng);
   const std::string path = HammerFile(truth, 0, 1.2, &rng, "extract_noise_free.json");
-  Extracted x;
+  ExtractResult x;
   InputError error;
   ASSERT_TRUE(ExtractDataset(path, ExtractSettings{}, &x, &error)) << error.line;
   const ModalSolution s = RigidRingModel().Solve(truth);
@@ -79,7 +79,7 @@ TEST(ExtractTest, ExtractThenIdentifyWithTheMassesWeighedRecoversTheTruth) {
   std::mt19937_64 rng(3);
   const Parameters truth = ScatteredTire(&rng);
   const std::string path = HammerFile(truth, 0, 1.0, &rng, "extract_two_step.json");
-  Extracted x;
+  ExtractResult x;
   InputError error;
   ASSERT_TRUE(ExtractDataset(path, ExtractSettings{}, &x, &error)) << error.line;
   const std::string modes = testing::Scratch("extract_two_step_modes.json");

@@ -1,0 +1,53 @@
+// The modes in a dataset's FRFs as a modal dataset that identify reads
+// (issue 37): each condition's physical poles (estimation/plscf.h), labelled
+// by fit from the dataset's initial values as the modal stage of a fit to
+// FRFs labels them (estimation/frf_start.h), so that the modal and the FRF
+// routes start from the same measurements.
+#ifndef RINGID_ESTIMATION_EXTRACT_H_
+#define RINGID_ESTIMATION_EXTRACT_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "datasets/dataset.h"
+#include "estimation/plscf.h"
+#include "estimation/status.h"
+#include "model/modal.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid {
+
+// A physical pole of a condition's FRFs.
+struct ExtractedPole {
+  int condition = 0;
+  double frequency_hz = 0;  // damped (contract §2)
+  double damping_ratio = 0;
+  int stable_orders = 0;    // orders of the stabilisation diagram that hold it
+  // Its label where it went into the dataset (the model has seven modes per
+  // condition: the strongest are kept), and whether the outputs gave it a
+  // shape on the model's coordinates.
+  std::optional<ModeLabel> label;
+  bool shape = false;
+};
+
+struct ExtractResult {
+  Status status;
+  Dataset dataset;  // the modes, the FRF dataset's conditions, known, initial, ties
+  std::vector<ExtractedPole> poles;  // every condition's, ascending frequency in each
+  std::vector<std::string> notes;    // what the dataset assumes
+};
+
+// The modes in d's FRFs under `plscf`: each condition's physical poles, the
+// strongest (as many as the model has) labelled by fit from d's initial
+// values (the modal stage, its labels tried in every order where the outputs
+// give no shape) with their shapes where the outputs determine them; the FRF
+// blocks dropped, the masses and inertias made known at their initial values
+// (modes carry no modal mass). Invalid input: bad options, no frf block, no
+// physical pole; failed: the model pairs none of them or its fit fails.
+void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfOptions& plscf,
+                         ExtractResult* r);
+
+}  // namespace ringid
+
+#endif  // RINGID_ESTIMATION_EXTRACT_H_
