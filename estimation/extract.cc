@@ -1,12 +1,47 @@
 #include "estimation/extract.h"
 
 #include <algorithm>
+#include <cstdio>
 
-#include "estimation/fit.h"
+#include "datasets/pairing.h"
 #include "estimation/frf_start.h"
+#include "estimation/identify.h"
 #include "estimation/problem.h"
+#include "estimation/setup.h"
 
 namespace ringid {
+namespace {
+
+// The modes of `modal` relabelled by the model at the parameters `fit`
+// found for d's FRFs (datasets/pairing.h: shapes by MAC, the rest by
+// frequency). The modal stage's labels of modes without a shape are only a
+// start's: near the optimum the model may name those modes otherwise.
+bool RelabelAtFit(const ModalModel& model, const Dataset& d, const internal::ParameterSetup& setup,
+                  const Eigen::VectorXd& fit, Dataset* modal) {
+  for (int c = 0; c < static_cast<int>(d.conditions.size()); ++c) {
+    std::vector<MeasuredMode*> in;
+    for (MeasuredMode& m : modal->modes) {
+      if (m.condition == c) in.push_back(&m);
+    }
+    if (in.empty()) continue;
+    const ModalSolution s = model.Solve(setup.Decode(fit.data(), c), d.conditions[c].speed_m_s);
+    if (!s.ok) return false;
+    std::vector<internal::ModeToPair> measured;
+    for (const MeasuredMode* m : in) measured.push_back({m->frequency_hz, &m->shape, std::nullopt});
+    std::vector<const Mode*> modes;
+    for (const Mode& m : s.modes) modes.push_back(&m);
+    std::vector<int> pick;
+    std::vector<internal::PairedBy> by;
+    std::string why;
+    if (!internal::PairModes(measured, modes, ShapeConvention::kContract, &pick, &by, &why)) {
+      return false;
+    }
+    for (size_t k = 0; k < in.size(); ++k) in[k]->label = modes[pick[k]]->label;
+  }
+  return true;
+}
+
+}  // namespace
 
 void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfOptions& plscf,
                          ExtractResult* r) {
@@ -34,15 +69,29 @@ void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfO
     r->status = status;
     return;
   }
-  const auto frf_cost = [&](const Eigen::VectorXd& x) {
-    return internal::CostAt(problem->residuals(), x);
-  };
-  if (!internal::FrfModalStart(model, d, problem->setup(), found, problem->start(), frf_cost,
-                               &r->dataset)) {
-    r->status = Status::Failed("the extracted modes could not be labelled: the model at the "
-                               "initial values pairs none of them, or its fit failed");
+  // Named as the model names them at the fit to the FRFs (the direct route,
+  // identify's default starts), where the FRFs fix every parameter: the
+  // modal stage's names of modes without a shape are only a start's.
+  IdentifyResult fit;
+  Identify(*problem, IdentifyOptions{}, &fit);
+  if (!fit.status.ok()) {
+    r->status = Status::Failed("the fit to the FRFs that names the modes failed: " + fit.status.message);
     return;
   }
+  std::vector<Parameters> at;
+  for (int c = 0; c < static_cast<int>(d.conditions.size()); ++c) {
+    at.push_back(problem->setup().Decode(fit.x.data(), c));
+  }
+  if (!internal::ModalStageDataset(model, d, found, at, &r->dataset, &why) ||
+      !RelabelAtFit(model, d, problem->setup(), fit.x, &r->dataset)) {
+    r->status = Status::Failed("the model at the fit to the FRFs pairs none of the extracted "
+                               "modes" + (why.empty() ? std::string() : ": " + why));
+    return;
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "labelled by the model at the fit to the FRFs (chi-square "
+                "%.6g on %d degrees of freedom)", fit.fit.chi_square, fit.fit.degrees_of_freedom);
+  r->notes.push_back(line);
   // Modes carry no modal mass: the masses and inertias are held where they are.
   std::string held;
   for (int i = 0; i < kNumParams; ++i) {

@@ -882,7 +882,7 @@ TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
                     "--speeds=TEXT  (default '0')"}},
       {"diagnose", {"--effects=LIST", "--jobs=N  (default 1)", "--shard=TEXT  (default '0/1')",
                     "--level=X  (default 0.001)"}},
-      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling|speed|forces|static|frf  (default none)",
+      {"bench", {"--suite=paper|synthetic|conditioning|diagnosis|rolling|speed|forces|static|frf|extract  (default none)",
                  "--replicates=N  (default 200)"}},
       {"report", {"--input=TEXT", "--figures_dir=TEXT"}},
       {"export", {"--parameters=TEXT  (default none)", "--set=TEXT",

@@ -30,6 +30,7 @@
 #include "tests/browser_check.h"
 #include "apps/html/pages.h"
 #include "report/report.h"
+#include "validation/extract_suite.h"
 #include "validation/suites.h"
 #include "tests/test_support.h"
 
@@ -315,6 +316,27 @@ Made BenchFrf() {
   }
   const std::string path = Scratch("bench_frf.json");
   std::ofstream(path) << ringid::ReportText(ringid::BenchFrfReport{{}, suite});
+  return Render(path);
+}
+
+// The extract suite fits every tire's FRFs to name its modes (seconds each);
+// a report of its kind, two tires per variant, written as the suite writes it.
+Made BenchExtract() {
+  ringid::ExtractSuite suite;
+  suite.start_factor = 3;
+  suite.frf_noise = 0.02;
+  for (const char* name : {"standing", "close_pair"}) {
+    ringid::ExtractVariant v;
+    v.name = name;
+    v.tires = 2;
+    v.modes = v.found = v.frequency_within = v.damping_within = 14;
+    v.worst_frequency = 0.004;
+    v.worst_damping = 0.08;
+    v.seconds_per_tire = 3.5;
+    suite.variants.push_back(v);
+  }
+  const std::string path = Scratch("bench_extract.json");
+  std::ofstream(path) << ringid::ReportText(ringid::BenchExtractReport{{}, suite});
   return Render(path);
 }
 
@@ -1181,7 +1203,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"bench_speed", BenchSpeed},
                       Kind{"bench_forces", [] { return Bench("forces"); }},
                       Kind{"bench_static", [] { return Bench("static"); }},
-                      Kind{"bench_frf", BenchFrf}),
+                      Kind{"bench_frf", BenchFrf},
+                      Kind{"bench_extract", BenchExtract}),
     [](const ::testing::TestParamInfo<Kind>& info) { return std::string(info.param.name); });
 
 // A page of one figure: Table 1 identified (frequencies only: no shape for

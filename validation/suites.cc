@@ -1,5 +1,7 @@
 #include "validation/suites.h"
 
+#include "validation/extract_suite.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -367,6 +369,9 @@ const std::vector<SuiteEntry>& Suites() {
        }},
       {"frf", [](const SuiteOptions& o, const Provenance& p) {
          return Output<BenchFrfReport>(RunFrfSuite, o, p);
+       }},
+      {"extract", [](const SuiteOptions& o, const Provenance& p) {
+         return Output<BenchExtractReport>(RunExtractSuite, o, p);
        }},
   };
   return suites;

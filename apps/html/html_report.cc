@@ -54,6 +54,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kBenchForces, Typed<BenchForcesReport, html::BenchForcesPage>},
     {ReportKind::kBenchStatic, Typed<BenchStaticReport, html::BenchStaticPage>},
     {ReportKind::kBenchFrf, Typed<BenchFrfReport, html::BenchFrfPage>},
+    {ReportKind::kBenchExtract, Typed<BenchExtractReport, html::BenchExtractPage>},
 };
 
 // The page of `report`; false with "FIELD: message" when it does not read.

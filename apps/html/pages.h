@@ -5,6 +5,7 @@
 
 #include "apps/html/page.h"
 #include "report/report.h"
+#include "validation/extract_suite.h"
 #include "validation/suites.h"
 
 namespace ringid::html {
@@ -28,6 +29,7 @@ void BenchStaticPage(const BenchStaticReport& report, Page* page);
 void CoverageTable(const std::string& title, const std::vector<StaticParameter>& parameters,
                    Page* page);
 void BenchFrfPage(const BenchFrfReport& report, Page* page);
+void BenchExtractPage(const BenchExtractReport& report, Page* page);
 
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);

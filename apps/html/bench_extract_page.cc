@@ -1,0 +1,35 @@
+// The page of `ringid bench --suite=extract`: the criteria, and per variant
+// the modes found and labelled and how close their values came.
+#include "apps/html/pages.h"
+#include "apps/html/text.h"
+
+namespace ringid::html {
+
+void BenchExtractPage(const BenchExtractReport& report, Page* page) {
+  const ExtractSuite& suite = report.body;
+  page->Summary({{"initial values within a factor of the truth", NumberCell(suite.start_factor, "%g")},
+                 {"FRF noise (relative sd)", NumberCell(suite.frf_noise)},
+                 {"lines every (Hz)", NumberCell(suite.line_step_hz, "%g")},
+                 {"pass", YesNoCell(suite.Pass())}});
+  page->Note("Criteria: every mode of the model at the truth found and labelled as the model "
+             "labels it, its frequency within " + Format(100 * suite.frequency_tolerance, "%g") +
+             " % and its damping ratio within " + Format(100 * suite.damping_tolerance, "%g") +
+             " % (relative). close_pair: the camber mode " + Format(suite.pair_gap_hz, "%g") +
+             " Hz below the vertical one, both at damping ratio " +
+             Format(suite.pair_damping, "%g") + ".");
+  for (const std::string& f : suite.Failing()) page->Note("Failing: " + f);
+  for (const ExtractVariant& v : suite.variants) {
+    page->Summary({{"variant", TextCell(v.name)},
+                   {"tires", NumberCell(v.tires, "%.0f")},
+                   {"modes at the truth", NumberCell(v.modes, "%.0f")},
+                   {"found and labelled", NumberCell(v.found, "%.0f")},
+                   {"frequency within the tolerance", NumberCell(v.frequency_within, "%.0f")},
+                   {"damping ratio within the tolerance", NumberCell(v.damping_within, "%.0f")},
+                   {"worst frequency error (%)", PercentCell(v.worst_frequency)},
+                   {"worst damping-ratio error (%)", PercentCell(v.worst_damping)},
+                   {"failed extractions", NumberCell(v.failed, "%.0f")},
+                   {"seconds per tire", NumberCell(v.seconds_per_tire)}});
+  }
+}
+
+}  // namespace ringid::html

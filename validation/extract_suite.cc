@@ -1,0 +1,186 @@
+// The extract suite (validation/extract_suite.h).
+#include "validation/extract_suite.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "datasets/synthetic.h"
+#include "estimation/extract.h"
+
+namespace ringid {
+namespace {
+
+const Mode* WithLabel(const ModalSolution& s, ModeLabel label) {
+  for (const Mode& m : s.modes) {
+    if (m.label == label) return &m;
+  }
+  return nullptr;
+}
+
+// ScatteredTire with its masses and inertias scattered as its stiffnesses.
+Parameters RandomMassTire(std::mt19937_64* rng) {
+  Parameters p = ScatteredTire(rng);
+  std::normal_distribution<double> normal(0, 1);
+  for (int i = 0; i < kNumParams; ++i) {
+    const Param q = ParamAt(i);
+    if (IsMassOrInertia(q) && p.IsSet(q)) p[q] *= std::exp(kTireSpread * normal(*rng));
+  }
+  p[Param::I_bz] = p[Param::I_bx];  // a ring
+  return p;
+}
+
+// One tire's hammer test, its initial values within start_factor; false
+// where its truth cannot be simulated.
+bool HammerTire(const Parameters& truth, const ExtractSuite& suite, std::mt19937_64* rng,
+                Dataset* d, std::string* why) {
+  *d = PlanSimulation(truth, 0, {0}, {}, rng);
+  FreeMasses(truth, 0, rng, d);
+  d->conditions[0].frf = HammerTest(0.31, 5, 250, suite.line_step_hz);
+  SimulateOptions so;
+  so.modes = false;
+  so.frf_noise = suite.frf_noise;
+  if (!Simulate(RigidRingModel(), truth, so, rng, d, why)) return false;
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (auto& [q, v] : d->initial) v = truth[q] * std::pow(suite.start_factor, uniform(*rng));
+  return true;
+}
+
+// The extraction of one tire against the model's modes at its truth.
+void Score(const ExtractSuite& suite, const Parameters& truth, const ExtractResult& r,
+           ExtractVariant* v) {
+  const ModalSolution s = RigidRingModel().Solve(truth);
+  for (const Mode& m : s.modes) {
+    ++v->modes;
+    for (const MeasuredMode& x : r.dataset.modes) {
+      if (x.label != m.label) continue;
+      ++v->found;
+      const double df = std::abs(x.frequency_hz / m.frequency_hz - 1);
+      const double dz = x.damping_ratio ? std::abs(*x.damping_ratio / m.damping_ratio - 1) : INFINITY;
+      v->frequency_within += df <= suite.frequency_tolerance;
+      v->damping_within += dz <= suite.damping_tolerance;
+      v->worst_frequency = std::max(v->worst_frequency, df);
+      v->worst_damping = std::max(v->worst_damping, dz);
+    }
+  }
+}
+
+Status RunVariant(const SuiteOptions& o, bool close_pair, ExtractSuite* suite, ExtractVariant* v,
+                  std::mt19937_64* rng, int* done, int total) {
+  double seconds = 0;
+  for (int k = 0; k < o.replicates; ++k) {
+    Parameters truth;
+    Dataset d;
+    std::string why;
+    for (int draw = 0;; ++draw) {
+      truth = RandomMassTire(rng);
+      if ((!close_pair || CloseCamberAndVertical(suite->pair_gap_hz, suite->pair_damping, &truth)) &&
+          HammerTire(truth, *suite, rng, &d, &why)) {
+        break;
+      }
+      if (draw == 100) return Status::Failed("no plausible tire in 100 draws: " + why);
+    }
+    d.name = v->name + "_" + std::to_string(k);
+    if (close_pair) {
+      const ModalSolution s = RigidRingModel().Solve(truth);
+      v->pair_separation_hz = WithLabel(s, ModeLabel::kVertical)->frequency_hz -
+                              WithLabel(s, ModeLabel::kCamber)->frequency_hz;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    ExtractResult r;
+    ExtractModalDataset(RigidRingModel(), d, PlscfOptions{}, &r);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++v->tires;
+    if (r.status.ok()) Score(*suite, truth, r, v);
+    else ++v->failed;
+    if (o.on_case) o.on_case(++*done, total);
+  }
+  v->seconds_per_tire = v->tires ? seconds / v->tires : NAN;
+  return Status::Success();
+}
+
+std::string Count(int n, int of) { return std::to_string(n) + " of " + std::to_string(of); }
+
+}  // namespace
+
+bool CloseCamberAndVertical(double gap_hz, double zeta, Parameters* p) {
+  for (int step = 0; step < 50; ++step) {
+    const ModalSolution s = RigidRingModel().Solve(*p);
+    if (!s.ok) return false;
+    const Mode* camber = WithLabel(s, ModeLabel::kCamber);
+    const Mode* vertical = WithLabel(s, ModeLabel::kVertical);
+    if (!camber || !vertical) return false;
+    const double target = vertical->frequency_hz - gap_hz;
+    if (std::abs(camber->frequency_hz - target) < 1e-6 * target &&
+        std::abs(camber->damping_ratio - zeta) < 1e-6 && std::abs(vertical->damping_ratio - zeta) < 1e-6) {
+      return true;
+    }
+    if (!(target > 0)) return false;
+    (*p)[Param::k_bgamma] *= std::pow(target / camber->frequency_hz, 2);
+    (*p)[Param::k_bpsi] = (*p)[Param::k_bgamma];
+    (*p)[Param::c_bgamma] *= zeta / camber->damping_ratio;
+    (*p)[Param::c_bpsi] = (*p)[Param::c_bgamma];
+    (*p)[Param::c_bz] *= zeta / vertical->damping_ratio;
+    (*p)[Param::c_bx] = (*p)[Param::c_bz];
+  }
+  return false;
+}
+
+Status RunExtractSuite(const SuiteOptions& o, ExtractSuite* suite) {
+  if (o.replicates < 1) return Status::InvalidInput("replicates: must be at least 1");
+  if (!(o.start_factor >= 1)) return Status::InvalidInput("start_factor: must be at least 1");
+  const auto start = std::chrono::steady_clock::now();
+  suite->start_factor = o.start_factor;
+  suite->frf_noise = SimulateOptions{}.frf_noise;
+  std::mt19937_64 rng(o.seed);
+  int done = 0;
+  for (const bool close_pair : {false, true}) {
+    ExtractVariant v;
+    v.name = close_pair ? "close_pair" : "standing";
+    const Status s = RunVariant(o, close_pair, suite, &v, &rng, &done, 2 * o.replicates);
+    if (!s.ok()) return s;
+    suite->variants.push_back(std::move(v));
+  }
+  suite->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Success();
+}
+
+std::vector<std::string> ExtractSuite::Failing() const {
+  std::vector<std::string> out;
+  for (const ExtractVariant& v : variants) {
+    const std::string at = v.name + ": ";
+    if (v.failed > 0) out.push_back(at + std::to_string(v.failed) + " extractions failed");
+    if (v.found < v.modes) out.push_back(at + "modes found and labelled: " + Count(v.found, v.modes));
+    if (v.frequency_within < v.modes) {
+      out.push_back(at + "frequencies within tolerance: " + Count(v.frequency_within, v.modes));
+    }
+    if (v.damping_within < v.modes) {
+      out.push_back(at + "damping ratios within tolerance: " + Count(v.damping_within, v.modes));
+    }
+  }
+  return out;
+}
+
+std::string ExtractSuite::Markdown() const {
+  std::ostringstream o;
+  o << "| variant | tires | modes | found and labelled | f within " << 100 * frequency_tolerance
+    << " % | zeta within " << 100 * damping_tolerance
+    << " % | worst f error | worst zeta error | s per tire |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const ExtractVariant& v : variants) {
+    char line[300];
+    std::snprintf(line, sizeof line, "| %s | %d | %d | %d | %d | %d | %.3g %% | %.3g %% | %.2f |\n",
+                  v.name.c_str(), v.tires, v.modes, v.found, v.frequency_within, v.damping_within,
+                  100 * v.worst_frequency, 100 * v.worst_damping, v.seconds_per_tire);
+    o << line;
+  }
+  o << "\nclose_pair: the camber mode " << pair_gap_hz << " Hz below the vertical one, both at zeta "
+    << pair_damping << "; " << 100 * frf_noise << " % noise, lines every " << line_step_hz
+    << " Hz; initial values within a factor " << start_factor << "; pass: " << (Pass() ? "yes" : "no")
+    << "\n";
+  for (const std::string& f : Failing()) o << "- " << f << "\n";
+  return o.str();
+}
+
+}  // namespace ringid

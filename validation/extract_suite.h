@@ -1,0 +1,96 @@
+// The extract suite (issue 37): synthetic standing hammer tests of scattered
+// tires, their modes extracted from the FRFs (estimation/extract.h) and
+// compared with the model's at the truth, label by label.
+#ifndef RINGID_VALIDATION_EXTRACT_SUITE_H_
+#define RINGID_VALIDATION_EXTRACT_SUITE_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report/report.h"
+#include "validation/suites.h"
+
+namespace ringid {
+
+// Per variant: the tires' modes at the truth (`modes`), those the extraction
+// labelled as the model does (`found`), and of those, the frequencies and
+// damping ratios within the suite's tolerances; the largest errors.
+struct ExtractVariant {
+  std::string name;
+  int tires = 0;
+  int failed = 0;  // extractions that returned no dataset
+  int modes = 0;
+  int found = 0;
+  int frequency_within = 0;
+  int damping_within = 0;
+  double worst_frequency = 0;  // the largest |f / f_truth - 1| of the found modes
+  double worst_damping = 0;    // the largest |zeta / zeta_truth - 1|
+  // The close pair's two modes (close_pair): their separation at the truth.
+  double pair_separation_hz = 0;
+  double seconds_per_tire = 0;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("name", &name);
+    a->Visit("tires", &tires);
+    a->Visit("failed", &failed);
+    a->Visit("modes", &modes);
+    a->Visit("found", &found);
+    a->Visit("frequency_within", &frequency_within);
+    a->Visit("damping_within", &damping_within);
+    a->Visit("worst_frequency", &worst_frequency);
+    a->Visit("worst_damping", &worst_damping);
+    a->Visit("pair_separation_hz", &pair_separation_hz);
+    a->Visit("seconds_per_tire", &seconds_per_tire);
+  }
+};
+
+struct ExtractSuite {
+  double start_factor = 0;
+  double frf_noise = 0;
+  double line_step_hz = 0.5;
+  std::vector<ExtractVariant> variants;
+  double seconds = 0;
+  // The criteria (issue 37): every mode found and labelled, its frequency
+  // within frequency_tolerance and its damping ratio within
+  // damping_tolerance (relative); the close pair 3 Hz apart at zeta 0.06.
+  double frequency_tolerance = 0.005, damping_tolerance = 0.10;
+  double pair_gap_hz = 3, pair_damping = 0.06;
+
+  std::vector<std::string> Failing() const;
+  bool Pass() const { return Failing().empty(); }
+  std::string Markdown() const;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("start_factor", &start_factor);
+    a->Visit("frf_noise", &frf_noise);
+    a->Visit("line_step_hz", &line_step_hz);
+    a->Visit("variants", &variants);
+    a->Visit("seconds", &seconds);
+    a->Group("criteria", [&](auto* g) {
+      g->Visit("frequency_tolerance", &frequency_tolerance);
+      g->Visit("damping_tolerance", &damping_tolerance);
+      g->Visit("pair_gap_hz", &pair_gap_hz);
+      g->Visit("pair_damping", &pair_damping);
+    });
+    a->Derived("failing", Failing());
+    a->Derived("pass", Pass());
+  }
+};
+
+using BenchExtractReport = Report<ReportKind::kBenchExtract, ExtractSuite>;
+
+// o.replicates tires per variant (standing: ScatteredTire with its masses
+// scattered as its stiffnesses; close_pair: the same with the camber mode
+// put pair_gap_hz below the vertical one, both at pair_damping), initial
+// values within o.start_factor of the truth.
+Status RunExtractSuite(const SuiteOptions& o, ExtractSuite* suite);
+
+// `p` with k_bgamma (= k_bpsi) moved until the camber mode lies `gap_hz`
+// below the vertical one and c_bgamma (= c_bpsi) and c_bz (= c_bx) until
+// both damping ratios are `zeta`; false where the model cannot get there.
+bool CloseCamberAndVertical(double gap_hz, double zeta, Parameters* p);
+
+}  // namespace ringid
+
+#endif  // RINGID_VALIDATION_EXTRACT_SUITE_H_
