@@ -37,7 +37,9 @@ bool ExtractDataset(const Dataset& d, const std::string& path, const ExtractSett
                    [](const Condition& c) { return c.frf.has_value(); })) {
     return refuse("conditions", "no condition has an frf block (contract §9) to extract modes from");
   }
-  const std::vector<std::vector<internal::FrfMode>> found = internal::ModesInFrfs(d, plscf, &why);
+  std::vector<PlscfResult> fits;
+  const std::vector<std::vector<internal::FrfMode>> found =
+      internal::ModesInFrfs(d, plscf, &why, &fits);
   if (found.empty()) {
     return refuse("conditions", why.empty() ? "the FRFs hold no stable physical pole" : why);
   }
@@ -87,6 +89,10 @@ bool ExtractDataset(const Dataset& d, const std::string& path, const ExtractSett
       }
       out->poles.push_back(pole);
     }
+  }
+  for (size_t c = 0; c < fits.size(); ++c) {
+    if (!d.conditions[c].frf) continue;
+    out->conditions.push_back({static_cast<int>(c), *d.conditions[c].frf, std::move(fits[c])});
   }
   return true;
 }

@@ -9,29 +9,27 @@
 #include <vector>
 
 #include "datasets/dataset.h"
+#include "estimation/plscf.h"
 #include "model/modal.h"
 #include "operations/input_error.h"
 #include "operations/options.h"
+#include "report/extract_report.h"
 
 namespace ringid {
 
-// A physical pole of a condition's FRFs (pLSCF, estimation/plscf.h).
-struct ExtractedPole {
+// What a condition's modes came from: its FRFs and their extraction (the
+// stabilisation diagram, the physical poles, LSFD per function).
+struct ExtractedCondition {
   int condition = 0;
-  double frequency_hz = 0;  // damped (contract §2)
-  double damping_ratio = 0;
-  int stable_orders = 0;    // orders of the stabilisation diagram that hold it
-  // Its label where it went into the dataset (the model has seven modes per
-  // condition: the strongest are kept), and whether the outputs gave it a
-  // shape on the model's coordinates.
-  std::optional<ModeLabel> label;
-  bool shape = false;
+  Frf frf;
+  PlscfResult plscf;
 };
 
 struct Extracted {
   Dataset dataset;  // the modes, the FRF dataset's conditions, known, initial, ties
   std::vector<ExtractedPole> poles;  // every condition's, ascending frequency in each
   std::vector<std::string> notes;    // what the dataset assumes
+  std::vector<ExtractedCondition> conditions;  // each with an frf block
 };
 
 // The modes in the FRFs of the dataset at `path`: each condition's physical
@@ -46,6 +44,11 @@ bool ExtractDataset(const std::string& path, const ExtractSettings& s, Extracted
 // The same of a dataset read from `source` (its errors name it).
 bool ExtractDataset(const Dataset& d, const std::string& source, const ExtractSettings& s,
                     Extracted* out, InputError* error);
+
+// The report of `x`, extracted from the dataset `source` (--report): each
+// function's LSFD synthesis on the lines pLSCF used
+// (operations/extract_report.cc).
+ExtractBody ExtractBodyOf(const Extracted& x, const std::string& source);
 
 }  // namespace ringid
 
