@@ -4,6 +4,7 @@
 #define RINGID_APPS_HTML_PAGES_H_
 
 #include "apps/html/page.h"
+#include "report/extract_report.h"
 #include "report/report.h"
 #include "validation/suites.h"
 
@@ -16,6 +17,7 @@ void DiagnosePage(const DiagnoseReport& report, Page* page);
 void PredictPage(const PredictReport& report, Page* page);
 void CampaignPage(const CampaignReport& report, Page* page);
 void ForcesPage(const ForcesReport& report, Page* page);
+void ExtractPage(const ExtractReport& report, Page* page);
 void BenchPaperPage(const BenchPaperReport& report, Page* page);
 void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
 void BenchConditioningPage(const BenchConditioningReport& report, Page* page);
