@@ -25,6 +25,7 @@ DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identif
 DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(truth, "", "write the truth (effects and every value) here");
+DEFINE_string(report, "", "extract: also write the JSON report here (the stabilisation diagram, the poles, each FRF against its synthesis; docs/reports.md)");
 DEFINE_string(suite, "", "the validation suite to run");
 DEFINE_string(uff, "", "import: a Universal File Format file of a modal test (datasets 55, 58/58b, 15, 18, 82, 151, 164)");
 DEFINE_string(map, "", "import: a UFF map (ringid-uff-map/1 or /2): each node and direction a degree of freedom, modes to labels; /2: where the FRFs' nodes are (docs/uff.md)");
@@ -120,7 +121,7 @@ const std::vector<std::string>& SimulateFlags() {
 
 const std::vector<std::string>& ExtractFlags() {
   static const std::vector<std::string> flags =
-      Joined({"dataset", "output"}, OptionNames(OptionsOf<ExtractSettings>()));
+      Joined({"dataset", "output", "report"}, OptionNames(OptionsOf<ExtractSettings>()));
   return flags;
 }
 

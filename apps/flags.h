@@ -34,6 +34,7 @@ DECLARE_string(parameters);
 DECLARE_string(output);
 DECLARE_string(save_parameters);
 DECLARE_string(truth);
+DECLARE_string(report);
 DECLARE_string(suite);
 DECLARE_int32(replicates);
 DECLARE_string(uff);

@@ -163,14 +163,16 @@ int SimulateCommand(int, char**) {
   return kExitOk;
 }
 
-int ExtractCommand(int, char**) {
+int ExtractCommand(int argc, char** argv) {
   std::string error;
   ExtractSettings settings;
   if (!ReadSettings(&settings, &error)) return Usage(error);
   if (FLAGS_dataset.empty() || FLAGS_output.empty()) {
     return Usage("extract needs --dataset=FRF.json and --output=MODES.json");
   }
-  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  if (!CheckOutputs({{"output", FLAGS_output}, {"report", FLAGS_report}}, Inputs(), &error)) {
+    return Usage(error);
+  }
   ExtractResult x;
   InputError bad;
   if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad)) {
@@ -185,12 +187,16 @@ int ExtractCommand(int, char**) {
                 !p.label ? "" : p.shape ? "on the model's coordinates" : "none: the outputs do not determine it");
   }
   for (const std::string& note : x.notes) std::printf("note: %s\n", note.c_str());
-  const int rc = Write(FLAGS_output, DatasetToJson(x.dataset));
-  if (rc == kExitOk) {
-    std::printf("wrote %s (%zu modes from %s)\n", FLAGS_output.c_str(), x.dataset.modes.size(),
-                FLAGS_dataset.c_str());
+  std::vector<std::pair<std::string, std::string>> files = {{FLAGS_output, DatasetToJson(x.dataset)}};
+  if (!FLAGS_report.empty()) {
+    files.emplace_back(FLAGS_report, ReportText(ExtractReport{ThisRun(argc, argv, std::nullopt),
+                                                              ExtractBodyOf(x, FLAGS_dataset)}));
   }
-  return rc;
+  if (!WriteFilesAtomically(files, &error)) return Usage(error);
+  const std::string report = FLAGS_report.empty() ? "" : " and " + FLAGS_report;
+  std::printf("wrote %s (%zu modes from %s)%s\n", FLAGS_output.c_str(), x.dataset.modes.size(),
+              FLAGS_dataset.c_str(), report.c_str());
+  return kExitOk;
 }
 
 int DiagnoseCommand(int argc, char** argv) {
@@ -397,7 +403,8 @@ const std::vector<Command>& Commands() {
        "the modes in a dataset's FRFs (pLSCF: stabilisation diagram, physical\n"
        "poles, LSFD residues) as a modal dataset identify reads, labelled by fit\n"
        "from the dataset's initial values; masses made known (modes carry no\n"
-       "modal mass)",
+       "modal mass). --report=FILE: the stabilisation diagram, the poles and\n"
+       "each FRF against its LSFD synthesis with its FRAC (ringid report draws it)",
        ExtractFlags(), ExtractCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"

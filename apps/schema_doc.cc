@@ -8,6 +8,7 @@
 #include "datasets/response_dataset.h"
 #include "datasets/synthetic.h"
 #include "datasets/uff_dataset.h"
+#include "report/extract_report.h"
 #include "report/report.h"
 #include "report/schema.h"
 #include "validation/suites.h"
@@ -16,9 +17,9 @@ namespace ringid {
 namespace {
 
 template <class R>
-std::string Section(const char* command) {
+std::string Section(const char* command, const std::string& about = "") {
   return std::string("## ") + ToString(R::kKind) + "\n\nWritten by `" + command + "`.\n\n" +
-         ReportSchema<R>() + "\n";
+         (about.empty() ? "" : about + "\n\n") + ReportSchema<R>() + "\n";
 }
 
 std::string Number(double v) {
@@ -44,6 +45,16 @@ std::string ReportsMarkdown() {
          Section<DiagnoseReport>("ringid diagnose --output=FILE") +
          Section<CampaignReport>("ringid identify|diagnose --output_dir=DIR (DIR/campaign.json)") +
          Section<ForcesReport>("ringid forces --output=FILE") +
+         Section<ExtractReport>(
+             "ringid extract --dataset=FILE --output=FILE --report=FILE",
+             "Per condition with FRFs, pLSCF's stabilisation diagram (`diagram`: each order's\n"
+             "poles with Im λ > 0, stable where `stable_frequency`, `stable_damping` and\n"
+             "`stable_vector` all hold) and each function on the lines pLSCF used, measured\n"
+             "(`measured_re`, `measured_im`) and synthesised by LSFD at the physical poles\n"
+             "(`model_re`, `model_im`), as real and imaginary parts, with the FRAC of the two\n"
+             "(`frac`) and `chi2` with the measured `sigma`. `poles` are the physical poles;\n"
+             "`frequency_sigma_hz` and `damping_sigma` are absent where the estimator gives\n"
+             "no standard error (pLSCF gives none).") +
          Section<BenchPaperReport>("ringid bench --suite=paper --output=FILE") +
          Section<BenchSyntheticReport>("ringid bench --suite=synthetic --output=FILE") +
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +

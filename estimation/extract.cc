@@ -57,7 +57,9 @@ void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfO
         "conditions: no condition has an frf block (contract §9) to extract modes from");
     return;
   }
-  const std::vector<std::vector<internal::FrfMode>> found = internal::ModesInFrfs(d, plscf, &why);
+  std::vector<PlscfResult> fits;
+  const std::vector<std::vector<internal::FrfMode>> found =
+      internal::ModesInFrfs(d, plscf, &why, &fits);
   if (found.empty()) {
     r->status = Status::InvalidInput(
         "conditions: " + (why.empty() ? std::string("the FRFs hold no stable physical pole") : why));
@@ -120,6 +122,10 @@ void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfO
       }
       r->poles.push_back(pole);
     }
+  }
+  for (size_t c = 0; c < fits.size(); ++c) {
+    if (!d.conditions[c].frf) continue;
+    r->conditions.push_back({static_cast<int>(c), *d.conditions[c].frf, std::move(fits[c])});
   }
   r->status = Status::Success(std::to_string(r->dataset.modes.size()) + " modes");
 }

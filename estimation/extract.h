@@ -29,6 +29,28 @@ struct ExtractedPole {
   // shape on the model's coordinates.
   std::optional<ModeLabel> label;
   bool shape = false;
+  // Standard errors, where an estimator gives them (pLSCF does not).
+  std::optional<double> frequency_sigma_hz, damping_sigma;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("condition", &condition);
+    a->Visit("frequency_hz", &frequency_hz);
+    a->VisitIfSet("frequency_sigma_hz", &frequency_sigma_hz);
+    a->Visit("damping_ratio", &damping_ratio);
+    a->VisitIfSet("damping_sigma", &damping_sigma);
+    a->Visit("stable_orders", &stable_orders);
+    a->Visit("label", &label);
+    a->Visit("shape", &shape);
+  }
+};
+
+// What a condition's modes came from: its FRFs and their extraction (the
+// stabilisation diagram, the physical poles, LSFD per function).
+struct ExtractedCondition {
+  int condition = 0;
+  Frf frf;
+  PlscfResult plscf;
 };
 
 struct ExtractResult {
@@ -36,6 +58,7 @@ struct ExtractResult {
   Dataset dataset;  // the modes, the FRF dataset's conditions, known, initial, ties
   std::vector<ExtractedPole> poles;  // every condition's, ascending frequency in each
   std::vector<std::string> notes;    // what the dataset assumes
+  std::vector<ExtractedCondition> conditions;  // each with an frf block
 };
 
 // The modes in d's FRFs under `plscf`: each condition's physical poles, the

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <utility>
 
 #include <Eigen/QR>
 
@@ -28,16 +29,16 @@ Complex Pole(const FrfMode& m) {
 int Order(FrfQuantity q) { return static_cast<int>(q); }  // displacement 0, velocity 1, ...
 
 // The physical poles of `frf` with their shapes on the outputs (pLSCF and
-// LSFD at their defaults); none where the extraction fails.
-std::vector<FrfMode> ExtractFrfModes(const Frf& frf, const PlscfOptions& o, std::string* why) {
-  PlscfResult r;
-  ExtractModes(frf, o, &r);
+// LSFD at their defaults), the extraction in `r`; none where it fails.
+std::vector<FrfMode> ExtractFrfModes(const Frf& frf, const PlscfOptions& o, std::string* why,
+                                     PlscfResult* r) {
+  ExtractModes(frf, o, r);
   std::vector<FrfMode> out;
-  if (!r.status.ok()) {
-    if (why && why->empty()) *why = r.status.message;
+  if (!r->status.ok()) {
+    if (why && why->empty()) *why = r->status.message;
     return out;
   }
-  for (const ExtractedMode& m : r.modes) {
+  for (const ExtractedMode& m : r->modes) {
     if (m.shape.size() != static_cast<int>(frf.outputs.size())) continue;
     out.push_back({m.frequency_hz, m.damping_ratio, m.shape, m.stable_orders});
   }
@@ -243,15 +244,18 @@ bool ModalStageDataset(const ModalModel& model, const Dataset& d,
 }
 
 std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptions& o,
-                                             std::string* why) {
+                                             std::string* why,
+                                             std::vector<PlscfResult>* results) {
   std::vector<std::vector<FrfMode>> found(d.conditions.size());
+  std::vector<PlscfResult> r(d.conditions.size());
   bool any = false;
   for (size_t c = 0; c < d.conditions.size(); ++c) {
     if (!d.conditions[c].frf) continue;
-    found[c] = ExtractFrfModes(*d.conditions[c].frf, o, why);
+    found[c] = ExtractFrfModes(*d.conditions[c].frf, o, why, &r[c]);
     any = any || !found[c].empty();
   }
   if (!any) found.clear();
+  if (results) *results = std::move(r);
   return found;
 }
 

@@ -76,9 +76,11 @@ bool ModalStageDataset(const ModalModel& model, const Dataset& d,
 
 // The modes each condition's FRFs hold (pLSCF and LSFD at their defaults,
 // estimation/plscf.h), per condition; empty where no condition's FRFs give one.
-// `why` gets the first extraction's failure, where one fails.
+// `why` gets the first extraction's failure, where one fails; `results`, where
+// given, each condition's extraction (a default one without an frf block).
 std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptions& o = {},
-                                             std::string* why = nullptr);
+                                             std::string* why = nullptr,
+                                             std::vector<PlscfResult>* results = nullptr);
 
 // A start for `setup` (of `d`, a dataset with FRFs) from the point `from`:
 // `found` (ModesInFrfs) labelled by the model at `from`, fitted as modal

@@ -9,6 +9,7 @@
 #include "estimation/extract.h"
 #include "operations/input_error.h"
 #include "operations/options.h"
+#include "report/extract_report.h"
 
 namespace ringid {
 
@@ -20,6 +21,11 @@ bool ExtractDataset(const std::string& path, const ExtractSettings& s, ExtractRe
 // The same of a dataset read from `source` (its errors name it).
 bool ExtractDataset(const Dataset& d, const std::string& source, const ExtractSettings& s,
                     ExtractResult* out, InputError* error);
+
+// The report of `x`, extracted from the dataset `source` (--report): each
+// function's LSFD synthesis on the lines pLSCF used
+// (operations/extract_report.cc).
+ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source);
 
 }  // namespace ringid
 

@@ -29,16 +29,17 @@ inline constexpr int kReportSchemaVersion = 11;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
+  kExtract,  // operations/extract_report.h
   // validation/
   kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling, kBenchSpeed,
   kBenchForces, kBenchStatic, kBenchFrf, kBenchExtract,
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 17> kNames = {
+  static constexpr std::array<const char*, 18> kNames = {
       "identify", "predict", "identifiability", "compare", "diagnose", "campaign", "forces",
-      "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis", "bench_rolling",
-      "bench_speed", "bench_forces", "bench_static", "bench_frf", "bench_extract"};
+      "extract", "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis",
+      "bench_rolling", "bench_speed", "bench_forces", "bench_static", "bench_frf", "bench_extract"};
 };
 
 struct InputFile {

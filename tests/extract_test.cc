@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
+#include "report/extract_report.h"
 #include "tests/test_support.h"
 #include "validation/suites.h"
 
@@ -115,6 +118,128 @@ TEST(ExtractTest, ADatasetWithoutFrfsIsOneLineExitTwoAndNothingWritten) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--max_model_order"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::ifstream(out).good());
+}
+
+
+// The report (--report) of noise-free FRFs: each function's LSFD synthesis
+// is the measured function (FRAC >= 0.999, and equal to 1e-5 of its peak),
+// and the stable poles of the diagram's highest orders hold the model's
+// seven modes at the truth.
+TEST(ExtractTest, TheReportOfNoiseFreeFrfsSynthesisesEachFunctionAndItsDiagramHoldsTheModes) {
+  std::mt19937_64 rng(2);
+  const Parameters truth = ScatteredTire(&rng);
+  const std::string path = HammerFile(truth, 0, 1.2, &rng, "extract_report_noise_free.json");
+  const std::string modes = testing::Scratch("extract_report_modes.json");
+  const std::string report_path = testing::Scratch("extract_report.json");
+  const testing::RunResult run = testing::Ringid("extract --dataset=" + path + " --output=" +
+                                                 modes + " --report=" + report_path);
+  ASSERT_EQ(run.status, 0) << run.err;
+  ExtractReport report;
+  std::string error;
+  ASSERT_TRUE(ReadReport(Json::parse(testing::ReadFile(report_path)), &report, &error)) << error;
+  Dataset d;
+  LoadError load;
+  ASSERT_TRUE(LoadDataset(path, &d, &load)) << load.OneLine();
+  const Frf& frf = *d.conditions[0].frf;
+  ASSERT_EQ(report.body.conditions.size(), 1u);
+  const ExtractCondition& c = report.body.conditions[0];
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  ASSERT_EQ(c.functions.size(), frf.functions.size());
+  int coupled = 0;
+  for (size_t k = 0; k < frf.functions.size(); ++k) {
+    const FrfFit& f = c.functions[k];
+    const FrfFunction& fn = frf.functions[k];
+    EXPECT_EQ(f.output, frf.outputs[fn.output].name);
+    EXPECT_EQ(f.input, frf.inputs[fn.input].name);
+    ASSERT_GT(f.lines(), 100);
+    // The measured curve is the dataset's, line for line; the model's
+    // function there (noise-free) is the truth the synthesis must meet.
+    std::complex<double> cross = 0;
+    double measured_norm = 0, synthesised_norm = 0, peak = 0, worst = 0;
+    for (int l = 0; l < f.lines(); ++l) {
+      const auto at = std::find(frf.frequencies_hz.begin(), frf.frequencies_hz.end(),
+                                f.frequency_hz[l]);
+      ASSERT_NE(at, frf.frequencies_hz.end()) << f.frequency_hz[l];
+      const std::complex<double> h = fn.h[at - frf.frequencies_hz.begin()];
+      const std::complex<double> m(f.measured_re[l], f.measured_im[l]);
+      const std::complex<double> x(f.model_re[l], f.model_im[l]);
+      EXPECT_EQ(m, h) << f.output << "/" << f.input << " at " << f.frequency_hz[l] << " Hz";
+      cross += std::conj(m) * x;
+      measured_norm += std::norm(m);
+      synthesised_norm += std::norm(x);
+      peak = std::max(peak, std::abs(m));
+      worst = std::max(worst, std::abs(x - m));
+    }
+    const std::string name = f.output + "/" + f.input;
+    if (peak == 0) {  // a function the structure does not couple: FRAC not defined
+      EXPECT_TRUE(std::isnan(f.frac)) << name;
+      EXPECT_LT(std::sqrt(synthesised_norm), 1e-9) << name;
+      continue;
+    }
+    ++coupled;
+    EXPECT_NEAR(f.frac, std::norm(cross) / (measured_norm * synthesised_norm), 1e-12) << name;
+    EXPECT_GE(f.frac, 0.999) << name;
+    EXPECT_LT(worst, 1e-5 * peak) << name;
+  }
+  EXPECT_GE(coupled, 14);  // a hammer test's in-plane and lateral functions
+  // Each of the highest orders holds every mode as a stable pole.
+  const ModalSolution s = RigidRingModel().Solve(truth);
+  ASSERT_TRUE(s.ok) << s.error;
+  ASSERT_EQ(s.modes.size(), 7u);
+  ASSERT_GE(c.diagram.size(), 5u);
+  for (size_t o = c.diagram.size() - 5; o < c.diagram.size(); ++o) {
+    for (const Mode& m : s.modes) {
+      const auto near = std::find_if(c.diagram[o].poles.begin(), c.diagram[o].poles.end(),
+                                     [&](const DiagramPole& p) {
+                                       return p.stable() &&
+                                              std::abs(p.frequency_hz / m.frequency_hz - 1) < 1e-6;
+                                     });
+      ASSERT_NE(near, c.diagram[o].poles.end())
+          << LabelName(m.label) << " at order " << c.diagram[o].order;
+      EXPECT_NEAR(near->damping_ratio / m.damping_ratio, 1, 1e-5) << LabelName(m.label);
+    }
+  }
+  // The physical poles are those of the modal dataset written beside it.
+  ASSERT_EQ(report.body.poles.size(), s.modes.size());
+  for (const ExtractedPole& p : report.body.poles) {
+    ASSERT_TRUE(p.label.has_value());
+    const auto model = std::find_if(s.modes.begin(), s.modes.end(),
+                                    [&](const Mode& m) { return m.label == *p.label; });
+    ASSERT_NE(model, s.modes.end());
+    EXPECT_NEAR(p.frequency_hz / model->frequency_hz, 1, 1e-6) << LabelName(*p.label);
+  }
+}
+
+// --report is written with the dataset or neither is.
+TEST(ExtractTest, TheReportAndTheDatasetAreWrittenTogetherOrNotAtAll) {
+  const std::string out = testing::Scratch("extract_together.json");
+  const std::string report = testing::Scratch("extract_together_report.json");
+  std::remove(out.c_str());
+  std::remove(report.c_str());
+  const std::string table1 = testing::SourcePath("datasets/paper/table1.json");
+  testing::RunResult r = testing::Ringid("extract --dataset=" + table1 + " --output=" + out +
+                                         " --report=" + report);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("no condition has an frf block"), std::string::npos) << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+  EXPECT_FALSE(testing::Exists(report));
+  const std::string frfs = testing::SourcePath("datasets/examples/car_tire_hammer_frf.json");
+  r = testing::Ringid("extract --dataset=" + frfs + " --output=" + out + " --report=" + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--report: " + out + " is also --output"), std::string::npos) << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+  r = testing::Ringid("extract --dataset=" + frfs + " --output=" + out + " --report=" +
+                      testing::Scratch("no_such_directory/report.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--report: "), std::string::npos) << r.err;
+  EXPECT_FALSE(testing::Exists(out));
+  r = testing::Ringid("extract --dataset=" + frfs + " --output=" + out + " --report=" + report);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(testing::Exists(out));
+  EXPECT_TRUE(testing::Exists(report));
+  EXPECT_NE(r.out.find("wrote " + out + " (7 modes from " + frfs + ") and " + report),
+            std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -340,6 +340,21 @@ Made BenchExtract() {
   return Render(path);
 }
 
+// extract of the example hammer test (28 FRFs, 2 % noise), its --report;
+// made once.
+Made Extract() {
+  static const Made made = [] {
+    const std::string out = Scratch("extract.json");
+    std::remove(out.c_str());
+    const RunResult r =
+        Ringid("extract --dataset=" + Source("datasets/examples/car_tire_hammer_frf.json") +
+               " --output=" + Scratch("extract_modes.json") + " --report=" + out);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return Render(out);
+  }();
+  return made;
+}
+
 // The speed suite, timed briefly in process (the command times each case for
 // about half a second) and written as the suite writes it; made once.
 Made BenchSpeed() {
@@ -544,6 +559,50 @@ TEST(HtmlReportTest, IdentifyOfFrfsTablesAndDrawsEachFunction) {
         f["condition"].get<std::string>() + " " + f["output"].get<std::string>() + "/" +
         f["input"].get<std::string>();
     EXPECT_NE(m.html.find("FRF " + name + " (χ² "), std::string::npos) << name;
+  }
+}
+
+// extract: the stabilisation diagram, a row per physical pole, each
+// function's FRAC in its table and its panel among the small multiples, and
+// the functions of the largest chi-square per value in full.
+TEST(HtmlReportTest, ExtractDrawsTheDiagramAndEachFunctionAgainstItsSynthesis) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Extract();
+  ExpectWellFormed(m.html, 5);  // the diagram, one figure of 28 panels, three in full
+  const std::string diagram = FigureSvg(m.html, "extract-c0-diagram");
+  ASSERT_FALSE(diagram.empty());
+  for (const char* what : {"model order", "frequency (Hz)", "physical pole", "not stable",
+                           "stable (frequency, damping, vector)"}) {
+    EXPECT_NE(diagram.find(what), std::string::npos) << what;
+  }
+  const auto cell = [](double v, const char* format) {
+    char text[32];
+    std::snprintf(text, sizeof text, format, v);
+    return std::string("<td class=\"n\">") + text + "</td>";
+  };
+  ASSERT_EQ(m.report["poles"].size(), 7u);
+  for (const json& p : m.report["poles"]) {
+    EXPECT_NE(m.html.find(cell(p["frequency_hz"].get<double>(), "%.3f")), std::string::npos);
+  }
+  const json& functions = m.report["conditions"][0]["functions"];
+  ASSERT_EQ(functions.size(), 28u);
+  const std::string panels = FigureSvg(m.html, "extract-c0-frfs-1");
+  ASSERT_FALSE(panels.empty());
+  std::vector<std::pair<double, size_t>> per_value;
+  for (size_t k = 0; k < functions.size(); ++k) {
+    const json& f = functions[k];
+    EXPECT_NE(m.html.find(cell(f["frac"].get<double>(), "%.6f")), std::string::npos) << k;
+    const std::string name = f["output"].get<std::string>() + " / " + f["input"].get<std::string>();
+    EXPECT_NE(panels.find(name), std::string::npos) << name;
+    per_value.push_back({-f["chi2"].get<double>() / f["values"].get<double>(), k});
+  }
+  std::stable_sort(per_value.begin(), per_value.end());
+  for (int i = 0; i < 3; ++i) {
+    const std::string svg =
+        FigureSvg(m.html, "extract-c0-frf-" + std::to_string(per_value[i].second + 1));
+    ASSERT_FALSE(svg.empty()) << per_value[i].second;
+    EXPECT_NE(svg.find("LSFD synthesis"), std::string::npos);
+    EXPECT_NE(svg.find("(synthesised − measured) / σ"), std::string::npos);
   }
 }
 
@@ -1195,6 +1254,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
                       Kind{"forces", Forces}, Kind{"predict_speeds", PredictAtSpeeds},
+                      Kind{"extract", Extract},
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},

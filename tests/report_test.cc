@@ -21,6 +21,7 @@
 #include "estimation/fit.h"
 #include "estimation/starts.h"
 #include "model/effects.h"
+#include "report/extract_report.h"
 #include "report/schema.h"
 #include "report/report.h"
 #include "tests/round_trip.h"
@@ -268,6 +269,38 @@ TEST(ReportTest, IdentifyOfFrfsRoundTripsByteForByteAndIsDocumented) {
   Paths(j, "", &paths);
   const std::string schema = ringid::ReportSchema<ringid::IdentifyReport>();
   for (const std::string& p : paths) EXPECT_TRUE(Documented(schema, p)) << p;
+}
+
+// extract --report (schema 11): the diagram, the poles and each function's
+// curves round trip, and every path they write is documented; a pole's
+// standard errors too, where an estimator gives them.
+TEST(ReportTest, ExtractRoundTripsByteForByteAndIsDocumented) {
+  const std::string path = Scratch("extract-report.json");
+  std::remove(path.c_str());
+  const auto r = Ringid("extract --dataset=" + Source("datasets/examples/car_tire_hammer_frf.json") +
+                        " --output=" + Scratch("extract-report-modes.json") + " --report=" + path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ExpectRoundTrip<ringid::ExtractReport>(path);
+  const Json j = Json::parse(ReadFile(path));
+  EXPECT_EQ(j["report"], "extract");
+  ASSERT_EQ(j["conditions"].size(), 1u);
+  EXPECT_EQ(j["conditions"][0]["functions"].size(), 28u);
+  EXPECT_EQ(j["conditions"][0]["diagram"].size(), 30u);  // orders 1 to --max_model_order
+  std::vector<std::string> paths;
+  Paths(j, "", &paths);
+  const std::string schema = ringid::ReportSchema<ringid::ExtractReport>();
+  for (const std::string& p : paths) EXPECT_TRUE(Documented(schema, p)) << p;
+  ringid::ExtractReport report;
+  std::string error;
+  ASSERT_TRUE(ringid::ReadReport(j, &report, &error)) << error;
+  ASSERT_FALSE(report.body.poles.empty());
+  report.body.poles[0].frequency_sigma_hz = 0.01;
+  report.body.poles[0].damping_sigma = 0.001;
+  ringid::testing::ExpectRoundTrip(report);
+  const Json sigmas = ringid::JsonWriter::ToJson(report);
+  EXPECT_EQ(sigmas["poles"][0]["frequency_sigma_hz"], 0.01);
+  EXPECT_TRUE(Documented(schema, "poles[].frequency_sigma_hz"));
+  EXPECT_TRUE(Documented(schema, "poles[].damping_sigma"));
 }
 
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {

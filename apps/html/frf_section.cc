@@ -62,7 +62,7 @@ FrfSeries SeriesOf(const FrfFit& f) {
   return s;
 }
 
-std::string FrfScript(Figure* fig, const FrfFit& f) {
+std::string FrfScript(Figure* fig, const FrfFit& f, const FrfModelNames& names) {
   const FrfSeries s = SeriesOf(f);
   const double h = fig->height;
   const double low = f.frequency_hz.front(), high = f.frequency_hz.back();
@@ -80,7 +80,8 @@ std::string FrfScript(Figure* fig, const FrfFit& f) {
   g << "set ylabel '|H| (per N)'\n"
     << "plot " << fig->AddData(s.measured_magnitude) << points << kBlue
     << "' title 'measured', " << fig->AddData(s.model_magnitude)
-    << " using 1:2 with lines lw 2 lc rgb '" << kOrange << "' title 'fitted model'\n"
+    << " using 1:2 with lines lw 2 lc rgb '" << kOrange << "' title "
+    << GnuplotString(names.curve) << "\n"
     << "unset logscale y\nunset key\n";
   // Middle: phase in degrees.
   g << ScreenMargins(*fig, 0.36 * h, 0.38 * h)
@@ -91,7 +92,7 @@ std::string FrfScript(Figure* fig, const FrfFit& f) {
     << "set autoscale y\nset ytics autofreq\n";
   // Bottom: the residuals in sigma, with the key of their own.
   g << ScreenMargins(*fig, 0.64 * h, 55) << "set format x '%g'\nset xlabel 'frequency (Hz)'\n"
-    << "set ylabel '(fitted − measured) / σ'\n"
+    << "set ylabel " << GnuplotString("(" + names.residual + " − measured) / σ") << "\n"
     << HorizontalLine(1, "0", kAxisLine) << HorizontalLine(2, "2", kDashedGrey)
     << HorizontalLine(3, "-2", kDashedGrey)
     << "set key at screen 0.82, screen " << 0.36 << " left top noenhanced\n"
@@ -157,18 +158,23 @@ void FrfFigures(const std::optional<std::vector<FrfFit>>& frfs, Page* page) {
   for (size_t k : drawn) {
     const FrfFit& f = (*frfs)[k];
     if (f.frequency_hz.empty()) continue;
-    Figure fig("identify-frf-" + std::to_string(k + 1), 900, 640);
-    fig.script = FrfScript(&fig, f);
-    const std::string frac = std::isfinite(f.frac) ? "FRAC " + Format(f.frac, "%.4f")
-                                                   : "FRAC not defined: the fitted function is 0";
-    fig.caption = "FRF " + FunctionName(f) + " (χ² " + Format(f.chi2) + " on " +
-                  std::to_string(f.values()) + " values, " + frac + "): measured (dots) and fitted model (line) against frequency (Hz). Top: "
-                  "magnitude |H|, the output's SI unit per newton (m/s² per N for an "
-                  "accelerometer), log axis; middle: phase (degrees); bottom: the residuals the "
-                  "fit weighs, real and imaginary parts of (fitted − measured) / σ, dashed at "
-                  "± 2.";
-    page->AddFigure(std::move(fig));
+    page->AddFigure(FrfFigure(f, "identify-frf-" + std::to_string(k + 1)));
   }
+}
+
+Figure FrfFigure(const FrfFit& f, const std::string& name, const FrfModelNames& names) {
+  Figure fig(name, 900, 640);
+  fig.script = FrfScript(&fig, f, names);
+  const std::string frac = std::isfinite(f.frac) ? "FRAC " + Format(f.frac, "%.4f")
+                                                 : "FRAC not defined: the " + names.residual +
+                                                       " function is 0";
+  fig.caption = "FRF " + FunctionName(f) + " (χ² " + Format(f.chi2) + " on " +
+                std::to_string(f.values()) + " values, " + frac + "): measured (dots) and " +
+                names.curve + " (line) against frequency (Hz). Top: magnitude |H|, the "
+                "output's SI unit per newton (m/s² per N for an accelerometer), log axis; "
+                "middle: phase (degrees); bottom: the residuals the fit weighs, real and "
+                "imaginary parts of (" + names.residual + " − measured) / σ, dashed at ± 2.";
+  return fig;
 }
 
 }  // namespace ringid::html

@@ -3,6 +3,7 @@
 #define RINGID_APPS_HTML_FRF_SECTION_H_
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "apps/html/page.h"
@@ -16,6 +17,15 @@ void FrfTable(const std::optional<std::vector<FrfFit>>& frfs, Page* page);
 // Per function a figure of its magnitude, phase and normalised residuals
 // over frequency, measured against fitted.
 void FrfFigures(const std::optional<std::vector<FrfFit>>& frfs, Page* page);
+
+// What a figure calls the model's curve (its key and caption) and the model
+// in its residuals, "(fitted − measured) / σ".
+struct FrfModelNames {
+  std::string curve = "fitted model";
+  std::string residual = "fitted";
+};
+// One function's figure (FrfFigures'), named `name`.
+Figure FrfFigure(const FrfFit& f, const std::string& name, const FrfModelNames& names = {});
 
 }  // namespace ringid::html
 

@@ -45,6 +45,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kDiagnose, Typed<DiagnoseReport, html::DiagnosePage>},
     {ReportKind::kCampaign, Typed<CampaignReport, html::CampaignPage>},
     {ReportKind::kForces, Typed<ForcesReport, html::ForcesPage>},
+    {ReportKind::kExtract, Typed<ExtractReport, html::ExtractPage>},
     {ReportKind::kBenchPaper, Typed<BenchPaperReport, html::BenchPaperPage>},
     {ReportKind::kBenchSynthetic, Typed<BenchSyntheticReport, html::BenchSyntheticPage>},
     {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},

@@ -4,6 +4,7 @@
 #define RINGID_APPS_HTML_PAGES_H_
 
 #include "apps/html/page.h"
+#include "report/extract_report.h"
 #include "report/report.h"
 #include "validation/extract_suite.h"
 #include "validation/suites.h"
@@ -17,6 +18,7 @@ void DiagnosePage(const DiagnoseReport& report, Page* page);
 void PredictPage(const PredictReport& report, Page* page);
 void CampaignPage(const CampaignReport& report, Page* page);
 void ForcesPage(const ForcesReport& report, Page* page);
+void ExtractPage(const ExtractReport& report, Page* page);
 void BenchPaperPage(const BenchPaperReport& report, Page* page);
 void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
 void BenchConditioningPage(const BenchConditioningReport& report, Page* page);
