@@ -180,9 +180,11 @@ int ExtractCommand(int argc, char** argv) {
     std::fprintf(stderr, "ringid: extract: %s\n", bad.line.c_str());
     return kExitFailure;
   }
-  std::printf("%9s %10s %8s %7s %-22s %s\n", "condition", "Hz", "zeta", "stable", "label", "shape");
+  std::printf("%9s %10s %7s %8s %7s %7s %-22s %s\n", "condition", "Hz", "sd Hz", "zeta", "sd",
+              "stable", "label", "shape");
   for (const ExtractedPole& p : x.poles) {
-    std::printf("%9d %10.3f %8.4f %7d %-22s %s\n", p.condition, p.frequency_hz, p.damping_ratio,
+    std::printf("%9d %10.3f %7.3f %8.4f %7.4f %7d %-22s %s\n", p.condition, p.frequency_hz,
+                p.frequency_sigma_hz.value_or(NAN), p.damping_ratio, p.damping_sigma.value_or(NAN),
                 p.stable_orders, p.label ? LabelName(*p.label) : "(not kept)",
                 !p.label ? "" : p.shape ? "on the model's coordinates" : "none: the outputs do not determine it");
   }

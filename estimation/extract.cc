@@ -108,12 +108,18 @@ void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfO
     r->notes.push_back(held + " known at their initial values: modes carry no modal mass "
                        "(weigh them, or identify on the FRFs, which do)");
   }
-  r->notes.push_back("frequencies and damping ratios without a sigma: identify weighs them by "
-                     "its default relative errors");
+  bool sigmas = true;
+  for (const MeasuredMode& m : r->dataset.modes) sigmas = sigmas && m.frequency_sigma_hz && m.damping_sigma;
+  r->notes.push_back(sigmas ? "sigmas: the standard errors of the maximum-likelihood refinement "
+                              "of the poles (estimation/modal_refine.h)"
+                            : "a mode without sigma: the refinement failed or was off; identify "
+                              "weighs it by its default relative errors");
   r->dataset.name = d.name + " (modes extracted)";
   for (size_t c = 0; c < found.size(); ++c) {
     for (const internal::FrfMode& f : found[c]) {
       ExtractedPole pole{static_cast<int>(c), f.frequency_hz, f.damping_ratio, f.stable_orders};
+      if (f.frequency_std_hz > 0) pole.frequency_sigma_hz = f.frequency_std_hz;
+      if (f.damping_ratio_std > 0) pole.damping_sigma = f.damping_ratio_std;
       for (const MeasuredMode& m : r->dataset.modes) {
         if (m.condition == static_cast<int>(c) && m.frequency_hz == f.frequency_hz) {
           pole.label = m.label;

@@ -40,7 +40,8 @@ std::vector<FrfMode> ExtractFrfModes(const Frf& frf, const PlscfOptions& o, std:
   }
   for (const ExtractedMode& m : r->modes) {
     if (m.shape.size() != static_cast<int>(frf.outputs.size())) continue;
-    out.push_back({m.frequency_hz, m.damping_ratio, m.shape, m.stable_orders});
+    out.push_back({m.frequency_hz, m.damping_ratio, m.shape, m.stable_orders, m.frequency_std_hz,
+                   m.damping_ratio_std});
   }
   return out;
 }
@@ -204,6 +205,8 @@ bool ModalStageDataset(const ModalModel& model, const Dataset& d,
       MeasuredMode m;
       m.frequency_hz = f.frequency_hz;
       m.damping_ratio = f.damping_ratio;
+      if (f.frequency_std_hz > 0) m.frequency_sigma_hz = f.frequency_std_hz;  // NaN: none
+      if (f.damping_ratio_std > 0) m.damping_sigma = f.damping_ratio_std;
       m.shape = ShapeOnCoordinates(model, *frf, f);
       m.condition = static_cast<int>(c);
       modes.push_back(std::move(m));

@@ -8,6 +8,7 @@
 #ifndef RINGID_ESTIMATION_FRF_START_H_
 #define RINGID_ESTIMATION_FRF_START_H_
 
+#include <cmath>
 #include <complex>
 #include <functional>
 #include <optional>
@@ -36,6 +37,8 @@ struct FrfMode {
   double damping_ratio = 0;
   Eigen::VectorXcd outputs;
   int stable_orders = 0;  // of the stabilisation diagram (0: not from one)
+  // Standard errors of the refinement (estimation/modal_refine.h); NaN without.
+  double frequency_std_hz = NAN, damping_ratio_std = NAN;
 };
 
 // A mode's shape is given on the coordinates the outputs determine (those

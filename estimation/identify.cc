@@ -371,7 +371,12 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
   // Measured FRFs: each start first goes through the modal stage, so that
   // the model's peaks lie on the measured ones (estimation/frf_start.h).
-  const auto found = internal::ModesInFrfs(dataset);
+  // Its modes only start the FRF fit, which refines them itself: without
+  // their refinement (estimation/modal_refine.h), which costs about 60 ms a
+  // hammer test of 28 FRFs, a quarter of a one-start fit (BM_FrfFit).
+  PlscfOptions extraction;
+  extraction.refine = false;
+  const auto found = internal::ModesInFrfs(dataset, extraction);
   const int n = static_cast<int>(plan.size());
   // On several threads each start has its own copy of the problem, made here
   // one after another; on one, the problem itself, whose kept solutions the

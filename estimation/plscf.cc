@@ -296,6 +296,40 @@ void AddResidues(const Frf& frf, const std::vector<LsfdFunction>& functions,
   }
 }
 
+// The modes and functions refined (estimation/modal_refine.h), the modes
+// kept in ascending frequency with their residues; untouched where the
+// refinement fails.
+void Refine(const Frf& frf, bool weigh_by_sigma, PlscfResult* r) {
+  std::vector<Complex> poles;
+  for (const ExtractedMode& mode : r->modes) poles.push_back(mode.eigenvalue);
+  ModalRefinement refined;
+  RefineModes(frf, r->lines, poles, r->functions, weigh_by_sigma, &refined);
+  r->refinement = refined.fit;
+  if (!refined.fit.status.ok()) return;
+  std::vector<int> order(poles.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return refined.poles[a].frequency_hz < refined.poles[b].frequency_hz;
+  });
+  std::vector<ExtractedMode> modes;
+  for (int k : order) {
+    ExtractedMode mode = r->modes[k];
+    const RefinedPole& p = refined.poles[k];
+    mode.eigenvalue = p.eigenvalue;
+    mode.frequency_hz = p.frequency_hz;
+    mode.damping_ratio = p.damping_ratio;
+    mode.frequency_std_hz = p.frequency_std_hz;
+    mode.damping_ratio_std = p.damping_ratio_std;
+    modes.push_back(std::move(mode));
+  }
+  r->modes = std::move(modes);
+  r->functions = std::move(refined.functions);
+  for (LsfdFunction& f : r->functions) {
+    const std::vector<Complex> residues = f.residues;
+    for (size_t k = 0; k < order.size(); ++k) f.residues[k] = residues[order[k]];
+  }
+}
+
 }  // namespace
 
 bool PlscfOptions::IsValid(std::string* why) const {
@@ -368,8 +402,11 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
   std::vector<Complex> poles;
   for (const ExtractedMode& mode : r->modes) poles.push_back(mode.eigenvalue);
   r->functions = Lsfd(frf, r->lines, poles, o.weigh_by_sigma);
+  r->refinement.status = Status::Failed(o.refine ? "no physical poles" : "not asked for");
+  if (o.refine && !r->modes.empty()) Refine(frf, o.weigh_by_sigma, r);
   AddResidues(frf, r->functions, &r->modes);
-  r->status = Status::Success(std::to_string(r->modes.size()) + " physical poles");
+  r->status = Status::Success(std::to_string(r->modes.size()) + " physical poles" +
+                              (r->refinement.status.ok() ? ", refined" : ""));
 }
 
 }  // namespace ringid

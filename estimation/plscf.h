@@ -3,7 +3,9 @@
 // Peeters, Van der Auweraer, Guillaume & Leuridan, Shock and Vibration 11
 // (2004) 395-409) over a range of model orders, its stabilisation diagram,
 // the automatic choice of the physical poles, and their residues by LSFD
-// (estimation/lsfd.h).
+// (estimation/lsfd.h); then, by default, the maximum-likelihood refinement of
+// poles and residues together (estimation/modal_refine.h) with the poles'
+// standard errors.
 //
 // The model is the right matrix fraction H(ω) = B(ω) A(ω)^-1 of an outputs x
 // inputs H, with B's rows and A polynomials of order n in z = exp(-iωΔt),
@@ -16,6 +18,7 @@
 #ifndef RINGID_ESTIMATION_PLSCF_H_
 #define RINGID_ESTIMATION_PLSCF_H_
 
+#include <cmath>
 #include <complex>
 #include <limits>
 #include <string>
@@ -25,6 +28,7 @@
 
 #include "datasets/frf.h"
 #include "estimation/lsfd.h"
+#include "estimation/modal_refine.h"
 #include "estimation/status.h"
 
 namespace ringid {
@@ -50,6 +54,10 @@ struct PlscfOptions {
   // damping tolerances of its centre, positive damping, in the band) found
   // at this many orders at least.
   int min_stable_orders = 5;
+  // The physical poles and their residues refined together
+  // (estimation/modal_refine.h), with standard errors; else pLSCF's poles
+  // and LSFD's residues, without.
+  bool refine = true;
 
   bool IsValid(std::string* why) const;
 };
@@ -77,13 +85,17 @@ struct PlscfOrder {
 
 // A physical pole, with its residues.
 struct ExtractedMode {
-  std::complex<double> eigenvalue;  // λ of the cluster's highest order
+  // λ of the cluster's highest order, or the refinement's where it succeeded.
+  std::complex<double> eigenvalue;
   double frequency_hz = 0;          // damped, as PlscfPole's
   double damping_ratio = 0;
+  // The refinement's standard errors; NaN without it.
+  double frequency_std_hz = NAN;
+  double damping_ratio_std = NAN;
   int order = 0;                   // the order λ was taken at
   int stable_orders = 0;           // the number of orders in its cluster
   Eigen::VectorXcd participation;  // inputs, as PlscfPole's
-  // LSFD's residues, outputs x inputs (NaN where the Frf has no function),
+  // LSFD's (or the refinement's) residues, outputs x inputs (NaN where the Frf has no function),
   // of H as measured (an accelerance's are λ² times the receptance's), and
   // the outputs' shape psi: the least-squares fit of psi x participation^T
   // to them, over the functions given.
@@ -98,8 +110,12 @@ struct PlscfResult {
   double dt = 0;                     // Δt of the basis (s)
   std::vector<PlscfOrder> diagram;   // min_order..max_order
   std::vector<ExtractedMode> modes;  // ascending frequency
-  // Per function of the Frf (its order): LSFD at the modes' eigenvalues.
+  // Per function of the Frf (its order): LSFD at the modes' eigenvalues, or
+  // the refinement's.
   std::vector<LsfdFunction> functions;
+  // How the refinement went; where it failed (or was not asked for), the
+  // modes are pLSCF's and LSFD's.
+  RefinementFit refinement;
 };
 
 // pLSCF over every output of `frf` measured at all its inputs (an output
