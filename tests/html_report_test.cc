@@ -332,6 +332,10 @@ Made BenchExtract() {
     v.modes = v.found = v.frequency_within = v.damping_within = 14;
     v.worst_frequency = 0.004;
     v.worst_damping = 0.08;
+    v.intervals = 14;
+    v.frequency_covered = v.damping_covered = 13;
+    v.frequency_bias_sd = 0.1;
+    v.damping_bias_sd = -0.2;
     v.seconds_per_tire = 3.5;
     suite.variants.push_back(v);
   }

@@ -16,7 +16,9 @@ void BenchExtractPage(const BenchExtractReport& report, Page* page) {
              " % and its damping ratio within " + Format(100 * suite.damping_tolerance, "%g") +
              " % (relative). close_pair: the camber mode " + Format(suite.pair_gap_hz, "%g") +
              " Hz below the vertical one, both at damping ratio " +
-             Format(suite.pair_damping, "%g") + ".");
+             Format(suite.pair_damping, "%g") + "; the refinement's 95 % intervals of frequency "
+             "and damping each cover the truth in " + Format(100 * suite.coverage_range.first, "%.0f") +
+             "-" + Format(100 * suite.coverage_range.second, "%.0f") + " % of the modes.");
   for (const std::string& f : suite.Failing()) page->Note("Failing: " + f);
   for (const ExtractVariant& v : suite.variants) {
     page->Summary({{"variant", TextCell(v.name)},
@@ -27,6 +29,13 @@ void BenchExtractPage(const BenchExtractReport& report, Page* page) {
                    {"damping ratio within the tolerance", NumberCell(v.damping_within, "%.0f")},
                    {"worst frequency error (%)", PercentCell(v.worst_frequency)},
                    {"worst damping-ratio error (%)", PercentCell(v.worst_damping)},
+                   {"modes with standard errors", NumberCell(v.intervals, "%.0f")},
+                   {"frequency intervals covering the truth", NumberCell(v.frequency_covered, "%.0f")},
+                   {"damping intervals covering the truth", NumberCell(v.damping_covered, "%.0f")},
+                   {"mean frequency error (sd)", NumberCell(v.frequency_bias_sd, "%+.2f")},
+                   {"mean damping error (sd)", NumberCell(v.damping_bias_sd, "%+.2f")},
+                   {"misses whose own 95 % interval is wider than the tolerance",
+                    NumberCell(v.unresolved_misses, "%.0f")},
                    {"failed extractions", NumberCell(v.failed, "%.0f")},
                    {"seconds per tire", NumberCell(v.seconds_per_tire)}});
   }
