@@ -189,6 +189,15 @@ int ExtractCommand(int argc, char** argv) {
                 !p.label ? "" : p.shape ? "on the model's coordinates" : "none: the outputs do not determine it");
   }
   for (const std::string& note : x.notes) std::printf("note: %s\n", note.c_str());
+  if (!x.routes.empty()) {
+    std::printf("\nthe two routes: identify on the FRFs and on these modes (masses known)\n"
+                "%-12s %12s %10s %12s %10s %8s %7s\n", "parameter", "direct", "std", "modal",
+                "std", "diff/sd", "ratio");
+    for (const RouteRow& r : x.routes) {
+      std::printf("%-12s %12.5g %10.3g %12.5g %10.3g %8.2f %7.2g\n", r.parameter.c_str(), r.direct,
+                  r.direct_std, r.modal, r.modal_std, r.DifferenceSd(), r.StdRatio());
+    }
+  }
   std::vector<std::pair<std::string, std::string>> files = {{FLAGS_output, DatasetToJson(x.dataset)}};
   if (!FLAGS_report.empty()) {
     files.emplace_back(FLAGS_report, ReportText(ExtractReport{ThisRun(argc, argv, std::nullopt),

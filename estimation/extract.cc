@@ -12,6 +12,21 @@
 namespace ringid {
 namespace {
 
+// The parameters both fits class yes, side by side.
+std::vector<RouteRow> Routes(const IdentifyResult& direct, const IdentifyResult& modal) {
+  std::vector<RouteRow> rows;
+  for (const ParameterEstimate& a : direct.estimates) {
+    if (!a.free || a.tied_to || a.identifiable != Identifiability::kYes || !a.std) continue;
+    for (const ParameterEstimate& b : modal.estimates) {
+      if (b.key.Text() != a.key.Text() || !b.free || b.identifiable != Identifiability::kYes || !b.std) {
+        continue;
+      }
+      rows.push_back({a.key.Text(), a.value, *a.std, b.value, *b.std});
+    }
+  }
+  return rows;
+}
+
 // The modes of `modal` relabelled by the model at the parameters `fit`
 // found for d's FRFs (datasets/pairing.h: shapes by MAC, the rest by
 // frequency). The modal stage's labels of modes without a shape are only a
@@ -133,6 +148,9 @@ void ExtractModalDataset(const ModalModel& model, const Dataset& d, const PlscfO
     if (!d.conditions[c].frf) continue;
     r->conditions.push_back({static_cast<int>(c), *d.conditions[c].frf, std::move(fits[c])});
   }
+  IdentifyResult modal;
+  Identify(model, r->dataset, IdentifyOptions{}, &modal);
+  if (modal.status.ok()) r->routes = Routes(fit, modal);
   r->status = Status::Success(std::to_string(r->dataset.modes.size()) + " modes");
 }
 

@@ -6,6 +6,7 @@
 #ifndef RINGID_ESTIMATION_EXTRACT_H_
 #define RINGID_ESTIMATION_EXTRACT_H_
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,12 +54,39 @@ struct ExtractedCondition {
   PlscfResult plscf;
 };
 
+// A parameter both routes determine (classed yes by each): fitted directly
+// to the FRFs and, through extraction, to the modal dataset (its masses
+// known), each with its standard error.
+struct RouteRow {
+  std::string parameter;  // as identify's report names it
+  double direct = 0, direct_std = 0;
+  double modal = 0, modal_std = 0;
+
+  // The difference in combined standard errors, and how much wider the
+  // modal route's interval is.
+  double DifferenceSd() const { return std::abs(direct - modal) / std::hypot(direct_std, modal_std); }
+  double StdRatio() const { return modal_std / direct_std; }
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("parameter", &parameter);
+    a->Visit("direct", &direct);
+    a->Visit("direct_std", &direct_std);
+    a->Visit("modal", &modal);
+    a->Visit("modal_std", &modal_std);
+    a->Derived("difference_sd", DifferenceSd());
+    a->Derived("std_ratio", StdRatio());
+  }
+};
+
 struct ExtractResult {
   Status status;
   Dataset dataset;  // the modes, the FRF dataset's conditions, known, initial, ties
   std::vector<ExtractedPole> poles;  // every condition's, ascending frequency in each
   std::vector<std::string> notes;    // what the dataset assumes
   std::vector<ExtractedCondition> conditions;  // each with an frf block
+  // The two routes side by side (issue 37 item 5): identify on the FRFs (the
+  // fit that names the modes) and on `dataset`; empty where the latter fails.
+  std::vector<RouteRow> routes;
 };
 
 // The modes in d's FRFs under `plscf`: each condition's physical poles, the

@@ -48,6 +48,7 @@ ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source) {
                              std::to_string(x.dataset.modes.size()) + " kept as modes");
   b.poles = x.poles;
   b.notes = x.notes;
+  b.routes = x.routes;
   for (const ExtractedCondition& c : x.conditions) {
     ExtractCondition e;
     e.condition = c.condition;

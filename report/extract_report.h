@@ -76,6 +76,7 @@ struct ExtractBody {
   std::vector<ExtractedPole> poles;  // every condition's physical poles
   std::vector<ExtractCondition> conditions;  // each with an frf block
   std::vector<std::string> notes;  // what the modal dataset assumes
+  std::vector<RouteRow> routes;    // the direct and the modal route side by side
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -84,6 +85,7 @@ struct ExtractBody {
     a->Visit("poles", &poles);
     a->Visit("conditions", &conditions);
     a->Visit("notes", &notes);
+    a->Visit("routes", &routes);
   }
 };
 

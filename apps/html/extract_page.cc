@@ -250,6 +250,23 @@ void ConditionSection(const ExtractBody& b, const ExtractCondition& c, Page* pag
   }
 }
 
+// The direct and the modal route, per parameter both determine.
+void RoutesTable(const ExtractBody& b, Page* page) {
+  if (b.routes.empty()) return;
+  std::vector<Row> rows;
+  for (const RouteRow& r : b.routes) {
+    rows.push_back({TextCell(r.parameter), NumberCell(r.direct, "%.5g"), NumberCell(r.direct_std, "%.3g"),
+                    NumberCell(r.modal, "%.5g"), NumberCell(r.modal_std, "%.3g"),
+                    NumberCell(r.DifferenceSd(), "%.2f"), NumberCell(r.StdRatio(), "%.2g")});
+  }
+  page->Heading("The two routes");
+  page->Note("identify on the FRFs (the direct route) and on the extracted modes with the masses "
+             "known at their initial values (the modal route), for the parameters both class "
+             "identifiable: their difference in combined standard errors, and how many times "
+             "wider the modal route's standard error is.");
+  page->Table({"parameter", "direct", "σ", "modal", "σ", "difference (σ)", "σ ratio"}, rows);
+}
+
 }  // namespace
 
 void ExtractPage(const ExtractReport& report, Page* page) {
@@ -261,6 +278,7 @@ void ExtractPage(const ExtractReport& report, Page* page) {
                  {"physical poles", NumberCell(b.poles.size(), "%.0f")}});
   for (const std::string& note : b.notes) page->Note("Note: " + note);
   PolesTable(b, page);
+  RoutesTable(b, page);
   for (const ExtractCondition& c : b.conditions) ConditionSection(b, c, page);
 }
 
