@@ -46,7 +46,7 @@ long=(
   CampaignOfDiagnosesDrawsTheGaps
   IdentifiabilityDrawsSpectrumCorrelationAndProfiles
   IdentifiabilitySaysAJumpBesideTheBound
-  'PageRendersWithEveryFigureWhole/(identifiability|campaign|diagnose)( |$)'
+  'PageRendersWithEveryFigureWhole/(identifiability|campaign|diagnose|extract)( |$)'
   # 60-120 s each under the sanitizers (2026-11-27), beside a shorter test of
   # the same path: RollingTest.LabelsCarriedFromAnAnchor..., CampaignResumeTest's
   # other tests (and CI's campaign benchmark), DiagnoseTest.NamesLugCoupling...,
@@ -66,5 +66,12 @@ long=(
   # ABaselineStartFromAnAbsorbedSensorMassMovesItIntoTheMasses (0.1 s each).
   DiagnoseTest.OnFrfsTheFreeMassesAbsorbASensorMassAndTheReportSaysSo
   DiagnoseTest.OnFrfsALugCouplingIsNamedAboveItsStatedDetectableSizeAndNotBelow
+  # extract fits the FRFs to name the modes (six starts through the modal stage, 1-3 s
+  # optimised): its noise-free test and its report test beside them run the same paths.
+  ExtractTest.TheTwoRoutesAgreeWithinTheirIntervalsAndTheDirectOnesAreNarrower
+  ExtractTest.ExtractThenIdentifyWithTheMassesWeighedRecoversTheTruth
+  ReportTest.ExtractRoundTripsByteForByteAndIsDocumented
+  # 100 refinements (2-3 s optimised); the noise-free refinement test runs its paths.
+  ModalRefineTest.TheStandardErrorsOfTwoCloseDampedModesCoverTheTruth
 )
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -E "$(IFS='|'; echo "${long[*]}")"
