@@ -386,7 +386,8 @@ class WhatTheModuleLacked(ReportTestCase):
             with open(modes) as f:
                 cli = json.load(f)
             x = ringid.extract(frfs)
-            self.assertEqual(x.dataset.to_dict(), cli)
+            # The module and the command are separately compiled: equal to rounding.
+            self.assertSameReport(x.dataset.to_dict(), cli, path="dataset", tolerance=1e-9)
             # Noise-free FRFs: each labelled mode at the model's frequency at the truth.
             model = ringid.predict(CAR_TIRE).to_dict()["modes"]
             truth_hz = {m["label"]: m["model_hz"] for m in model}
@@ -395,6 +396,12 @@ class WhatTheModuleLacked(ReportTestCase):
             for m in cli["conditions"][0]["modes"]:
                 self.assertAlmostEqual(m["frequency_hz"] / truth_hz[m["label"]], 1, delta=1e-6)
             self.assertEqual([p["label"] is not None for p in x.poles], [True] * 7)
+            for p in x.poles:
+                self.assertGreater(p["frequency_sigma_hz"], 0)
+            self.assertGreaterEqual(len(x.routes), 6)
+            for r in x.routes:  # as the command prints them (the physics: extract_test.cc)
+                self.assertAlmostEqual(r["difference_sd"],
+                                       abs(r["direct"] - r["modal"]) / math.hypot(r["direct_std"], r["modal_std"]))
             with self.assertRaises(ringid.Error) as refused:
                 ringid.extract(TABLE1)
             self.assertIn(TABLE1 + ": conditions: no condition has an frf block", str(refused.exception))
