@@ -76,6 +76,19 @@ TEST(FrfStartTest, TheModesInNoiseFreeFrfsAreTheModelsWithTheirShapesAndLabels) 
   }
 }
 
+// identify on `d` with its default starts, and with one start at the truth
+// (the reference: the best fit's chi-square), analytic derivatives.
+void FitAndFitAtTruth(const Dataset& d, const Parameters& truth, IdentifyResult* fit,
+                      IdentifyResult* at_truth) {
+  IdentifyOptions o;
+  o.residuals.derivatives = Derivatives::kAnalytic;
+  Identify(RigidRingModel(), d, o, fit);
+  Dataset t = d;
+  for (auto& [q, v] : t.initial) v = truth[q];
+  o.starts = 1;
+  Identify(RigidRingModel(), t, o, at_truth);
+}
+
 // Issue 36's criterion on a few tires (validation's frf suite runs 100):
 // from initial values scattered within a factor 3, masses free, identify's
 // default starts reach the chi-square of the fit started at the truth.
@@ -83,16 +96,9 @@ TEST(FrfStartTest, FromInitialValuesScatteredByAFactorThreeTheBestFitIsFound) {
   for (unsigned seed : {1u, 4u}) {  // without the modal stage six starts miss both
     std::mt19937_64 rng(seed);
     const Parameters truth = ScatteredTire(&rng);
-    const Dataset d = Hammer(truth, 0.02, 3, 2.0, &rng);
-    IdentifyOptions o;
-    o.residuals.derivatives = Derivatives::kAnalytic;
     IdentifyResult fit, at_truth;
-    Identify(RigidRingModel(), d, o, &fit);
+    FitAndFitAtTruth(Hammer(truth, 0.02, 3, 2.0, &rng), truth, &fit, &at_truth);
     ASSERT_TRUE(fit.status.ok()) << fit.status.message;
-    Dataset t = d;
-    for (auto& [q, v] : t.initial) v = truth[q];
-    o.starts = 1;
-    Identify(RigidRingModel(), t, o, &at_truth);
     ASSERT_TRUE(at_truth.status.ok()) << at_truth.status.message;
     EXPECT_LE(fit.fit.chi_square, at_truth.fit.chi_square + 1) << "seed " << seed;
     EXPECT_FALSE(fit.fit.poor) << "seed " << seed << ": " << fit.fit.verdict;
@@ -107,16 +113,9 @@ TEST(FrfStartTest, FromInitialValuesScatteredByAFactorThreeTheBestFitIsFound) {
 TEST(FrfStartTest, ShapelessModesAreLabelledByTheFrfsSoTheStartsAgree) {
   std::mt19937_64 rng(6);
   const Parameters truth = ScatteredTire(&rng);
-  const Dataset d = Hammer(truth, 0.02, 3, 1.0, &rng);
-  IdentifyOptions o;
-  o.residuals.derivatives = Derivatives::kAnalytic;
   IdentifyResult fit, at_truth;
-  Identify(RigidRingModel(), d, o, &fit);
+  FitAndFitAtTruth(Hammer(truth, 0.02, 3, 1.0, &rng), truth, &fit, &at_truth);
   ASSERT_TRUE(fit.status.ok()) << fit.status.message;
-  Dataset t = d;
-  for (auto& [q, v] : t.initial) v = truth[q];
-  o.starts = 1;
-  Identify(RigidRingModel(), t, o, &at_truth);
   ASSERT_TRUE(at_truth.status.ok()) << at_truth.status.message;
   EXPECT_LE(fit.fit.chi_square, at_truth.fit.chi_square + 1);
   EXPECT_GE(fit.start_agreement.at_best, 5) << "of " << fit.start_agreement.of;
