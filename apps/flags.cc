@@ -121,7 +121,7 @@ const std::vector<std::string>& SimulateFlags() {
 
 const std::vector<std::string>& ExtractFlags() {
   static const std::vector<std::string> flags =
-      Joined({"dataset", "output", "report"}, OptionNames(OptionsOf<ExtractSettings>()));
+      Joined({"dataset", "parameters", "output", "report"}, OptionNames(OptionsOf<ExtractSettings>()));
   return flags;
 }
 

@@ -173,9 +173,17 @@ int ExtractCommand(int argc, char** argv) {
   if (!CheckOutputs({{"output", FLAGS_output}, {"report", FLAGS_report}}, Inputs(), &error)) {
     return Usage(error);
   }
+  Parameters guess;
+  if (!FLAGS_parameters.empty()) {
+    LoadError load;
+    std::vector<std::string> notes;
+    if (!LoadParameters(FLAGS_parameters, {}, &guess, &load, &notes)) return Usage(load.OneLine());
+    for (const std::string& note : notes) std::printf("%s%s\n", kParameterNotePrefix, note.c_str());
+  }
   ExtractResult x;
   InputError bad;
-  if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad)) {
+  if (!ExtractDataset(FLAGS_dataset, settings, &x, &bad,
+                      FLAGS_parameters.empty() ? nullptr : &guess)) {
     if (x.status.invalid_input()) return Usage(bad.line);
     std::fprintf(stderr, "ringid: extract: %s\n", bad.line.c_str());
     return kExitFailure;
@@ -413,10 +421,11 @@ const std::vector<Command>& Commands() {
       {"extract", "--dataset=FRF.json --output=MODES.json",
        "the modes in a dataset's FRFs (pLSCF: stabilisation diagram, physical\n"
        "poles, LSFD residues) as a modal dataset identify reads, labelled by fit\n"
-       "from the dataset's initial values; masses made known (modes carry no\n"
-       "modal mass). --report=FILE: the stabilisation diagram, the poles and\n"
+       "from the dataset's initial values (or --parameters: weighed masses, say);\n"
+       "masses made known (modes carry no modal mass). --report=FILE: the\n"
+       "stabilisation diagram, the poles and\n"
        "each FRF against its LSFD synthesis with its FRAC (ringid report draws it)",
-       ExtractFlags(), ExtractCommand},
+       ExtractFlags(), ExtractCommand, ""},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"

@@ -3,18 +3,24 @@
 namespace ringid {
 
 bool ExtractDataset(const std::string& path, const ExtractSettings& s, ExtractResult* out,
-                    InputError* error) {
+                    InputError* error, const Parameters* guess) {
   Dataset d;
   LoadError load;
   if (!LoadDataset(path, &d, &load)) {
     *error = InputError::Of(load);
     return false;
   }
-  return ExtractDataset(d, path, s, out, error);
+  return ExtractDataset(d, path, s, out, error, guess);
 }
 
-bool ExtractDataset(const Dataset& d, const std::string& path, const ExtractSettings& s,
-                    ExtractResult* out, InputError* error) {
+bool ExtractDataset(const Dataset& given, const std::string& path, const ExtractSettings& s,
+                    ExtractResult* out, InputError* error, const Parameters* guess) {
+  Dataset d = given;
+  if (guess) {
+    for (auto& [q, v] : d.initial) {
+      if (guess->IsSet(q)) v = (*guess)[q];
+    }
+  }
   PlscfOptions plscf;
   plscf.max_order = s.max_model_order;
   std::string why;

@@ -13,14 +13,16 @@
 
 namespace ringid {
 
-// ExtractModalDataset of the dataset at `path` under s. False with the
-// error: the file, the options, a dataset without FRFs or FRFs without a
-// mode (exit 2), or the labelling failed (out->status says so).
+// ExtractModalDataset of the dataset at `path` under s; where `guess` is
+// given (--parameters: a parameter set, weighed masses, say), its values
+// replace the dataset's initial ones they name. False with the error: the
+// file, the options, a dataset without FRFs or FRFs without a mode (exit 2),
+// or the labelling failed (out->status says so).
 bool ExtractDataset(const std::string& path, const ExtractSettings& s, ExtractResult* out,
-                    InputError* error);
+                    InputError* error, const Parameters* guess = nullptr);
 // The same of a dataset read from `source` (its errors name it).
 bool ExtractDataset(const Dataset& d, const std::string& source, const ExtractSettings& s,
-                    ExtractResult* out, InputError* error);
+                    ExtractResult* out, InputError* error, const Parameters* guess = nullptr);
 
 // The report of `x`, extracted from the dataset `source` (--report): each
 // function's LSFD synthesis on the lines pLSCF used

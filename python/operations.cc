@@ -5,6 +5,7 @@
 
 #include <csignal>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -295,16 +296,24 @@ std::shared_ptr<SimulateHeld> SimulatePy(py::handle parameters, py::handle outpu
   return held;
 }
 
-std::shared_ptr<ExtractResult> ExtractPy(py::handle dataset, const py::kwargs& kw) {
+std::shared_ptr<ExtractResult> ExtractPy(py::handle dataset, py::handle parameters,
+                                         const py::kwargs& kw) {
   std::vector<std::string> argv;
   const ExtractSettings s = ReadOptions<ExtractSettings>("extract", kw, &argv);
   const auto loaded = DatasetArg(dataset);
+  std::optional<Parameters> guess;
+  if (py::isinstance<LoadedParameters>(parameters)) {
+    guess = parameters.cast<std::shared_ptr<LoadedParameters>>()->values;
+  } else if (!parameters.is_none()) {
+    guess = LoadParametersFrom(parameters, {})->values;
+  }
   auto held = std::make_shared<ExtractResult>();
   InputError error;
   bool ok = false;
   {
     py::gil_scoped_release release;
-    ok = ExtractDataset(loaded->dataset, loaded->Name(), s, held.get(), &error);
+    ok = ExtractDataset(loaded->dataset, loaded->Name(), s, held.get(), &error,
+                        guess ? &*guess : nullptr);
   }
   if (!ok && !held->status.invalid_input()) throw Error::Usage("extract: " + error.line);
   if (!ok) throw Error::Of(error);
@@ -464,11 +473,13 @@ void BindOperations(py::module_& m) {
             "writes (simulated.json and simulated_truth.json when not given). With lug_forces=, "
             "the axle's response to those lug forces at speeds= instead, a ResponseDataset "
             "(output= simulated_response.json when not given; no truth).").c_str());
-  m.def("extract", &ExtractPy, py::arg("dataset"),
-        Doc<ExtractSettings>("extract(dataset, **options) -> ExtractResult",
+  m.def("extract", &ExtractPy, py::arg("dataset"), py::kw_only(),
+        py::arg("parameters") = py::none(),
+        Doc<ExtractSettings>("extract(dataset, parameters=None, **options) -> ExtractResult",
                              "The modes in a dataset's FRFs as a modal dataset, labelled by fit "
-                             "from its initial values, masses made known: `ringid extract`. " +
-                                 dataset_arg).c_str());
+                             "from its initial values (parameters=: a parameter set's path or "
+                             "ParameterSet in their place, as --parameters), masses made known: "
+                             "`ringid extract`. " + dataset_arg).c_str());
   m.def("forces", &ForcesPy, py::arg("parameters"), py::arg("dataset"),
         Doc<ForcesSettings>(
             "forces(parameters, dataset, **options) -> ForcesResult",

@@ -665,11 +665,12 @@ TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
     return text;
   };
   const std::string sentence =
-      "--parameters of predict, simulate --lug_forces, export, import and forces also reads the "
+      "--parameters of predict, simulate --lug_forces, extract, export, import and forces also "
+      "reads the "
       "rigid-ring part of an MF-Swift FILE.tir (docs/tir.md), what a .tir cannot hold given by "
       "--set";
   EXPECT_NE(OneLine(Ringid("help").out).find("a .tir: " + sentence + "."), std::string::npos);
-  for (const char* command : {"forces", "predict", "export", "import", "simulate"}) {
+  for (const char* command : {"forces", "predict", "extract", "export", "import", "simulate"}) {
     EXPECT_NE(OneLine(Ringid(std::string(command) + " --help").out).find(sentence),
               std::string::npos)
         << command;
@@ -690,6 +691,12 @@ TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
   }
   RunResult r = Ringid("export --parameters=" + tir + " --format=json");
   EXPECT_EQ(r.status, 0) << r.err;
+  // extract takes the values a .tir holds in place of the dataset's initial ones.
+  r = Ringid("extract --parameters=" + tir + " --dataset=" +
+             Source("datasets/examples/car_tire_hammer_frf.json") + " --output=" +
+             Scratch("tir_extract.json"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("parameters: no [VERTICAL] FNOMIN"), std::string::npos) << r.out;  // read
   r = Ringid("import --uff=" + Source("datasets/examples/car_tire_lab.uff") + " --map=" +
              Source("datasets/examples/car_tire_lab_map.json") + " --parameters=" + tir +
              " --output=" + Scratch("tir_import.json"));

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic.h"
+#include "datasets/tir_parameters.h"
 #include "estimation/identify.h"
 #include "report/extract_report.h"
 #include "tests/test_support.h"
@@ -125,6 +126,32 @@ TEST(ExtractTest, TheTwoRoutesAgreeWithinTheirIntervalsAndTheDirectOnesAreNarrow
     narrower += r.direct_std < r.modal_std;
   }
   EXPECT_GE(narrower, static_cast<int>(x.routes.size()) - 2);
+}
+
+// --parameters: a parameter set's values (the example's truth, weighed
+// masses among them) take the place of the dataset's initial values, so the
+// masses the modal dataset holds known are the set's, not the guesses'.
+TEST(ExtractTest, AParameterSetsMassesAreTheOnesTheModalDatasetHolds) {
+  const std::string out = testing::Scratch("extract_with_parameters.json");
+  const std::string set = testing::SourcePath("datasets/examples/car_tire.json");
+  const testing::RunResult r = testing::Ringid(
+      "extract --dataset=" + testing::SourcePath("datasets/examples/car_tire_hammer_frf.json") +
+      " --parameters=" + set + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  Dataset d;
+  LoadError load;
+  ASSERT_TRUE(LoadDataset(out, &d, &load)) << load.OneLine();
+  Parameters p;
+  std::vector<std::string> notes;
+  ASSERT_TRUE(LoadParameters(set, {}, &p, &load, &notes)) << load.OneLine();
+  int masses = 0;
+  for (const auto& [q, v] : d.known) {
+    if (!IsMassOrInertia(q)) continue;
+    EXPECT_EQ(v, p[q]) << ParamName(q);
+    ++masses;
+  }
+  EXPECT_EQ(masses, 5);
+  EXPECT_EQ(d.modes.size(), 7u);
 }
 
 TEST(ExtractTest, ADatasetWithoutFrfsIsOneLineExitTwoAndNothingWritten) {
