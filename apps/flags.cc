@@ -22,7 +22,7 @@
 // their lists (operations/options.h, RegisterOptionFlags below).
 DEFINE_string(dataset, "", "modal dataset (docs/conventions.md §3); a campaign takes FILE,DIR,... (a directory stands for its *.json)");
 DEFINE_string(parameters, "", "parameter set (ringid-parameters/1, or an identify report)");
-DEFINE_string(output, "", "write the JSON report here (simulate: the dataset; report: the HTML page; export: the file, else to standard output)");
+DEFINE_string(output, "", "write the JSON report here (simulate, extract: the dataset; report: the HTML page; export: the file, else to standard output)");
 DEFINE_string(save_parameters, "", "also write the fitted parameter set (ringid-parameters/1) here");
 DEFINE_string(truth, "", "write the truth (effects and every value) here");
 DEFINE_string(report, "", "extract: also write the JSON report here (the stabilisation diagram, the poles, each FRF against its synthesis; docs/reports.md)");

@@ -419,12 +419,13 @@ const std::vector<Command>& Commands() {
        "the axle's response to those lug forces at --speeds (docs/forces.md)",
        SimulateFlags(), SimulateCommand, "lug_forces"},
       {"extract", "--dataset=FRF.json --output=MODES.json",
-       "the modes in a dataset's FRFs (pLSCF: stabilisation diagram, physical\n"
-       "poles, LSFD residues) as a modal dataset identify reads, labelled by fit\n"
-       "from the dataset's initial values (or --parameters: weighed masses, say);\n"
-       "masses made known (modes carry no modal mass). --report=FILE: the\n"
-       "stabilisation diagram, the poles and\n"
-       "each FRF against its LSFD synthesis with its FRAC (ringid report draws it)",
+       "the modes in a dataset's FRFs (pLSCF's stabilisation diagram and physical\n"
+       "poles, refined by maximum likelihood with standard errors) as a modal\n"
+       "dataset identify reads, named as the model names them at the fit to the\n"
+       "FRFs from the dataset's initial values (or --parameters: weighed masses,\n"
+       "say); masses made known (modes carry no modal mass); the two routes side\n"
+       "by side. --report=FILE: the diagram, the poles and each FRF against its\n"
+       "LSFD synthesis with its FRAC (ringid report draws it)",
        ExtractFlags(), ExtractCommand, ""},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
