@@ -70,6 +70,8 @@ long=(
   # optimised): its noise-free test and its report test beside them run the same paths.
   ExtractTest.TheTwoRoutesAgreeWithinTheirIntervalsAndTheDirectOnesAreNarrower
   ExtractTest.ExtractThenIdentifyWithTheMassesWeighedRecoversTheTruth
+  ExtractTest.NoiseFreeFrfsGiveTheModelsModesLabelledAsTheModelLabelsThem
+  ExtractTest.AParameterSetsMassesAreTheOnesTheModalDatasetHolds
   ReportTest.ExtractRoundTripsByteForByteAndIsDocumented
   # 100 refinements (2-3 s optimised); the noise-free refinement test runs its paths.
   ModalRefineTest.TheStandardErrorsOfTwoCloseDampedModesCoverTheTruth
