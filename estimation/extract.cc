@@ -34,6 +34,10 @@ std::vector<RouteRow> Routes(const IdentifyResult& direct, const IdentifyResult&
 bool RelabelAtFit(const ModalModel& model, const Dataset& d, const internal::ParameterSetup& setup,
                   const Eigen::VectorXd& fit, Dataset* modal) {
   for (int c = 0; c < static_cast<int>(d.conditions.size()); ++c) {
+    // A condition with measured modes keeps them as measured (ModalStageDataset).
+    if (std::any_of(d.modes.begin(), d.modes.end(), [&](const MeasuredMode& m) { return m.condition == c; })) {
+      continue;
+    }
     std::vector<MeasuredMode*> in;
     for (MeasuredMode& m : modal->modes) {
       if (m.condition == c) in.push_back(&m);
