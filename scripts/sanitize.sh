@@ -67,11 +67,15 @@ long=(
   DiagnoseTest.OnFrfsTheFreeMassesAbsorbASensorMassAndTheReportSaysSo
   DiagnoseTest.OnFrfsALugCouplingIsNamedAboveItsStatedDetectableSizeAndNotBelow
   # extract fits the FRFs to name the modes (six starts through the modal stage, 1-3 s
-  # optimised): its noise-free test and its report test beside them run the same paths.
+  # optimised): ExtractTest.TheReportAndTheDatasetAreWrittenTogetherOrNotAtAll runs the
+  # command's paths, and extract_page.cc's under ASan only here (its figures' code is
+  # identify's FRF section, which the identify_frf pages run).
   ExtractTest.TheTwoRoutesAgreeWithinTheirIntervalsAndTheDirectOnesAreNarrower
   ExtractTest.ExtractThenIdentifyWithTheMassesWeighedRecoversTheTruth
   ExtractTest.NoiseFreeFrfsGiveTheModelsModesLabelledAsTheModelLabelsThem
   ExtractTest.AParameterSetsMassesAreTheOnesTheModalDatasetHolds
+  ExtractTest.TheReportOfNoiseFreeFrfsSynthesisesEachFunctionAndItsDiagramHoldsTheModes
+  HtmlReportTest.ExtractDrawsTheDiagramAndEachFunctionAgainstItsSynthesis
   ReportTest.ExtractRoundTripsByteForByteAndIsDocumented
   # 100 refinements (2-3 s optimised); the noise-free refinement test runs its paths.
   ModalRefineTest.TheStandardErrorsOfTwoCloseDampedModesCoverTheTruth
