@@ -383,37 +383,12 @@ void BindExtract(py::module_& m) {
         return d;
       }, "The modes as a ringid.Dataset, for identify and the others.")
       .def_property_readonly("poles", [](const ExtractResult& x) {
-        py::list out;
-        for (const ExtractedPole& p : x.poles) {
-          py::dict d;
-          d["condition"] = p.condition;
-          d["frequency_hz"] = p.frequency_hz;
-          d["damping_ratio"] = p.damping_ratio;
-          d["stable_orders"] = p.stable_orders;
-          d["frequency_sigma_hz"] = p.frequency_sigma_hz ? py::object(py::float_(*p.frequency_sigma_hz)) : py::object(py::none());
-          d["damping_sigma"] = p.damping_sigma ? py::object(py::float_(*p.damping_sigma)) : py::object(py::none());
-          d["label"] = p.label ? py::object(py::str(LabelName(*p.label))) : py::object(py::none());
-          d["shape"] = p.shape;
-          out.append(d);
-        }
-        return out;
+        return JsonLoads(JsonWriter::ToJson(x.poles).dump());  // the report's field list
       }, "Every physical pole of every condition: condition, frequency_hz, damping_ratio, their "
-         "standard errors frequency_sigma_hz and damping_sigma (None without), stable_orders, label "
+         "standard errors frequency_sigma_hz and damping_sigma (absent without), stable_orders, label "
          "(None where not kept) and shape (whether the outputs gave one).")
       .def_property_readonly("routes", [](const ExtractResult& x) {
-        py::list out;
-        for (const RouteRow& r : x.routes) {
-          py::dict d;
-          d["parameter"] = r.parameter;
-          d["direct"] = r.direct;
-          d["direct_std"] = r.direct_std;
-          d["modal"] = r.modal;
-          d["modal_std"] = r.modal_std;
-          d["difference_sd"] = r.DifferenceSd();
-          d["std_ratio"] = r.StdRatio();
-          out.append(d);
-        }
-        return out;
+        return JsonLoads(JsonWriter::ToJson(x.routes).dump());
       }, "The two routes side by side: per parameter both class identifiable, identify on the "
          "FRFs (direct, direct_std) and on the extracted modes (modal, modal_std), their "
          "difference in combined standard errors and the ratio of the errors.")
