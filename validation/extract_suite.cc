@@ -51,34 +51,44 @@ bool HammerTire(const Parameters& truth, const ExtractSuite& suite, std::mt19937
 }
 
 // The extraction of one tire against the model's modes at its truth.
-void Score(const ExtractSuite& suite, const Parameters& truth, const ExtractResult& r,
+void Score(const ExtractSuite& suite, const Parameters& truth, const ExtractResult& r, int tire,
            ExtractVariant* v) {
   const ModalSolution s = RigidRingModel().Solve(truth);
   for (const Mode& m : s.modes) {
     ++v->modes;
-    for (const MeasuredMode& x : r.dataset.modes) {
-      if (x.label != m.label) continue;
-      ++v->found;
-      const double df = std::abs(x.frequency_hz / m.frequency_hz - 1);
-      const double dz = x.damping_ratio ? std::abs(*x.damping_ratio / m.damping_ratio - 1) : INFINITY;
-      v->frequency_within += df <= suite.frequency_tolerance;
-      v->damping_within += dz <= suite.damping_tolerance;
-      v->worst_frequency = std::max(v->worst_frequency, df);
-      v->worst_damping = std::max(v->worst_damping, dz);
-      if (!x.frequency_sigma_hz || !x.damping_sigma || !x.damping_ratio) continue;
-      const double zf = (x.frequency_hz - m.frequency_hz) / *x.frequency_sigma_hz;
-      const double zd = (*x.damping_ratio - m.damping_ratio) / *x.damping_sigma;
-      v->unresolved_misses +=
-          (df > suite.frequency_tolerance &&
-           kNormal95 * *x.frequency_sigma_hz > suite.frequency_tolerance * m.frequency_hz) +
-          (dz > suite.damping_tolerance &&
-           kNormal95 * *x.damping_sigma > suite.damping_tolerance * m.damping_ratio);
-      ++v->intervals;
-      v->frequency_covered += std::abs(zf) <= kNormal95;
-      v->damping_covered += std::abs(zd) <= kNormal95;
-      v->frequency_bias_sd += zf;  // a sum until RunVariant divides
-      v->damping_bias_sd += zd;
+    ExtractMiss miss{tire, LabelName(m.label), m.frequency_hz, m.damping_ratio};
+    const auto found = std::find_if(r.dataset.modes.begin(), r.dataset.modes.end(),
+                                    [&](const MeasuredMode& x) { return x.label == m.label; });
+    if (found == r.dataset.modes.end()) {
+      v->misses.push_back(miss);
+      continue;
     }
+    const MeasuredMode& x = *found;
+    ++v->found;
+    miss.extracted_frequency_hz = x.frequency_hz;
+    miss.extracted_damping_ratio = x.damping_ratio;
+    miss.frequency_sigma_hz = x.frequency_sigma_hz;
+    miss.damping_sigma = x.damping_sigma;
+    const double df = std::abs(x.frequency_hz / m.frequency_hz - 1);
+    const double dz = x.damping_ratio ? std::abs(*x.damping_ratio / m.damping_ratio - 1) : INFINITY;
+    v->frequency_within += df <= suite.frequency_tolerance;
+    v->damping_within += dz <= suite.damping_tolerance;
+    if (df > suite.frequency_tolerance || dz > suite.damping_tolerance) v->misses.push_back(miss);
+    v->worst_frequency = std::max(v->worst_frequency, df);
+    v->worst_damping = std::max(v->worst_damping, dz);
+    if (!x.frequency_sigma_hz || !x.damping_sigma || !x.damping_ratio) continue;
+    const double zf = (x.frequency_hz - m.frequency_hz) / *x.frequency_sigma_hz;
+    const double zd = (*x.damping_ratio - m.damping_ratio) / *x.damping_sigma;
+    v->unresolved_misses +=
+        (df > suite.frequency_tolerance &&
+         kNormal95 * *x.frequency_sigma_hz > suite.frequency_tolerance * m.frequency_hz) +
+        (dz > suite.damping_tolerance &&
+         kNormal95 * *x.damping_sigma > suite.damping_tolerance * m.damping_ratio);
+    ++v->intervals;
+    v->frequency_covered += std::abs(zf) <= kNormal95;
+    v->damping_covered += std::abs(zd) <= kNormal95;
+    v->frequency_bias_sd += zf;  // a sum until RunVariant divides
+    v->damping_bias_sd += zd;
   }
 }
 
@@ -116,17 +126,12 @@ Status RunVariant(const SuiteOptions& o, bool close_pair, ExtractSuite* suite, E
       if (draw == 100) return Status::Failed("no plausible tire in 100 draws: " + why);
     }
     d.name = v->name + "_" + std::to_string(k);
-    if (close_pair) {
-      const ModalSolution s = RigidRingModel().Solve(truth);
-      v->pair_separation_hz = WithLabel(s, ModeLabel::kVertical)->frequency_hz -
-                              WithLabel(s, ModeLabel::kCamber)->frequency_hz;
-    }
     const auto start = std::chrono::steady_clock::now();
     ExtractResult r;
     ExtractModalDataset(RigidRingModel(), d, PlscfOptions{}, &r);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++v->tires;
-    if (r.status.ok()) Score(*suite, truth, r, v);
+    if (r.status.ok()) Score(*suite, truth, r, k, v);
     else ++v->failed;
     if (o.on_case) o.on_case(++*done, total);
   }
@@ -227,6 +232,21 @@ std::string ExtractSuite::Markdown() const {
   for (const ExtractVariant& v : variants) {
     o << "\n" << v.name << ": " << v.unresolved_misses
       << " of the values outside their tolerance have a 95 % interval wider than it";
+  }
+  o << "\n\n| variant | tire | mode | f truth (Hz) | f (Hz) | sd | zeta truth | zeta | sd |\n"
+       "|---|---|---|---|---|---|---|---|---|\n";
+  const auto value = [](const std::optional<double>& x, const char* format) {
+    char text[40];
+    std::snprintf(text, sizeof text, format, x.value_or(NAN));
+    return x ? std::string(text) : std::string("-");
+  };
+  for (const ExtractVariant& v : variants) {
+    for (const ExtractMiss& m : v.misses) {
+      o << "| " << v.name << " | " << m.tire << " | " << m.label << " | " << value(m.frequency_hz, "%.2f")
+        << " | " << value(m.extracted_frequency_hz, "%.2f") << " | " << value(m.frequency_sigma_hz, "%.2f")
+        << " | " << value(m.damping_ratio, "%.4f") << " | " << value(m.extracted_damping_ratio, "%.4f")
+        << " | " << value(m.damping_sigma, "%.4f") << " |\n";
+    }
   }
   o << "\n\nclose_pair: the camber mode " << pair_gap_hz << " Hz below the vertical one, both at zeta "
     << pair_damping << "; " << 100 * frf_noise << " % noise, lines every " << line_step_hz

@@ -4,6 +4,7 @@
 #ifndef RINGID_VALIDATION_EXTRACT_SUITE_H_
 #define RINGID_VALIDATION_EXTRACT_SUITE_H_
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,27 @@
 #include "validation/suites.h"
 
 namespace ringid {
+
+// A mode of one tire not found, or outside a tolerance: what the
+// extraction gave beside the truth (none where it gave nothing).
+struct ExtractMiss {
+  int tire = 0;  // its index in the variant
+  std::string label;
+  double frequency_hz = 0, damping_ratio = 0;  // at the truth
+  std::optional<double> extracted_frequency_hz, extracted_damping_ratio;
+  std::optional<double> frequency_sigma_hz, damping_sigma;
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("tire", &tire);
+    a->Visit("label", &label);
+    a->Visit("frequency_hz", &frequency_hz);
+    a->Visit("damping_ratio", &damping_ratio);
+    a->Visit("extracted_frequency_hz", &extracted_frequency_hz);
+    a->Visit("extracted_damping_ratio", &extracted_damping_ratio);
+    a->Visit("frequency_sigma_hz", &frequency_sigma_hz);
+    a->Visit("damping_sigma", &damping_sigma);
+  }
+};
 
 // Per variant: the tires' modes at the truth (`modes`), those the extraction
 // labelled as the model does (`found`), and of those, the frequencies and
@@ -34,8 +56,7 @@ struct ExtractVariant {
   // Of the values outside their tolerance, those whose own 95 % interval is
   // wider than the tolerance: the data do not determine them that closely.
   int unresolved_misses = 0;
-  // close_pair: the last tire's pair separation at the truth.
-  double pair_separation_hz = 0;
+  std::vector<ExtractMiss> misses;
   double seconds_per_tire = 0;
   template <class Archive>
   void Serialize(Archive* a) {
@@ -54,7 +75,7 @@ struct ExtractVariant {
     a->Visit("frequency_bias_sd", &frequency_bias_sd);
     a->Visit("damping_bias_sd", &damping_bias_sd);
     a->Visit("unresolved_misses", &unresolved_misses);
-    a->Visit("pair_separation_hz", &pair_separation_hz);
+    a->Visit("misses", &misses);
     a->Visit("seconds_per_tire", &seconds_per_tire);
   }
 };

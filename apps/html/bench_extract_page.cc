@@ -39,6 +39,19 @@ void BenchExtractPage(const BenchExtractReport& report, Page* page) {
                    {"failed extractions", NumberCell(v.failed, "%.0f")},
                    {"seconds per tire", NumberCell(v.seconds_per_tire)}});
   }
+  std::vector<Row> rows;
+  for (const ExtractVariant& v : suite.variants) {
+    for (const ExtractMiss& m : v.misses) {
+      rows.push_back({TextCell(v.name), NumberCell(m.tire, "%.0f"), TextCell(m.label),
+                      NumberCell(m.frequency_hz, "%.2f"), NumberCell(m.extracted_frequency_hz, "%.2f"),
+                      NumberCell(m.frequency_sigma_hz, "%.2f"), NumberCell(m.damping_ratio, "%.4f"),
+                      NumberCell(m.extracted_damping_ratio, "%.4f"), NumberCell(m.damping_sigma, "%.4f")});
+    }
+  }
+  page->TableSection("Modes missed or outside a tolerance",
+                     {"variant", "tire", "mode", "frequency at the truth (Hz)", "extracted (Hz)", "sd (Hz)",
+                      "damping ratio at the truth", "extracted", "sd"},
+                     rows);
 }
 
 }  // namespace ringid::html
