@@ -51,17 +51,20 @@ void Put(double* jacobian, int cols, size_t k, int c, Complex z) {
 // H = sum_r [R a + conj(R) b] + lower s^q / s² + upper s^q, a = 1 / (s - λ),
 // b = 1 / (s - conj λ): dH/dλ = R a², dH/d(conj λ) = conj(R) b²; λ = -e^u +
 // i e^v moves by Re λ along u and i Im λ along v (its conjugate by the
-// conjugates); dH/d Re R = a + b, dH/d Im R = i (a - b).
+// conjugates); dH/d Re R = a + b, dH/d Im R = i (a - b). A real pole's term
+// Q c, c = 1 / (s - σ), σ = -e^u: dH/du = Q c² σ, dH/dQ = c.
 void FunctionResiduals(const RefinedFunctionData& f, int m, const double* poles,
                        const double* own, double* residuals, double* jacobian_poles,
-                       double* jacobian_own) {
-  const int np = 2 * m, no = 2 * m + 2;
+                       double* jacobian_own, int mr) {
+  const int np = 2 * m + mr, no = 2 * m + mr + 2;
   std::vector<Complex> lambda(m), residue(m);
   for (int r = 0; r < m; ++r) {
     lambda[r] = Complex(-std::exp(poles[2 * r]), std::exp(poles[2 * r + 1]));
     residue[r] = Complex(own[2 * r], own[2 * r + 1]);
   }
-  const double lower = own[2 * m], upper = own[2 * m + 1];
+  std::vector<double> sigma(mr);
+  for (int j = 0; j < mr; ++j) sigma[j] = -std::exp(poles[2 * m + j]);
+  const double lower = own[2 * m + mr], upper = own[2 * m + mr + 1];
   for (size_t k = 0; k < f.s.size(); ++k) {
     const Complex s = f.s[k];
     const double w = f.weight[k];
@@ -80,9 +83,15 @@ void FunctionResiduals(const RefinedFunctionData& f, int m, const double* poles,
         Put(jacobian_own, no, k, 2 * r + 1, w * Complex(0, 1) * (a - b));
       }
     }
+    for (int j = 0; j < mr; ++j) {
+      const Complex c = Inverse(s - sigma[j]), qc = own[2 * m + j] * c;
+      h += qc;
+      if (jacobian_poles) Put(jacobian_poles, np, k, 2 * m + j, w * qc * c * sigma[j]);
+      if (jacobian_own) Put(jacobian_own, no, k, 2 * m + j, w * c);
+    }
     if (jacobian_own) {
-      Put(jacobian_own, no, k, 2 * m, w * f.lower_basis[k]);
-      Put(jacobian_own, no, k, 2 * m + 1, w * f.upper_basis[k]);
+      Put(jacobian_own, no, k, 2 * m + mr, w * f.lower_basis[k]);
+      Put(jacobian_own, no, k, 2 * m + mr + 1, w * f.upper_basis[k]);
     }
     residuals[2 * k] = w * (h - f.h[k]).real();
     residuals[2 * k + 1] = w * (h - f.h[k]).imag();
@@ -95,20 +104,20 @@ using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::Ro
 
 class FunctionCost : public ceres::CostFunction {
  public:
-  FunctionCost(const RefinedFunctionData* f, int m) : f_(f), m_(m) {
+  FunctionCost(const RefinedFunctionData* f, int m, int mr) : f_(f), m_(m), mr_(mr) {
     set_num_residuals(2 * static_cast<int>(f->s.size()));
-    mutable_parameter_block_sizes()->push_back(2 * m);
-    mutable_parameter_block_sizes()->push_back(2 * m + 2);
+    mutable_parameter_block_sizes()->push_back(2 * m + mr);
+    mutable_parameter_block_sizes()->push_back(2 * m + mr + 2);
   }
   bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override {
     FunctionResiduals(*f_, m_, x[0], x[1], residuals, jacobians ? jacobians[0] : nullptr,
-                      jacobians ? jacobians[1] : nullptr);
+                      jacobians ? jacobians[1] : nullptr, mr_);
     return Eigen::Map<const Eigen::VectorXd>(residuals, num_residuals()).allFinite();
   }
 
  private:
   const RefinedFunctionData* f_;
-  const int m_;
+  const int m_, mr_;
 };
 
 // The problem's coordinates: the poles' and each function's own.
@@ -119,18 +128,26 @@ struct Coordinates {
 
 // Why the input cannot be refined, or empty.
 std::string Refusal(const Frf& frf, const std::vector<int>& lines,
-                    const std::vector<Complex>& poles, const std::vector<LsfdFunction>& start) {
+                    const std::vector<Complex>& poles, const std::vector<double>& real_poles,
+                    const std::vector<LsfdFunction>& start) {
   if (poles.empty()) return "no poles to refine";
   for (size_t r = 0; r < poles.size(); ++r) {
     if (!(poles[r].real() < 0 && poles[r].imag() > 0)) {
       return "pole " + std::to_string(r) + " has not Re < 0 < Im";
     }
   }
+  for (size_t j = 0; j < real_poles.size(); ++j) {
+    if (!(real_poles[j] < 0)) return "real pole " + std::to_string(j) + " is not negative";
+  }
   if (start.size() != frf.functions.size()) return "the start has not one function per FRF";
   for (size_t f = 0; f < start.size(); ++f) {
-    if (start[f].residues.size() != poles.size()) return "the start has not one residue per pole";
+    if (start[f].residues.size() != poles.size() ||
+        start[f].real_residues.size() != real_poles.size()) {
+      return "the start has not one residue per pole";
+    }
     bool finite = std::isfinite(start[f].lower) && std::isfinite(start[f].upper);
     for (const Complex& r : start[f].residues) finite = finite && std::isfinite(std::abs(r));
+    for (const double q : start[f].real_residues) finite = finite && std::isfinite(q);
     if (!finite) return "the start of function " + std::to_string(f) + " is not finite";
   }
   if (lines.empty()) return "no lines";
@@ -152,12 +169,12 @@ bool AllSigmas(const Frf& frf, const std::vector<int>& lines) {
 }
 
 // Levenberg-Marquardt from x (changed in place); Ceres' summary.
-ceres::Solver::Summary Solve(const std::vector<RefinedFunctionData>& data, int m,
+ceres::Solver::Summary Solve(const std::vector<RefinedFunctionData>& data, int m, int mr,
                              Coordinates* x) {
   ceres::Problem problem;
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (size_t f = 0; f < data.size(); ++f) {
-    problem.AddResidualBlock(new FunctionCost(&data[f], m), nullptr, x->poles.data(),
+    problem.AddResidualBlock(new FunctionCost(&data[f], m, mr), nullptr, x->poles.data(),
                              x->own[f].data());
     ordering->AddElementToGroup(x->own[f].data(), 0);  // eliminated first
   }
@@ -182,9 +199,10 @@ ceres::Solver::Summary Solve(const std::vector<RefinedFunctionData>& data, int m
 
 // The poles' covariance in their coordinates (see the header), and whether
 // each coordinate is determined (outside the null space).
-void PoleCovariance(const std::vector<RefinedFunctionData>& data, int m, const Coordinates& x,
-                    Eigen::MatrixXd* covariance, std::vector<bool>* determined) {
-  const int np = 2 * m, no = 2 * m + 2;
+void PoleCovariance(const std::vector<RefinedFunctionData>& data, int m, int mr,
+                    const Coordinates& x, Eigen::MatrixXd* covariance,
+                    std::vector<bool>* determined) {
+  const int np = 2 * m + mr, no = 2 * m + mr + 2;
   int rows = 0;
   for (const RefinedFunctionData& f : data) rows += 2 * static_cast<int>(f.s.size());
   Eigen::MatrixXd stacked(rows, np);
@@ -193,7 +211,8 @@ void PoleCovariance(const std::vector<RefinedFunctionData>& data, int m, const C
     const int n = 2 * static_cast<int>(data[f].s.size());
     RowMajor jp(n, np), jo(n, no);
     Eigen::VectorXd r(n);
-    FunctionResiduals(data[f], m, x.poles.data(), x.own[f].data(), r.data(), jp.data(), jo.data());
+    FunctionResiduals(data[f], m, x.poles.data(), x.own[f].data(), r.data(), jp.data(), jo.data(),
+                      mr);
     // The part of jp off the span of the own columns (to unit norm first:
     // the residual terms differ from the residues' by powers of ω).
     const Eigen::VectorXd scale = jo.colwise().norm().cwiseMax(1e-300).cwiseInverse();
@@ -222,10 +241,10 @@ void PoleCovariance(const std::vector<RefinedFunctionData>& data, int m, const C
 // The refined poles with their standard errors from `covariance` (scaled
 // by `scale`): f = e^v / 2π and ζ = e^u / |λ| have df = f dv and dζ = ζ(1 -
 // ζ²)(du - dv).
-std::vector<RefinedPole> Poles(const Coordinates& x, const Eigen::MatrixXd& covariance,
+std::vector<RefinedPole> Poles(const Coordinates& x, int m, const Eigen::MatrixXd& covariance,
                                const std::vector<bool>& determined, double scale) {
   std::vector<RefinedPole> out;
-  for (int r = 0; r < static_cast<int>(x.poles.size()) / 2; ++r) {
+  for (int r = 0; r < m; ++r) {
     RefinedPole p;
     p.eigenvalue = Complex(-std::exp(x.poles(2 * r)), std::exp(x.poles(2 * r + 1)));
     p.frequency_hz = p.eigenvalue.imag() / (2 * M_PI);
@@ -247,40 +266,44 @@ std::vector<RefinedPole> Poles(const Coordinates& x, const Eigen::MatrixXd& cova
 
 void RefineModes(const Frf& frf, const std::vector<int>& lines,
                  const std::vector<std::complex<double>>& poles,
-                 const std::vector<LsfdFunction>& start, bool weigh_by_sigma,
-                 ModalRefinement* out) {
+                 const std::vector<double>& real_poles, const std::vector<LsfdFunction>& start,
+                 bool weigh_by_sigma, ModalRefinement* out) {
   using namespace internal;
   *out = ModalRefinement{};
   RefinementFit& fit = out->fit;
-  const std::string refusal = Refusal(frf, lines, poles, start);
+  const std::string refusal = Refusal(frf, lines, poles, real_poles, start);
   if (!refusal.empty()) {
     fit.status = Status::InvalidInput(refusal);
     return;
   }
   const int m = static_cast<int>(poles.size()), nf = static_cast<int>(frf.functions.size());
+  const int mr = static_cast<int>(real_poles.size());
   fit.weighted = weigh_by_sigma && AllSigmas(frf, lines);
-  fit.degrees_of_freedom = 2 * static_cast<int>(lines.size()) * nf - 2 * m - nf * (2 * m + 2);
+  fit.degrees_of_freedom =
+      2 * static_cast<int>(lines.size()) * nf - (2 * m + mr) - nf * (2 * m + mr + 2);
   if (fit.degrees_of_freedom <= 0) {
     fit.status = Status::InvalidInput("more coordinates than values: no degrees of freedom");
     return;
   }
   std::vector<RefinedFunctionData> data;
   Coordinates x;
-  x.poles.resize(2 * m);
+  x.poles.resize(2 * m + mr);
   for (int r = 0; r < m; ++r) {
     x.poles(2 * r) = std::log(-poles[r].real());
     x.poles(2 * r + 1) = std::log(poles[r].imag());
   }
+  for (int j = 0; j < mr; ++j) x.poles(2 * m + j) = std::log(-real_poles[j]);
   for (int f = 0; f < nf; ++f) {
     data.push_back(FunctionData(frf, f, lines, fit.weighted));
-    Eigen::VectorXd own(2 * m + 2);
+    Eigen::VectorXd own(2 * m + mr + 2);
     for (int r = 0; r < m; ++r) {
       own.segment<2>(2 * r) << start[f].residues[r].real(), start[f].residues[r].imag();
     }
+    for (int j = 0; j < mr; ++j) own(2 * m + j) = start[f].real_residues[j];
     own.tail<2>() << start[f].lower, start[f].upper;
     x.own.push_back(own);
   }
-  const ceres::Solver::Summary summary = Solve(data, m, &x);
+  const ceres::Solver::Summary summary = Solve(data, m, mr, &x);
   fit.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
   if (!summary.IsSolutionUsable() || summary.termination_type == ceres::NO_CONVERGENCE) {
     fit.status = Status::Failed("the refinement did not converge: " + summary.message);
@@ -289,10 +312,11 @@ void RefineModes(const Frf& frf, const std::vector<int>& lines,
   fit.chi_square = 2 * summary.final_cost;
   Eigen::MatrixXd covariance;
   std::vector<bool> determined;
-  PoleCovariance(data, m, x, &covariance, &determined);
-  out->poles = Poles(x, covariance, determined,
+  PoleCovariance(data, m, mr, x, &covariance, &determined);
+  out->poles = Poles(x, m, covariance, determined,
                      fit.weighted ? 1.0 : fit.chi_square / fit.degrees_of_freedom);
   const auto [low, high] = std::minmax_element(lines.begin(), lines.end());
+  for (int j = 0; j < mr; ++j) out->real_poles.push_back(-std::exp(x.poles(2 * m + j)));
   for (size_t r = 0; r < out->poles.size(); ++r) {
     const double hz = out->poles[r].frequency_hz;
     if (!(hz >= frf.frequencies_hz[*low] && hz <= frf.frequencies_hz[*high])) {
@@ -304,8 +328,9 @@ void RefineModes(const Frf& frf, const std::vector<int>& lines,
   for (int f = 0; f < nf; ++f) {
     LsfdFunction g = start[f];
     for (int r = 0; r < m; ++r) g.residues[r] = Complex(x.own[f](2 * r), x.own[f](2 * r + 1));
-    g.lower = x.own[f](2 * m);
-    g.upper = x.own[f](2 * m + 1);
+    for (int j = 0; j < mr; ++j) g.real_residues[j] = x.own[f](2 * m + j);
+    g.lower = x.own[f](2 * m + mr);
+    g.upper = x.own[f](2 * m + mr + 1);
     out->functions.push_back(std::move(g));
   }
   fit.status = Status::Success("converged in " + std::to_string(fit.iterations) +

@@ -15,7 +15,8 @@
 // variance, chi-square / degrees of freedom.
 //
 // Coordinates: per pole log(-Re λ) and log(Im λ) (damping and frequency stay
-// positive); per function Re R_r and Im R_r per pole, lower and upper. The
+// positive), per real pole log(-σ); per function Re R_r and Im R_r per pole,
+// Q_j per real pole, lower and upper. The
 // Jacobian is analytic. The poles' covariance is the whole fit's with the
 // residues and residual terms marginalised: the pseudo-inverse of J_p^T (I -
 // P_f) J_p summed over the functions (P_f the projection on the span of the
@@ -55,10 +56,12 @@ struct RefinementFit {
 struct ModalRefinement {
   RefinementFit fit;
   std::vector<RefinedPole> poles;        // in the order given
+  std::vector<double> real_poles;        // σ_j, in the order given
   std::vector<LsfdFunction> functions;  // per function of the Frf, residues per pole
 };
 
-// Refines `poles` (Im > 0, Re < 0) and `start`, LSFD's functions at them
+// Refines `poles` (Im > 0, Re < 0), `real_poles` (< 0, lsfd.h) and `start`,
+// LSFD's functions at them
 // (one per function of `frf`, in its order), over `lines` (indices into
 // frf.frequencies_hz). Invalid input: no poles, a pole off the open upper-
 // left quadrant, `start` not matching or not finite, no degrees of freedom
@@ -66,8 +69,8 @@ struct ModalRefinement {
 // the band of the lines.
 void RefineModes(const Frf& frf, const std::vector<int>& lines,
                  const std::vector<std::complex<double>>& poles,
-                 const std::vector<LsfdFunction>& start, bool weigh_by_sigma,
-                 ModalRefinement* out);
+                 const std::vector<double>& real_poles, const std::vector<LsfdFunction>& start,
+                 bool weigh_by_sigma, ModalRefinement* out);
 
 }  // namespace ringid
 

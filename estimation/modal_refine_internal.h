@@ -26,12 +26,13 @@ RefinedFunctionData FunctionData(const Frf& frf, int function, const std::vector
                                  bool weighted);
 
 // The weighted residuals weight (H_model - h), rows 2k (real part) and
-// 2k + 1 (imaginary) per line k, at `poles` (per pole log(-Re λ), log(Im λ))
-// and `own` (per pole Re R, Im R; then lower, upper); with their Jacobians
-// by each (row-major, as Ceres lays them out) where not null. `m` poles.
+// 2k + 1 (imaginary) per line k, at `poles` (per pole log(-Re λ), log(Im λ);
+// then per real pole log(-σ)) and `own` (per pole Re R, Im R; per real pole
+// Q; then lower, upper); with their Jacobians by each (row-major, as Ceres
+// lays them out) where not null. `m` poles, `mr` real poles.
 void FunctionResiduals(const RefinedFunctionData& f, int m, const double* poles,
                        const double* own, double* residuals, double* jacobian_poles,
-                       double* jacobian_own);
+                       double* jacobian_own, int mr = 0);
 
 }  // namespace internal
 }  // namespace ringid

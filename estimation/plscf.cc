@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -29,22 +30,78 @@ struct OutputRows {
   std::vector<Eigen::VectorXd> weight;
 };
 
-// The outputs measured at every input, with their rows over `lines`.
-OutputRows CompleteOutputs(const Frf& frf, const std::vector<int>& lines, bool weigh,
-                           std::vector<int>* outputs) {
-  const int ni = static_cast<int>(frf.inputs.size()), nl = static_cast<int>(lines.size());
+// The blocks (estimation/plscf.h): the connected parts of the measured
+// pairs (an output joins the inputs it is measured at); in each, the outputs
+// measured at all its inputs, else one block per set of its inputs measured
+// at the same outputs. An input without a function is in none.
+std::vector<PlscfBlock> Blocks(const Frf& frf) {
+  const int ni = static_cast<int>(frf.inputs.size()), no = static_cast<int>(frf.outputs.size());
+  std::vector<std::vector<bool>> at(no, std::vector<bool>(ni, false));
+  for (const FrfFunction& f : frf.functions) at[f.output][f.input] = true;
+  std::vector<int> part(ni);
+  for (int i = 0; i < ni; ++i) part[i] = i;
+  const auto root = [&](int i) {
+    while (part[i] != i) i = part[i] = part[part[i]];
+    return i;
+  };
+  for (int o = 0; o < no; ++o) {
+    const int first = static_cast<int>(std::find(at[o].begin(), at[o].end(), true) - at[o].begin());
+    for (int i = first + 1; i < ni; ++i) {
+      if (at[o][i]) part[root(i)] = root(first);
+    }
+  }
+  const auto outputs_at = [&](const std::vector<int>& inputs) {
+    std::vector<int> outputs;
+    for (int o = 0; o < no; ++o) {
+      if (std::all_of(inputs.begin(), inputs.end(), [&](int i) { return at[o][i]; })) outputs.push_back(o);
+    }
+    return outputs;
+  };
+  std::vector<PlscfBlock> blocks;
+  for (int r = 0; r < ni; ++r) {
+    std::vector<int> inputs;
+    for (int i = 0; i < ni; ++i) {
+      if (root(i) == r && std::any_of(at.begin(), at.end(), [&](const auto& row) { return row[i]; })) {
+        inputs.push_back(i);
+      }
+    }
+    if (inputs.empty()) continue;
+    PlscfBlock whole{inputs, outputs_at(inputs), {}};
+    if (!whole.outputs.empty()) {
+      blocks.push_back(std::move(whole));
+      continue;
+    }
+    for (size_t k = 0; k < inputs.size(); ++k) {
+      const std::vector<int> outputs = outputs_at({inputs[k]});
+      if (std::any_of(blocks.begin(), blocks.end(), [&](const PlscfBlock& b) {
+            return b.outputs == outputs && root(b.inputs[0]) == r;
+          })) {
+        continue;  // grouped with an earlier input
+      }
+      PlscfBlock same{{}, outputs, {}};
+      for (size_t j = k; j < inputs.size(); ++j) {
+        if (outputs_at({inputs[j]}) == outputs) same.inputs.push_back(inputs[j]);
+      }
+      blocks.push_back(std::move(same));
+    }
+  }
+  return blocks;
+}
+
+// The block's outputs, with their rows over `lines` on its inputs.
+OutputRows BlockRows(const Frf& frf, const PlscfBlock& block, const std::vector<int>& lines,
+                     bool weigh) {
+  const int ni = static_cast<int>(block.inputs.size()), nl = static_cast<int>(lines.size());
   std::vector<std::vector<const FrfFunction*>> at(frf.outputs.size(),
-                                                  std::vector<const FrfFunction*>(ni, nullptr));
+                                                  std::vector<const FrfFunction*>(frf.inputs.size()));
   for (const FrfFunction& f : frf.functions) at[f.output][f.input] = &f;
   OutputRows rows;
-  for (int o = 0; o < static_cast<int>(frf.outputs.size()); ++o) {
-    if (std::count(at[o].begin(), at[o].end(), nullptr) > 0) continue;
-    outputs->push_back(o);
+  for (const int o : block.outputs) {
     Eigen::MatrixXcd h(nl, ni);
     Eigen::VectorXd mean_square = Eigen::VectorXd::Zero(nl);
     bool sigmas = weigh;
     for (int i = 0; i < ni; ++i) {
-      const FrfFunction& f = *at[o][i];
+      const FrfFunction& f = *at[o][block.inputs[i]];
       sigmas = sigmas && f.sigma.size() == f.h.size();
       for (int k = 0; k < nl; ++k) {
         h(k, i) = f.h[lines[k]];
@@ -162,8 +219,16 @@ bool PolesOfOrder(const Eigen::MatrixXd& m, int n, int ni, double dt, PlscfOrder
   if (eigen.info() != Eigen::Success) return false;
   order->order = n;
   order->poles.clear();
+  order->real_poles.clear();
   for (const Complex& x : eigen.eigenvalues()) {
-    if (!(x.imag() < 0)) continue;  // Im λ > 0: one of each pair, no real roots
+    if (x.imag() == 0 && x.real() > 0) {  // a real root (a real Schur block of one)
+      PlscfPole pole;
+      pole.eigenvalue = -std::log(x.real()) / dt;
+      pole.participation = Participation(alpha, x);
+      order->real_poles.push_back(std::move(pole));
+      continue;
+    }
+    if (!(x.imag() < 0)) continue;  // Im λ > 0: one of each pair
     PlscfPole pole;
     pole.eigenvalue = -std::log(x) / dt;
     pole.frequency_hz = pole.eigenvalue.imag() / (2 * M_PI);
@@ -180,8 +245,26 @@ double Mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
   return std::norm(a.dot(b)) / (a.squaredNorm() * b.squaredNorm());
 }
 
+// Each real pole's flags against the nearest real pole of the order below.
+void MarkRealStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* order) {
+  for (PlscfPole& p : order->real_poles) {
+    const PlscfPole* near = nullptr;
+    for (const PlscfPole& q : below.real_poles) {
+      if (!near || std::abs(q.eigenvalue - p.eigenvalue) < std::abs(near->eigenvalue - p.eigenvalue)) {
+        near = &q;
+      }
+    }
+    if (!near) continue;
+    p.stable_frequency =
+        std::abs(p.eigenvalue - near->eigenvalue) <= o.stable_frequency * std::abs(p.eigenvalue);
+    p.stable_damping = true;  // a real root has no damping ratio of its own
+    p.stable_vector = Mac(p.participation, near->participation) >= o.stable_mac;
+  }
+}
+
 // Each pole's flags against the nearest pole (in λ) of the order below.
 void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* order) {
+  MarkRealStable(o, below, order);
   for (PlscfPole& p : order->poles) {
     const PlscfPole* near = nullptr;
     for (const PlscfPole& q : below.poles) {
@@ -276,6 +359,52 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
   return modes;
 }
 
+// The physical real poles: repeatedly, the stable real pole (negative, its
+// |σ| / 2π in [low_hz, high_hz]) that the most orders hold within
+// stable_frequency (relative), taken at its highest order; one near a pole
+// already taken is that pole again.
+std::vector<double> ChooseRealPoles(const PlscfOptions& o, const std::vector<PlscfOrder>& diagram,
+                                    double low_hz, double high_hz) {
+  std::vector<std::pair<int, double>> stable;  // (order index, σ)
+  for (int k = 0; k < static_cast<int>(diagram.size()); ++k) {
+    for (const PlscfPole& p : diagram[k].real_poles) {
+      const double sigma = p.eigenvalue.real(), corner_hz = -sigma / (2 * M_PI);
+      if (p.stable() && sigma < 0 && corner_hz >= low_hz && corner_hz <= high_hz) {
+        stable.emplace_back(k, sigma);
+      }
+    }
+  }
+  const auto near = [&](double a, double b) { return std::abs(a - b) <= o.stable_frequency * std::abs(b); };
+  std::vector<double> out;
+  std::vector<bool> used(stable.size(), false);
+  for (;;) {
+    std::vector<int> best;
+    for (size_t c = 0; c < stable.size(); ++c) {
+      if (used[c]) continue;
+      std::vector<int> members;  // the nearest of each order
+      for (size_t q = 0; q < stable.size(); ++q) {
+        if (used[q] || !near(stable[q].second, stable[c].second)) continue;
+        const auto same_order = std::find_if(members.begin(), members.end(), [&](int i) {
+          return stable[i].first == stable[q].first;
+        });
+        if (same_order == members.end()) members.push_back(static_cast<int>(q));
+        else if (std::abs(stable[q].second - stable[c].second) < std::abs(stable[*same_order].second - stable[c].second)) *same_order = static_cast<int>(q);
+      }
+      if (members.size() > best.size()) best = std::move(members);
+    }
+    if (static_cast<int>(best.size()) < o.min_stable_orders) break;
+    int top = best[0];
+    for (int i : best) {
+      used[i] = true;
+      if (stable[i].first > stable[top].first) top = i;
+    }
+    const double sigma = stable[top].second;
+    if (std::none_of(out.begin(), out.end(), [&](double s) { return near(sigma, s); })) out.push_back(sigma);
+  }
+  std::sort(out.begin(), out.end(), std::greater<double>());  // ascending |σ|
+  return out;
+}
+
 // Each mode's residues from LSFD and its shape on the outputs: psi = R
 // conj(l) / |l|² over the inputs measured.
 void AddResidues(const Frf& frf, const std::vector<LsfdFunction>& functions,
@@ -292,7 +421,10 @@ void AddResidues(const Frf& frf, const std::vector<LsfdFunction>& functions,
       sum(f.output) += f.residues[r] * std::conj(l);
       weight(f.output) += std::norm(l);
     }
-    mode.shape = sum.cwiseQuotient(weight.cast<Complex>());
+    mode.shape = Eigen::VectorXcd::Zero(no);  // 0 where no input of its participation is measured
+    for (int o = 0; o < no; ++o) {
+      if (weight(o) > 0) mode.shape(o) = sum(o) / weight(o);
+    }
   }
 }
 
@@ -303,9 +435,10 @@ void Refine(const Frf& frf, bool weigh_by_sigma, PlscfResult* r) {
   std::vector<Complex> poles;
   for (const ExtractedMode& mode : r->modes) poles.push_back(mode.eigenvalue);
   ModalRefinement refined;
-  RefineModes(frf, r->lines, poles, r->functions, weigh_by_sigma, &refined);
+  RefineModes(frf, r->lines, poles, r->real_poles, r->functions, weigh_by_sigma, &refined);
   r->refinement = refined.fit;
   if (!refined.fit.status.ok()) return;
+  r->real_poles = refined.real_poles;
   std::vector<int> order(poles.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -328,6 +461,42 @@ void Refine(const Frf& frf, bool weigh_by_sigma, PlscfResult* r) {
     const std::vector<Complex> residues = f.residues;
     for (size_t k = 0; k < order.size(); ++k) f.residues[k] = residues[order[k]];
   }
+}
+
+// One block's diagram, physical poles (their participation on all the
+// Frf's inputs, 0 on those outside the block) and real poles.
+Status FitBlock(const Frf& frf, const PlscfOptions& o, const std::vector<int>& lines, double dt,
+                const Eigen::VectorXd& theta, PlscfBlock* b, std::vector<ExtractedMode>* modes,
+                std::vector<double>* real_poles) {
+  Normal normal;
+  if (!BuildNormal(BlockRows(frf, *b, lines, o.weigh_by_sigma), theta, o.max_order, &normal)) {
+    return Status::Failed("pLSCF: a weighted basis is singular (too few distinct lines)");
+  }
+  const int ni = static_cast<int>(b->inputs.size());
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(normal.t.rows(), normal.t.cols());
+  Eigen::MatrixXd yn(normal.y.size(), normal.t.cols());
+  for (int n = 0; n <= o.max_order; ++n) {
+    for (size_t out = 0; out < normal.y.size(); ++out) yn.row(out) = normal.y[out].row(n);
+    k.noalias() += yn.transpose() * yn;
+    if (n < o.min_order) continue;
+    const int m = (n + 1) * ni;
+    PlscfOrder order;
+    if (!PolesOfOrder(normal.t.topLeftCorner(m, m) - k.topLeftCorner(m, m), n, ni, dt, &order)) {
+      return Status::Failed("pLSCF: the normal equations of order " + std::to_string(n) +
+                            " are singular");
+    }
+    if (!b->diagram.empty()) MarkStable(o, b->diagram.back(), &order);
+    b->diagram.push_back(std::move(order));
+  }
+  const double low_hz = frf.frequencies_hz[lines.front()], high_hz = frf.frequencies_hz[lines.back()];
+  *modes = ChoosePoles(o, b->diagram, low_hz, high_hz);
+  *real_poles = ChooseRealPoles(o, b->diagram, low_hz, high_hz);
+  for (ExtractedMode& m : *modes) {
+    Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
+    for (int i = 0; i < ni; ++i) l(b->inputs[i]) = m.participation(i);
+    m.participation = std::move(l);
+  }
+  return Status::Success();
 }
 
 }  // namespace
@@ -364,44 +533,42 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
         std::to_string(o.max_order) + " needs at least " + std::to_string(o.max_order + 1));
     return;
   }
-  const OutputRows rows = CompleteOutputs(frf, r->lines, o.weigh_by_sigma, &r->outputs);
-  if (r->outputs.empty()) {
-    r->status = Status::InvalidInput("no output is measured at every input");
-    return;
-  }
-  const double low_hz = frf.frequencies_hz[r->lines.front()];
-  const double high_hz = frf.frequencies_hz[r->lines.back()];
-  r->dt = 1 / (2 * high_hz);
+  r->dt = 1 / (2 * frf.frequencies_hz[r->lines.back()]);
   Eigen::VectorXd theta(r->lines.size());
   for (size_t k = 0; k < r->lines.size(); ++k) {
     theta(k) = 2 * M_PI * frf.frequencies_hz[r->lines[k]] * r->dt;
   }
-  Normal normal;
-  if (!BuildNormal(rows, theta, o.max_order, &normal)) {
-    r->status = Status::Failed("pLSCF: a weighted basis is singular (too few distinct lines)");
-    return;
-  }
-  const int ni = static_cast<int>(frf.inputs.size());
-  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(normal.t.rows(), normal.t.cols());
-  Eigen::MatrixXd yn(normal.y.size(), normal.t.cols());
-  for (int n = 0; n <= o.max_order; ++n) {
-    for (size_t out = 0; out < normal.y.size(); ++out) yn.row(out) = normal.y[out].row(n);
-    k.noalias() += yn.transpose() * yn;
-    if (n < o.min_order) continue;
-    const int m = (n + 1) * ni;
-    PlscfOrder order;
-    if (!PolesOfOrder(normal.t.topLeftCorner(m, m) - k.topLeftCorner(m, m), n, ni, r->dt, &order)) {
-      r->status = Status::Failed("pLSCF: the normal equations of order " + std::to_string(n) +
-                                 " are singular");
-      return;
+  r->blocks = Blocks(frf);
+  for (PlscfBlock& b : r->blocks) {
+    std::vector<ExtractedMode> found;
+    std::vector<double> real;
+    r->status = FitBlock(frf, o, r->lines, r->dt, theta, &b, &found, &real);
+    if (!r->status.ok()) return;
+    for (const double sigma : real) {
+      if (std::none_of(r->real_poles.begin(), r->real_poles.end(), [&](double q) {
+            return std::abs(q - sigma) <= o.stable_frequency * std::abs(q);
+          })) {
+        r->real_poles.push_back(sigma);
+      }
     }
-    if (!r->diagram.empty()) MarkStable(o, r->diagram.back(), &order);
-    r->diagram.push_back(std::move(order));
+    for (ExtractedMode& m : found) {
+      // A pole another block found too (within the stability tolerances):
+      // the one held at more orders.
+      const auto same = std::find_if(r->modes.begin(), r->modes.end(), [&](const ExtractedMode& q) {
+        return std::abs(q.frequency_hz - m.frequency_hz) <= o.stable_frequency * q.frequency_hz &&
+               std::abs(q.damping_ratio - m.damping_ratio) <= o.stable_damping * q.damping_ratio;
+      });
+      if (same == r->modes.end()) r->modes.push_back(std::move(m));
+      else if (m.stable_orders > same->stable_orders) *same = std::move(m);
+    }
   }
-  r->modes = ChoosePoles(o, r->diagram, low_hz, high_hz);
+  std::sort(r->modes.begin(), r->modes.end(), [](const ExtractedMode& a, const ExtractedMode& b) {
+    return a.frequency_hz < b.frequency_hz;
+  });
+  std::sort(r->real_poles.begin(), r->real_poles.end(), std::greater<double>());
   std::vector<Complex> poles;
   for (const ExtractedMode& mode : r->modes) poles.push_back(mode.eigenvalue);
-  r->functions = Lsfd(frf, r->lines, poles, o.weigh_by_sigma);
+  r->functions = Lsfd(frf, r->lines, poles, o.weigh_by_sigma, r->real_poles);
   r->refinement.status = Status::Failed(o.refine ? "no physical poles" : "not asked for");
   if (o.refine && !r->modes.empty()) Refine(frf, o.weigh_by_sigma, r);
   AddResidues(frf, r->functions, &r->modes);

@@ -15,6 +15,14 @@
 // the poles are λ = -ln(x) / Δt at the eigenvalues x of A's companion matrix,
 // n x inputs of them (half with Im λ > 0), and each one's participation on
 // the inputs is the left null vector of A(x).
+//
+// The model needs outputs measured at every input it references. A drum's
+// layout has none (in-plane channels per in-plane force, out-of-plane per
+// lateral force), so the functions are fitted in blocks (PlscfBlock): each
+// connected part of the measured pairs, with its outputs measured at all its
+// inputs; where a part has none, one block per set of its inputs measured at
+// the same outputs. The physical poles of all blocks (one where two blocks
+// see the same pole) then go to LSFD and the refinement over every function.
 #ifndef RINGID_ESTIMATION_PLSCF_H_
 #define RINGID_ESTIMATION_PLSCF_H_
 
@@ -81,6 +89,9 @@ struct PlscfPole {
 struct PlscfOrder {
   int order = 0;
   std::vector<PlscfPole> poles;
+  // Its real poles (λ real, frequency 0): stable in frequency where λ is
+  // within stable_frequency of the nearest real pole below (relative).
+  std::vector<PlscfPole> real_poles;
 };
 
 // A physical pole, with its residues.
@@ -94,34 +105,47 @@ struct ExtractedMode {
   double damping_ratio_std = NAN;
   int order = 0;                   // the order λ was taken at
   int stable_orders = 0;           // the number of orders in its cluster
-  Eigen::VectorXcd participation;  // inputs, as PlscfPole's
+  // On the inputs, as PlscfPole's: its block's, or where the block lacks
+  // inputs, the rank-one fit of its residues.
+  Eigen::VectorXcd participation;
   // LSFD's (or the refinement's) residues, outputs x inputs (NaN where the Frf has no function),
   // of H as measured (an accelerance's are λ² times the receptance's), and
   // the outputs' shape psi: the least-squares fit of psi x participation^T
-  // to them, over the functions given.
+  // to them, over the functions given (0 on an output measured at no input
+  // of its participation).
   Eigen::MatrixXcd residues;
   Eigen::VectorXcd shape;
 };
 
+// One pLSCF fit: its inputs (the references) and its outputs, each
+// measured at all of them (indices into the Frf's), and its diagram.
+struct PlscfBlock {
+  std::vector<int> inputs, outputs;
+  std::vector<PlscfOrder> diagram;  // min_order..max_order
+};
+
 struct PlscfResult {
   Status status;
-  std::vector<int> outputs;          // those in the pLSCF fit: measured at every input
   std::vector<int> lines;            // the lines used (indices into frf.frequencies_hz)
   double dt = 0;                     // Δt of the basis (s)
-  std::vector<PlscfOrder> diagram;   // min_order..max_order
+  std::vector<PlscfBlock> blocks;    // one for a full layout
   std::vector<ExtractedMode> modes;  // ascending frequency
-  // Per function of the Frf (its order): LSFD at the modes' eigenvalues, or
-  // the refinement's.
+  // The physical real poles σ < 0 (estimation/lsfd.h: a rolling tire's slip
+  // lags), stable at min_stable_orders orders with |σ| / 2π in the band,
+  // ascending |σ|; the refinement's where it succeeded.
+  std::vector<double> real_poles;
+  // Per function of the Frf (its order): LSFD at the modes' eigenvalues and
+  // the real poles, or the refinement's.
   std::vector<LsfdFunction> functions;
   // How the refinement went; where it failed (or was not asked for), the
   // modes are pLSCF's and LSFD's.
   RefinementFit refinement;
 };
 
-// pLSCF over every output of `frf` measured at all its inputs (an output
-// missing an input joins LSFD only), the stabilisation diagram, the physical
-// poles and their residues. Invalid input: bad options, fewer lines in the
-// band than the highest order needs, no output measured at every input.
+// pLSCF over the blocks of `frf` (an output missing one of its block's
+// inputs joins LSFD only), their stabilisation diagrams, the physical poles
+// and their residues. Invalid input: bad options, fewer lines in the band
+// than the highest order needs.
 void ExtractModes(const Frf& frf, const PlscfOptions& options, PlscfResult* result);
 
 }  // namespace ringid

@@ -24,7 +24,7 @@ std::vector<FrfFit> Synthesised(const ExtractedCondition& c) {
     for (int line : r.lines) {
       const double hz = c.frf.frequencies_hz[line];
       measured.push_back(fn.h[line]);
-      model.push_back(r.functions[k].At(hz, poles));
+      model.push_back(r.functions[k].At(hz, poles, r.real_poles));
       f.frequency_hz.push_back(hz);
       f.sigma.push_back(fn.sigma[line]);
       f.chi2 += std::norm((model.back() - measured.back()) / fn.sigma[line]);
@@ -54,14 +54,21 @@ ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source) {
     e.condition = c.condition;
     if (x.dataset.NamesConditions()) e.name = x.dataset.conditions[c.condition].name;
     e.status = c.plscf.status;
-    for (const PlscfOrder& o : c.plscf.diagram) {
-      DiagramOrder order{o.order, {}};
-      for (const PlscfPole& p : o.poles) {
-        order.poles.push_back({p.frequency_hz, p.damping_ratio, p.stable_frequency,
-                               p.stable_damping, p.stable_vector});
+    for (const PlscfBlock& b : c.plscf.blocks) {
+      ExtractBlock block;
+      for (int i : b.inputs) block.inputs.push_back(c.frf.inputs[i].name);
+      for (int o : b.outputs) block.outputs.push_back(c.frf.outputs[o].name);
+      for (const PlscfOrder& o : b.diagram) {
+        DiagramOrder order{o.order, {}};
+        for (const PlscfPole& p : o.poles) {
+          order.poles.push_back({p.frequency_hz, p.damping_ratio, p.stable_frequency,
+                                 p.stable_damping, p.stable_vector});
+        }
+        block.diagram.push_back(std::move(order));
       }
-      e.diagram.push_back(std::move(order));
+      e.blocks.push_back(std::move(block));
     }
+    e.real_poles_per_s = c.plscf.real_poles;
     e.functions = Synthesised(c);
     b.conditions.push_back(std::move(e));
   }

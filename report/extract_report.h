@@ -49,12 +49,29 @@ struct DiagramOrder {
   }
 };
 
+// One pLSCF fit of the condition (PlscfBlock): its inputs and outputs by
+// name, and its stabilisation diagram.
+struct ExtractBlock {
+  std::vector<std::string> inputs, outputs;
+  std::vector<DiagramOrder> diagram;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("inputs", &inputs);
+    a->Visit("outputs", &outputs);
+    a->Visit("diagram", &diagram);
+  }
+};
+
 // One condition's extraction.
 struct ExtractCondition {
   int condition = 0;                // its index in the dataset, as ExtractedPole's
   std::optional<std::string> name;  // where the dataset names its conditions
   Status status;                    // of its pLSCF
-  std::vector<DiagramOrder> diagram;
+  std::vector<ExtractBlock> blocks;  // one where every output is measured at every input
+  // The physical real poles σ (1/s, PlscfResult::real_poles): at speed, the
+  // slip lags' roots in the band (docs/rolling.md §2: near -V / σ_c).
+  std::vector<double> real_poles_per_s;
   // Each measured function (the frf block's order) on the lines pLSCF used,
   // against the LSFD synthesis at the physical poles (`model_re`,
   // `model_im`); chi2 with the measured sigma, FRAC between the two.
@@ -65,7 +82,8 @@ struct ExtractCondition {
     a->Visit("condition", &condition);
     a->VisitIfSet("name", &name);
     status.Serialize(a);
-    a->Visit("diagram", &diagram);
+    a->Visit("blocks", &blocks);
+    a->Visit("real_poles_per_s", &real_poles_per_s);
     a->Visit("functions", &functions);
   }
 };

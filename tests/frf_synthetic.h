@@ -87,6 +87,26 @@ inline Frf CarTireHammer(double low_hz = 5, double high_hz = 250, double step_hz
   return frf;
 }
 
+// The car tire's drum test at speed_m_s (datasets/synthetic.h: contact
+// forces to the held axle's channels, in-plane per in-plane force and
+// out-of-plane per lateral force), noise-free from the model's H.
+inline Frf CarTireDrum(double speed_m_s, double low_hz = 4, double high_hz = 160,
+                       double step_hz = 0.5) {
+  Frf frf = DrumTest(low_hz, high_hz, step_hz);
+  ResponseRequest request;
+  for (const FrfInput& in : frf.inputs) request.inputs.push_back({in.contact, {}});
+  for (const FrfOutput& out : frf.outputs) request.outputs.push_back({out.channel, {}, 0});
+  for (const FrfFunction& f : frf.functions) request.pairs.push_back({f.output, f.input});
+  request.frequencies_hz = frf.frequencies_hz;
+  const ResponseResult h = FrequencyResponse(RigidRingModel(), ExampleCarTire(), speed_m_s, request);
+  EXPECT_TRUE(h.ok) << h.error;
+  for (int f = 0; f < static_cast<int>(frf.functions.size()); ++f) {
+    for (int l = 0; l < h.H.rows(); ++l) frf.functions[f].h[l] = h.H(l, f);
+    frf.functions[f].sigma.clear();
+  }
+  return frf;
+}
+
 // Two modes 3 Hz apart (80 and 83 Hz damped) at damping ratio 0.06, their
 // half-power bands overlapping, and a third at 40 Hz (0.03): a proportionally
 // damped system of three coordinates with mass-normalised shapes phi, its

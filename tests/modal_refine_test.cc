@@ -50,43 +50,48 @@ Frf CloseModesAs(FrfQuantity quantity, std::mt19937_64* rng) {
 }
 
 // The analytic Jacobian of a displacement, a velocity and an acceleration
-// output's weighted residuals, at poles off the fit (1 % in frequency) and
-// LSFD's residues there, against central differences: each entry within
+// output's weighted residuals, at poles off the fit (1 % in frequency), a
+// real pole, and LSFD's residues there, against central differences: each entry within
 // 1e-6 of its column's largest.
 TEST(ModalRefineTest, TheJacobianIsTheCentralDifferencesOne) {
   std::mt19937_64 rng(7);
   std::vector<int> lines;
   for (int l = 100; l < 200; ++l) lines.push_back(l);  // 55..104.5 Hz
-  const int m = 3, np = 2 * m, no = 2 * m + 2;
+  // Three modes and one real pole (a slip lag's, lsfd.h) at -400 s^-1.
+  const int m = 3, mr = 1, np = 2 * m + mr, no = 2 * m + mr + 2;
   std::vector<cd> off;
+  const std::vector<double> real = {-400};
   Eigen::VectorXd poles(np), own(no);
   for (int r = 0; r < m; ++r) {
     off.push_back(testing::CloseModes().poles[r] * cd(1.01, 0.003));
     poles.segment<2>(2 * r) << std::log(-off[r].real()), std::log(off[r].imag());
   }
+  poles(2 * m) = std::log(-real[0]);
   for (FrfQuantity quantity : {FrfQuantity::kDisplacement, FrfQuantity::kVelocity,
                                FrfQuantity::kAcceleration}) {
     const int order = static_cast<int>(quantity);
     const Frf frf = CloseModesAs(quantity, &rng);
-    const LsfdFunction lsfd = Lsfd(frf, lines, off, true)[4];
+    const LsfdFunction lsfd = Lsfd(frf, lines, off, true, real)[4];
     for (int r = 0; r < m; ++r) {
       own.segment<2>(2 * r) << lsfd.residues[r].real(), lsfd.residues[r].imag();
     }
+    own(2 * m) = lsfd.real_residues[0];
     own.tail<2>() << lsfd.lower, lsfd.upper;
     const internal::RefinedFunctionData f = internal::FunctionData(frf, 4, lines, true);
     ASSERT_EQ(f.order, order);
     const int n = 2 * static_cast<int>(lines.size());
     RowMajor jp(n, np), jo(n, no);
     Eigen::VectorXd r(n), up(n), down(n);
-    internal::FunctionResiduals(f, m, poles.data(), own.data(), r.data(), jp.data(), jo.data());
+    internal::FunctionResiduals(f, m, poles.data(), own.data(), r.data(), jp.data(), jo.data(), mr);
     auto check = [&](Eigen::VectorXd* x, const RowMajor& analytic, const char* block) {
       for (int c = 0; c < x->size(); ++c) {
         const double step = 1e-6 * std::max(std::abs((*x)(c)), 1e-12);
         const double keep = (*x)(c);
         (*x)(c) = keep + step;
-        internal::FunctionResiduals(f, m, poles.data(), own.data(), up.data(), nullptr, nullptr);
+        internal::FunctionResiduals(f, m, poles.data(), own.data(), up.data(), nullptr, nullptr, mr);
         (*x)(c) = keep - step;
-        internal::FunctionResiduals(f, m, poles.data(), own.data(), down.data(), nullptr, nullptr);
+        internal::FunctionResiduals(f, m, poles.data(), own.data(), down.data(), nullptr, nullptr,
+                                    mr);
         (*x)(c) = keep;
         const Eigen::VectorXd numeric = (up - down) / (2 * step);
         const double gap = (numeric - analytic.col(c)).cwiseAbs().maxCoeff();
@@ -121,7 +126,7 @@ TEST(ModalRefineTest, ANoiseFreeHammerTestGivesTheModelsPolesFromAStartOffThem) 
   }
   ModalRefinement refined;
   const auto begin = std::chrono::steady_clock::now();
-  RefineModes(frf, r.lines, start, Lsfd(frf, r.lines, start, true), true, &refined);
+  RefineModes(frf, r.lines, start, {}, Lsfd(frf, r.lines, start, true), true, &refined);
   std::printf("refinement: %.3f s, %s\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(),
               refined.fit.status.message.c_str());
@@ -284,19 +289,19 @@ TEST(ModalRefineTest, InputThatCannotBeRefinedIsRefused) {
   const std::vector<cd> poles = {Pole(40, 0.03)};
   const std::vector<LsfdFunction> start = Lsfd(frf, lines, poles, true);
   ModalRefinement out;
-  RefineModes(frf, lines, {}, Lsfd(frf, lines, {}, true), true, &out);
+  RefineModes(frf, lines, {}, {}, Lsfd(frf, lines, {}, true), true, &out);
   EXPECT_TRUE(out.fit.status.invalid_input());
   EXPECT_EQ(out.fit.status.message, "no poles to refine");
-  RefineModes(frf, lines, {cd(1, 250)}, start, true, &out);
+  RefineModes(frf, lines, {cd(1, 250)}, {}, start, true, &out);
   EXPECT_TRUE(out.fit.status.invalid_input());
   EXPECT_EQ(out.fit.status.message, "pole 0 has not Re < 0 < Im");
-  RefineModes(frf, lines, {poles[0], Pole(80, 0.06)}, start, true, &out);
+  RefineModes(frf, lines, {poles[0], Pole(80, 0.06)}, {}, start, true, &out);
   EXPECT_TRUE(out.fit.status.invalid_input());
   EXPECT_EQ(out.fit.status.message, "the start has not one residue per pole");
-  RefineModes(frf, {0, 1}, poles, start, true, &out);
+  RefineModes(frf, {0, 1}, poles, {}, start, true, &out);
   EXPECT_TRUE(out.fit.status.invalid_input());
   EXPECT_EQ(out.fit.status.message, "more coordinates than values: no degrees of freedom");
-  RefineModes(frf, lines, poles, start, true, &out);
+  RefineModes(frf, lines, poles, {}, start, true, &out);
   EXPECT_TRUE(out.fit.status.ok()) << out.fit.status.message;
   EXPECT_FALSE(out.fit.weighted);  // the FRFs have no sigma
 }

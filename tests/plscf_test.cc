@@ -5,6 +5,7 @@
 // modal solution, and two close, damped modes with noise.
 #include "estimation/plscf.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -26,6 +27,7 @@ namespace {
 
 using cd = std::complex<double>;
 using testing::AddNoise;
+using testing::CarTireDrum;
 using testing::CarTireHammer;
 using testing::MakeFrf;
 
@@ -39,11 +41,15 @@ struct ThreeDof {
     K << k[0] + k[1], -k[1], 0, -k[1], k[1] + k[2], -k[2], 0, -k[2], k[2];
     C << c[0] + c[1], -c[1], 0, -c[1], c[1] + c[2], -c[2], 0, -c[2], c[2];
   }
-  // Receptance at the three masses per force on masses 1 and 3.
-  Eigen::MatrixXcd H(double hz) const {
+  // Receptance at the three masses per force on each.
+  Eigen::MatrixXcd G(double hz) const {
     const double w = 2 * M_PI * hz;
     const Eigen::Matrix3cd D = (K - w * w * M).cast<cd>() + cd(0, w) * C.cast<cd>();
-    Eigen::MatrixXcd g = D.inverse();
+    return D.inverse();
+  }
+  // Per force on masses 1 and 3.
+  Eigen::MatrixXcd H(double hz) const {
+    const Eigen::MatrixXcd g = G(hz);
     Eigen::MatrixXcd h(3, 2);
     h << g.col(0), g.col(2);
     return h;
@@ -271,7 +277,7 @@ TEST(PlscfTest, TwoModesThreeHertzApartAtDamping006WithNoiseAreBothFound) {
 }
 
 // A missing pair: the output lacking it is left out of pLSCF and keeps its
-// other residues; without any output measured at every input, or with bad
+// other residues; an input without a function is in no block; with bad
 // options, nothing runs.
 TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
   const ThreeDof system;
@@ -283,7 +289,9 @@ TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
   PlscfResult r;
   ExtractModes(frf, PlscfOptions{}, &r);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  EXPECT_EQ(r.outputs, (std::vector<int>{0, 2}));
+  ASSERT_EQ(r.blocks.size(), 1u);
+  EXPECT_EQ(r.blocks[0].inputs, (std::vector<int>{0, 1}));
+  EXPECT_EQ(r.blocks[0].outputs, (std::vector<int>{0, 2}));
   ASSERT_EQ(r.modes.size(), 3u);
   for (size_t p = 0; p < poles.size(); ++p) {
     const ExtractedMode& m = *Nearest(r, poles[p]);
@@ -292,11 +300,14 @@ TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
     EXPECT_LT(std::abs(m.residues(1, 0) - residues[p](1, 0)),
               1e-5 * residues[p].cwiseAbs().maxCoeff());
   }
+  EXPECT_TRUE(r.real_poles.empty());
   frf.functions.erase(frf.functions.begin() + 4);  // output 2, input 1
   frf.functions.erase(frf.functions.begin() + 1);  // output 0, input 1
   ExtractModes(frf, PlscfOptions{}, &r);
-  EXPECT_TRUE(r.status.invalid_input());
-  EXPECT_EQ(r.status.message, "no output is measured at every input");
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_EQ(r.blocks.size(), 1u);
+  EXPECT_EQ(r.blocks[0].inputs, (std::vector<int>{0}));
+  EXPECT_EQ(r.modes.size(), 3u);
   PlscfOptions bad;
   bad.min_order = 0;
   ExtractModes(frf, bad, &r);
@@ -307,6 +318,79 @@ TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
   ExtractModes(MakeFrf(3, 2, 1, 100, 0.5, [&](double hz) { return system.H(hz); }), high, &r);
   EXPECT_TRUE(r.status.invalid_input());
   EXPECT_EQ(r.status.message, "199 lines in the band: max_order 400 needs at least 401");
+}
+
+// Without an output measured at every input (a drum's layout, contract §9):
+// pLSCF fits blocks, and a pole two blocks see is one mode. Split in two
+// (the pairs of force 1 and of force 3 share no output) and in three (each
+// of three forces measured at two masses, none at all three), every pole
+// of the system is found once, with the residues of the functions measured.
+TEST(PlscfTest, WithoutAnOutputAtEveryInputBlocksFindEachPoleOnce) {
+  const ThreeDof system;
+  std::vector<cd> poles;
+  std::vector<Eigen::Matrix3cd> residues;
+  system.Modes(&poles, &residues);
+  const std::vector<std::vector<std::pair<int, int>>> layouts = {
+      {{0, 0}, {1, 0}, {2, 2}},                           // (output, force): two parts
+      {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {0, 2}}};  // one part, no common output
+  const std::vector<size_t> blocks = {2, 3};
+  for (size_t k = 0; k < layouts.size(); ++k) {
+    Frf frf = MakeFrf(3, 3, 1, 100, 0.5, [&](double hz) { return system.G(hz); });
+    std::vector<FrfFunction> kept;
+    for (const FrfFunction& f : frf.functions) {
+      for (const auto& [o, i] : layouts[k]) {
+        if (f.output == o && f.input == i) kept.push_back(f);
+      }
+    }
+    frf.functions = kept;
+    PlscfResult r;
+    ExtractModes(frf, PlscfOptions{}, &r);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(r.blocks.size(), blocks[k]) << "layout " << k;
+    ASSERT_EQ(r.modes.size(), 3u) << "layout " << k;
+    for (size_t p = 0; p < poles.size(); ++p) {
+      const ExtractedMode& m = *Nearest(r, poles[p]);
+      EXPECT_LT(std::abs(m.eigenvalue - poles[p]), 1e-6 * std::abs(poles[p])) << "layout " << k;
+      for (const auto& [o, i] : layouts[k]) {
+        EXPECT_LT(std::abs(m.residues(o, i) - residues[p](o, i)), 1e-5 * residues[p].cwiseAbs().maxCoeff())
+            << "layout " << k << ", pole " << p << ", output " << o << ", force " << i;
+      }
+    }
+  }
+}
+
+// A drum at 10 m/s (no output at every input: the in-plane channels per
+// in-plane force, the out-of-plane per lateral force), noise-free: the two
+// blocks' poles, refined, are the model's seven at that speed, and its real
+// roots in the band (the slip lags, docs/rolling.md §2) are the real poles.
+TEST(PlscfTest, ADrumsFrfsAtSpeedGiveTheModelsPolesAtThatSpeed) {
+  const double speed = 10;
+  const Frf frf = CarTireDrum(speed);
+  const ModalSolution truth = RigidRingModel().Solve(ExampleCarTire(), speed);
+  ASSERT_TRUE(truth.ok) << truth.error;
+  PlscfResult r;
+  ExtractModes(frf, PlscfOptions{}, &r);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.refinement.status.ok()) << r.refinement.status.message;
+  EXPECT_EQ(r.blocks.size(), 2u);
+  EXPECT_EQ(r.modes.size(), truth.modes.size());
+  for (const Mode& mode : truth.modes) {
+    const ExtractedMode& m = *Nearest(r, mode.eigenvalue);
+    const double error = std::abs(m.eigenvalue - mode.eigenvalue) / std::abs(mode.eigenvalue);
+    std::printf("%s at %g m/s: %.4f Hz, zeta %.4f: relative error %.2e\n", LabelName(mode.label),
+                speed, mode.frequency_hz, mode.damping_ratio, error);
+    EXPECT_LT(error, 1e-6) << LabelName(mode.label);
+  }
+  std::vector<double> lags;
+  for (const double root : truth.real_roots) {
+    if (-root / (2 * M_PI) >= frf.frequencies_hz.front()) lags.push_back(root);
+  }
+  ASSERT_EQ(r.real_poles.size(), lags.size());
+  std::sort(lags.begin(), lags.end(), std::greater<double>());
+  for (size_t j = 0; j < lags.size(); ++j) {
+    std::printf("real root %.4f s^-1: found %.6f\n", lags[j], r.real_poles[j]);
+    EXPECT_LT(std::abs(r.real_poles[j] / lags[j] - 1), 1e-6);
+  }
 }
 
 }  // namespace

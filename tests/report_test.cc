@@ -285,7 +285,10 @@ TEST(ReportTest, ExtractRoundTripsByteForByteAndIsDocumented) {
   EXPECT_EQ(j["report"], "extract");
   ASSERT_EQ(j["conditions"].size(), 1u);
   EXPECT_EQ(j["conditions"][0]["functions"].size(), 28u);
-  EXPECT_EQ(j["conditions"][0]["diagram"].size(), 30u);  // orders 1 to --max_model_order
+  ASSERT_EQ(j["conditions"][0]["blocks"].size(), 1u);  // every output at every input
+  EXPECT_EQ(j["conditions"][0]["blocks"][0]["inputs"].size(), 4u);
+  EXPECT_EQ(j["conditions"][0]["blocks"][0]["outputs"].size(), 7u);
+  EXPECT_EQ(j["conditions"][0]["blocks"][0]["diagram"].size(), 30u);  // orders 1 to --max_model_order
   std::vector<std::string> paths;
   Paths(j, "", &paths);
   const std::string schema = ringid::ReportSchema<ringid::ExtractReport>();

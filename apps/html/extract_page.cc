@@ -66,12 +66,13 @@ void PolesTable(const ExtractBody& b, Page* page) {
 
 // The diagram's poles in [low, high] by their stability, the physical poles
 // as vertical lines, and the sum of the measured |H| on a second axis.
-Figure DiagramFigure(const ExtractCondition& c, const std::vector<ExtractedPole>& poles,
-                     double low, double high, const std::string& name) {
+Figure DiagramFigure(const ExtractCondition& c, const ExtractBlock& block,
+                     const std::vector<ExtractedPole>& poles, double low, double high,
+                     const std::string& name, const std::string& title) {
   Figure fig(name, 900, 560);
   Series stable, frequency, other, physical, sum;
-  int lowest = c.diagram.front().order, highest = c.diagram.front().order;
-  for (const DiagramOrder& o : c.diagram) {
+  int lowest = block.diagram.front().order, highest = block.diagram.front().order;
+  for (const DiagramOrder& o : block.diagram) {
     lowest = std::min(lowest, o.order);
     highest = std::max(highest, o.order);
     for (const DiagramPole& p : o.poles) {
@@ -86,11 +87,15 @@ Figure DiagramFigure(const ExtractCondition& c, const std::vector<ExtractedPole>
     physical.Row({p.frequency_hz, highest + 0.5});
     physical.Break();
   }
+  const auto in = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
   bool positive = false;
   if (!c.functions.empty()) {
     for (size_t l = 0; l < c.functions.front().frequency_hz.size(); ++l) {
       double total = 0;
       for (const FrfFit& f : c.functions) {
+        if (!in(block.inputs, f.input) || !in(block.outputs, f.output)) continue;
         total += std::abs(std::complex<double>(f.measured_re[l], f.measured_im[l]));
       }
       positive |= total > 0;
@@ -106,7 +111,7 @@ Figure DiagramFigure(const ExtractCondition& c, const std::vector<ExtractedPole>
   std::vector<std::string> parts;
   if (positive) {
     g << "set logscale y2\nset y2tics\nset format y2 '%g'\nset ytics nomirror\n"
-      << "set y2label 'Σ |H| over the functions (measured)'\n";
+      << "set y2label 'Σ |H| over the functions of the block (measured)'\n";
     parts.push_back(fig.AddData(sum) + " using 1:2 axes x1y2 with lines lw 1 lc rgb '" + kGrey +
                     "' title 'Σ |H|'");
   }
@@ -124,11 +129,12 @@ Figure DiagramFigure(const ExtractCondition& c, const std::vector<ExtractedPole>
   if (parts.empty()) parts.push_back("NaN notitle");  // no pole in the band: the axes alone
   g << PlotCommand(parts);
   fig.script = g.str();
-  fig.caption = "Stabilisation diagram, " + ConditionTitle(c) + ": the poles of each model order "
+  fig.caption = "Stabilisation diagram, " + title + ": the poles of each model order "
                 "of pLSCF in the band (Im λ > 0, damped frequency in Hz) against the order. "
                 "Filled: stable against the order below in frequency, damping and participation "
-                "vector; open: in frequency only; crosses: neither. Dashed: the physical poles. "
-                "Grey, right axis: the sum of the measured |H| over the functions (log).";
+                "vector; open: in frequency only; crosses: neither. Dashed: the condition's "
+                "physical poles. Grey, right axis: the sum of the measured |H| over the block's "
+                "functions (log).";
   return fig;
 }
 
@@ -219,10 +225,23 @@ void ConditionSection(const ExtractBody& b, const ExtractCondition& c, Page* pag
     low = std::min(low, f.frequency_hz.front());
     high = std::max(high, f.frequency_hz.back());
   }
-  if (!c.diagram.empty() && low <= high) {
-    page->AddFigure(DiagramFigure(c, b.poles, low, high, id + "-diagram"));
-  } else {
-    page->Note("No stabilisation diagram: no order or no line.");
+  if (c.blocks.size() > 1) {
+    page->Note("No output is measured at every input: pLSCF fitted each block of inputs with "
+               "the outputs measured at all of them on its own, and LSFD and the refinement "
+               "all functions at the poles of all blocks.");
+  }
+  for (size_t k = 0; k < c.blocks.size(); ++k) {
+    const ExtractBlock& block = c.blocks[k];
+    std::string title = ConditionTitle(c);
+    if (c.blocks.size() > 1) {
+      title += ", inputs " + Join(block.inputs, ", ") + " to outputs " + Join(block.outputs, ", ");
+    }
+    if (!block.diagram.empty() && low <= high) {
+      page->AddFigure(DiagramFigure(c, block, b.poles, low, high,
+                                    id + "-diagram" + (k > 0 ? "-" + std::to_string(k + 1) : ""), title));
+    } else {
+      page->Note("No stabilisation diagram, " + title + ": no order or no line.");
+    }
   }
   if (c.functions.empty()) return;
   page->Heading("Measured and synthesised FRFs, " + ConditionTitle(c));
