@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include "datasets/measurement.h"
 #include "model/assignment.h"
@@ -14,7 +15,16 @@ double ShapeScore(const Mode& mode, const ModeToPair& measured, ShapeConvention 
 
 double FrequencyScore(const Mode& mode, const ModeToPair& measured) {
   const bool other_plane = measured.label && mode.plane() != LabelPlane(*measured.label);
-  return -std::abs(std::log(mode.frequency_hz / measured.frequency_hz)) - (other_plane ? 100 : 0);
+  double distance = std::abs(std::log(mode.frequency_hz / measured.frequency_hz));
+  if (measured.damping_ratio && *measured.damping_ratio >= 0 && *measured.damping_ratio < 1) {
+    // λ = ω_d (-ζ / sqrt(1 - ζ²) + i) for a damped frequency ω_d (contract §2).
+    const auto pole = [](double hz, double zeta) {
+      return 2 * M_PI * hz * std::complex<double>(-zeta / std::sqrt(1 - zeta * zeta), 1);
+    };
+    distance = std::abs(std::log(pole(measured.frequency_hz, *measured.damping_ratio)) -
+                        std::log(pole(mode.frequency_hz, mode.damping_ratio)));
+  }
+  return -distance - (other_plane ? 100 : 0);
 }
 
 bool PairModes(const std::vector<ModeToPair>& measured, const std::vector<const Mode*>& modes,

@@ -21,6 +21,9 @@ struct ModeToPair {
   double frequency_hz = 0;
   const std::vector<std::pair<Dof, double>>* shape = nullptr;  // null or empty: none measured
   std::optional<ModeLabel> label;
+  // Where given, FrequencyScore measures the distance of the poles (an
+  // extracted pole against the model's at the fit to the same FRFs).
+  std::optional<double> damping_ratio;
   bool HasShape() const { return shape && !shape->empty(); }
 };
 
@@ -31,8 +34,8 @@ enum class PairedBy { kShape, kLabel, kFrequency };
 // under `convention`.
 double ShapeScore(const Mode& mode, const ModeToPair& measured, ShapeConvention convention);
 // The score a mode without a shape pairs by: minus the log-frequency
-// distance, less 100 where its label is known and the model mode lies in
-// another plane.
+// distance (with a damping ratio, of the complex poles: |log λ - log λ'|),
+// less 100 where its label is known and the model mode lies in another plane.
 double FrequencyScore(const Mode& mode, const ModeToPair& measured);
 
 // Pairs each of `measured` with a distinct one of `modes` (`pairs`, indices

@@ -46,7 +46,11 @@ bool RelabelAtFit(const ModalModel& model, const Dataset& d, const internal::Par
     const ModalSolution s = model.Solve(setup.Decode(fit.data(), c), d.conditions[c].speed_m_s);
     if (!s.ok) return false;
     std::vector<internal::ModeToPair> measured;
-    for (const MeasuredMode* m : in) measured.push_back({m->frequency_hz, &m->shape, std::nullopt});
+    // With their damping: at the fit both sides' poles are estimates of the
+    // same poles, and modes a fraction of a hertz apart differ in damping.
+    for (const MeasuredMode* m : in) {
+      measured.push_back({m->frequency_hz, &m->shape, std::nullopt, m->damping_ratio});
+    }
     std::vector<const Mode*> modes;
     for (const Mode& m : s.modes) modes.push_back(&m);
     std::vector<int> pick;

@@ -14,6 +14,8 @@
 
 #include <Eigen/Dense>
 
+#include "estimation/statistics.h"
+
 namespace ringid {
 namespace {
 
@@ -288,7 +290,7 @@ void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* orde
 // in the window, and its pole that of the highest order.
 std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
                                        const std::vector<PlscfOrder>& diagram, double low_hz,
-                                       double high_hz) {
+                                       double high_hz, bool settled_damping = true) {
   struct Candidate {
     int order;  // index into diagram
     const PlscfPole* pole;
@@ -296,8 +298,8 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
   std::vector<Candidate> stable;
   for (int k = 0; k < static_cast<int>(diagram.size()); ++k) {
     for (const PlscfPole& p : diagram[k].poles) {
-      if (p.stable() && p.damping_ratio > 0 && p.frequency_hz >= low_hz &&
-          p.frequency_hz <= high_hz) {
+      const bool held = settled_damping ? p.stable() : p.stable_frequency && p.stable_vector;
+      if (held && p.damping_ratio > 0 && p.frequency_hz >= low_hz && p.frequency_hz <= high_hz) {
         stable.push_back({k, &p});
       }
     }
@@ -463,6 +465,72 @@ void Refine(const Frf& frf, bool weigh_by_sigma, PlscfResult* r) {
   }
 }
 
+// The physical poles whose damping has not settled across orders (a
+// lightly damped mode's climbs slowly with the order): clusters of poles
+// stable in frequency and vector, damping within kLooseDamping of the
+// centre, none within stable_frequency of a pole in `modes`.
+constexpr double kLooseDamping = 0.5;
+std::vector<ExtractedMode> UnsettledPoles(const Frf& frf, const PlscfOptions& o, const PlscfResult& r) {
+  PlscfOptions loose = o;
+  loose.stable_damping = kLooseDamping;
+  std::vector<ExtractedMode> out;
+  for (const PlscfBlock& b : r.blocks) {
+    for (ExtractedMode& m : ChoosePoles(loose, b.diagram, frf.frequencies_hz[r.lines.front()],
+                                        frf.frequencies_hz[r.lines.back()], false)) {
+      if (std::any_of(r.modes.begin(), r.modes.end(), [&](const ExtractedMode& q) {
+            return std::abs(q.frequency_hz - m.frequency_hz) <= o.stable_frequency * q.frequency_hz;
+          })) {
+        continue;
+      }
+      Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
+      for (size_t i = 0; i < b.inputs.size(); ++i) l(b.inputs[i]) = m.participation(i);
+      m.participation = std::move(l);
+      out.push_back(std::move(m));
+    }
+  }
+  return out;
+}
+
+// Where the refined model misses the FRFs (weighted chi-square more than
+// kMisfitSd of its sd, sqrt(2 dof), above its degrees of freedom), the
+// unsettled pole that lowers chi-square most is added and all refined again,
+// if it lowers chi-square by more than the 1e-3 critical value of its
+// coordinates (the pole's 2 and 2 per function): a likelihood-ratio test.
+// At most kMaxAddedPoles rounds.
+constexpr double kMisfitSd = 5;
+constexpr int kMaxAddedPoles = 2;
+void AddMissedPoles(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
+  const double needed = ChiSquareCritical(1e-3, 2 + 2 * static_cast<double>(frf.functions.size()));
+  for (int round = 0; round < kMaxAddedPoles; ++round) {
+    const RefinementFit& fit = r->refinement;
+    if (!fit.status.ok() || !fit.weighted ||
+        fit.chi_square <= fit.degrees_of_freedom + kMisfitSd * std::sqrt(2.0 * fit.degrees_of_freedom)) {
+      return;
+    }
+    PlscfResult best;
+    for (const ExtractedMode& candidate : UnsettledPoles(frf, o, *r)) {
+      PlscfResult trial;
+      trial.lines = r->lines;
+      trial.modes = r->modes;
+      trial.modes.push_back(candidate);
+      trial.real_poles = r->real_poles;
+      std::vector<Complex> poles;
+      for (const ExtractedMode& mode : trial.modes) poles.push_back(mode.eigenvalue);
+      trial.functions = Lsfd(frf, trial.lines, poles, o.weigh_by_sigma, trial.real_poles);
+      Refine(frf, o.weigh_by_sigma, &trial);
+      if (trial.refinement.status.ok() &&
+          (!best.refinement.status.ok() || trial.refinement.chi_square < best.refinement.chi_square)) {
+        best = std::move(trial);
+      }
+    }
+    if (!best.refinement.status.ok() || fit.chi_square - best.refinement.chi_square <= needed) return;
+    r->modes = std::move(best.modes);
+    r->functions = std::move(best.functions);
+    r->real_poles = std::move(best.real_poles);
+    r->refinement = best.refinement;
+  }
+}
+
 // One block's diagram, physical poles (their participation on all the
 // Frf's inputs, 0 on those outside the block) and real poles.
 Status FitBlock(const Frf& frf, const PlscfOptions& o, const std::vector<int>& lines, double dt,
@@ -570,7 +638,10 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
   for (const ExtractedMode& mode : r->modes) poles.push_back(mode.eigenvalue);
   r->functions = Lsfd(frf, r->lines, poles, o.weigh_by_sigma, r->real_poles);
   r->refinement.status = Status::Failed(o.refine ? "no physical poles" : "not asked for");
-  if (o.refine && !r->modes.empty()) Refine(frf, o.weigh_by_sigma, r);
+  if (o.refine && !r->modes.empty()) {
+    Refine(frf, o.weigh_by_sigma, r);
+    AddMissedPoles(frf, o, r);
+  }
   AddResidues(frf, r->functions, &r->modes);
   r->status = Status::Success(std::to_string(r->modes.size()) + " physical poles" +
                               (r->refinement.status.ok() ? ", refined" : ""));

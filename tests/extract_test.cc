@@ -12,11 +12,14 @@
 
 #include <gtest/gtest.h>
 
+#include "datasets/pairing.h"
 #include "datasets/synthetic.h"
 #include "datasets/tir_parameters.h"
 #include "estimation/identify.h"
+#include "estimation/plscf.h"
 #include "report/extract_report.h"
 #include "tests/test_support.h"
+#include "validation/extract_suite.h"
 #include "validation/suites.h"
 
 namespace ringid {
@@ -137,6 +140,66 @@ TEST(ExtractTest, ADrumsFrfsAtSpeedGiveTheModelsModesAtThatSpeedLabelledAsTheMod
   for (size_t j = 0; j < lags.size(); ++j) {
     EXPECT_NEAR(x.conditions[0].plscf.real_poles[j] / lags[j], 1, 0.05);
   }
+}
+
+// The bench's standing tire 6 (seed 1): its lateral mode's damping climbs
+// across pLSCF's orders (0.012 at order 18, 0.036 at 30) and is never
+// stable at enough of them, and without it the refinement widened the yaw
+// mode (damping 0.15 against the truth's 0.06). Where the refined model
+// misses the FRFs, a pole stable in frequency and vector is added if the
+// likelihood-ratio test wants it: all seven of the model's modes, each
+// within 4 of its standard errors, and chi-square about its degrees of
+// freedom.
+TEST(ExtractTest, AModeWhoseDampingDoesNotSettleAcrossOrdersIsFoundWhereTheFrfsNeedIt) {
+  ExtractSuite suite;
+  suite.start_factor = SuiteOptions{}.start_factor;
+  suite.frf_noise = SimulateOptions{}.frf_noise;
+  std::mt19937_64 rng(SuiteOptions{}.seed);
+  Parameters truth;
+  Dataset d;
+  for (int k = 0; k <= 6; ++k) ASSERT_TRUE(DrawExtractTire(suite, false, &rng, &truth, &d).ok());
+  PlscfResult r;
+  ExtractModes(*d.conditions[0].frf, PlscfOptions{}, &r);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(r.refinement.status.ok()) << r.refinement.status.message;
+  const ModalSolution s = RigidRingModel().Solve(truth);
+  ASSERT_EQ(r.modes.size(), s.modes.size());
+  for (const Mode& mode : s.modes) {
+    const auto nearest = std::min_element(r.modes.begin(), r.modes.end(), [&](const auto& a, const auto& b) {
+      return std::abs(a.eigenvalue - mode.eigenvalue) < std::abs(b.eigenvalue - mode.eigenvalue);
+    });
+    EXPECT_LT(std::abs(nearest->frequency_hz - mode.frequency_hz), 4 * nearest->frequency_std_hz)
+        << LabelName(mode.label);
+    EXPECT_LT(std::abs(nearest->damping_ratio - mode.damping_ratio), 4 * nearest->damping_ratio_std)
+        << LabelName(mode.label);
+  }
+  EXPECT_LT(r.refinement.chi_square, 1.02 * r.refinement.degrees_of_freedom);
+}
+
+// The bench's close_pair tire 33: its yaw and lateral modes 0.06 Hz apart
+// (46.51 Hz at damping 0.1075, 46.57 at 0.0575), extracted at 46.76 (0.103)
+// and 46.56 (0.057). By frequency alone the nearer names swap them; at the
+// fit (datasets/pairing.h with the damping ratios) the poles' distance
+// names each as the truth does.
+TEST(ExtractTest, ModesAFractionOfAHertzApartAreNamedByTheirDamping) {
+  Mode yaw, lateral;
+  yaw.label = ModeLabel::kYaw;
+  yaw.frequency_hz = 46.51;
+  yaw.damping_ratio = 0.1075;
+  lateral.label = ModeLabel::kLateral;
+  lateral.frequency_hz = 46.57;
+  lateral.damping_ratio = 0.0575;
+  const std::vector<const Mode*> model = {&yaw, &lateral};
+  std::vector<internal::ModeToPair> measured = {{46.762, nullptr, std::nullopt, 0.1030},
+                                                {46.557, nullptr, std::nullopt, 0.0566}};
+  std::vector<int> pick;
+  std::vector<internal::PairedBy> by;
+  std::string why;
+  ASSERT_TRUE(internal::PairModes(measured, model, ShapeConvention::kContract, &pick, &by, &why)) << why;
+  EXPECT_EQ(pick, (std::vector<int>{0, 1}));  // 46.762 is the yaw mode
+  for (internal::ModeToPair& m : measured) m.damping_ratio.reset();
+  ASSERT_TRUE(internal::PairModes(measured, model, ShapeConvention::kContract, &pick, &by, &why)) << why;
+  EXPECT_EQ(pick, (std::vector<int>{1, 0}));  // by frequency alone: swapped
 }
 
 // The two-step route: with the masses weighed (known at the truth), the

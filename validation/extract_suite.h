@@ -5,6 +5,7 @@
 #define RINGID_VALIDATION_EXTRACT_SUITE_H_
 
 #include <optional>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +57,10 @@ struct ExtractVariant {
   // Of the values outside their tolerance, those whose own 95 % interval is
   // wider than the tolerance: the data do not determine them that closely.
   int unresolved_misses = 0;
+  // The number of found modes outside each tolerance that their own
+  // standard errors predict, sum of 2 Φ(-tolerance / sd): what an unbiased
+  // estimator with those errors would miss.
+  double frequency_misses_expected = 0, damping_misses_expected = 0;
   std::vector<ExtractMiss> misses;
   double seconds_per_tire = 0;
   template <class Archive>
@@ -75,6 +80,8 @@ struct ExtractVariant {
     a->Visit("frequency_bias_sd", &frequency_bias_sd);
     a->Visit("damping_bias_sd", &damping_bias_sd);
     a->Visit("unresolved_misses", &unresolved_misses);
+    a->Visit("frequency_misses_expected", &frequency_misses_expected);
+    a->Visit("damping_misses_expected", &damping_misses_expected);
     a->Visit("misses", &misses);
     a->Visit("seconds_per_tire", &seconds_per_tire);
   }
@@ -125,6 +132,12 @@ using BenchExtractReport = Report<ReportKind::kBenchExtract, ExtractSuite>;
 // mode within twice that gap of either), initial values within
 // o.start_factor of the truth.
 Status RunExtractSuite(const SuiteOptions& o, ExtractSuite* suite);
+
+// The next tire of a variant and its hammer test, drawn from `rng` as
+// RunExtractSuite draws them (its rng seeded with o.seed, the standing tires
+// first): *truth and *d, whose initial values lie within suite.start_factor.
+Status DrawExtractTire(const ExtractSuite& suite, bool close_pair, std::mt19937_64* rng,
+                       Parameters* truth, Dataset* d);
 
 // `p` with k_bgamma (= k_bpsi) moved until the camber mode lies `gap_hz`
 // below the vertical one and c_bgamma (= c_bpsi) and c_bz (= c_bx) until

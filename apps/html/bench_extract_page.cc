@@ -36,6 +36,10 @@ void BenchExtractPage(const BenchExtractReport& report, Page* page) {
                    {"mean damping error (sd)", NumberCell(v.damping_bias_sd, "%+.2f")},
                    {"misses whose own 95 % interval is wider than the tolerance",
                     NumberCell(v.unresolved_misses, "%.0f")},
+                   {"frequencies outside the tolerance that their standard errors predict",
+                    NumberCell(v.frequency_misses_expected, "%.1f")},
+                   {"damping ratios outside the tolerance that their standard errors predict",
+                    NumberCell(v.damping_misses_expected, "%.1f")},
                    {"failed extractions", NumberCell(v.failed, "%.0f")},
                    {"seconds per tire", NumberCell(v.seconds_per_tire)}});
   }
