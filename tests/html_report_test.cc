@@ -337,6 +337,10 @@ Made BenchExtract() {
     v.frequency_bias_sd = 0.1;
     v.damping_bias_sd = -0.2;
     v.seconds_per_tire = 3.5;
+    v.frequency_misses_expected = 0.4;
+    v.damping_misses_expected = 0.2;
+    v.misses = {{1, "yaw", 53.14, 0.0595, 54.2, 0.1509, 0.14, 0.0023},
+                {0, "lateral", 63.29, 0.0411, std::nullopt, std::nullopt, std::nullopt, std::nullopt}};
     suite.variants.push_back(v);
   }
   const std::string path = Scratch("bench_extract.json");
