@@ -58,7 +58,10 @@ std::vector<LsfdFunction> Lsfd(const Frf& frf, const std::vector<int>& lines,
     fit.output = f.output;
     fit.input = f.input;
     fit.order = static_cast<int>(frf.outputs[f.output].quantity);  // as model/frequency_response
-    const bool weigh = weigh_by_sigma && f.sigma.size() == f.h.size();
+    // Weighted only where every line used has a positive sigma (the public
+    // API may pass a zero one; files cannot, contract §9).
+    bool weigh = weigh_by_sigma && f.sigma.size() == f.h.size();
+    for (size_t k = 0; weigh && k < lines.size(); ++k) weigh = f.sigma[lines[k]] > 0;
     for (size_t k = 0; k < lines.size(); ++k) {
       const int l = lines[k];
       Basis(Complex(0, 2 * M_PI * frf.frequencies_hz[l]), fit.order, poles, real_poles, &phi);

@@ -36,7 +36,8 @@ struct LsfdFunction {
 // with Im > 0; its conjugate is implied), fitted over the lines `lines`
 // (indices into frf.frequencies_hz; at least as many as 2 poles + 1) with
 // each value's real and imaginary part weighted by 1 / sigma where
-// `weigh_by_sigma` and the function has one sigma per line, else equally.
+// `weigh_by_sigma` and the function has a positive sigma at each line used,
+// else equally.
 std::vector<LsfdFunction> Lsfd(const Frf& frf, const std::vector<int>& lines,
                                const std::vector<std::complex<double>>& poles, bool weigh_by_sigma,
                                const std::vector<double>& real_poles = {});

@@ -105,6 +105,7 @@ OutputRows BlockRows(const Frf& frf, const PlscfBlock& block, const std::vector<
     for (int i = 0; i < ni; ++i) {
       const FrfFunction& f = *at[o][block.inputs[i]];
       sigmas = sigmas && f.sigma.size() == f.h.size();
+      for (int k = 0; sigmas && k < nl; ++k) sigmas = f.sigma[lines[k]] > 0;  // as Lsfd's
       for (int k = 0; k < nl; ++k) {
         h(k, i) = f.h[lines[k]];
         if (sigmas) mean_square(k) += f.sigma[lines[k]] * f.sigma[lines[k]] / ni;

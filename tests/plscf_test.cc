@@ -393,5 +393,27 @@ TEST(PlscfTest, ADrumsFrfsAtSpeedGiveTheModelsPolesAtThatSpeed) {
   }
 }
 
+// A sigma of 0 (the public API can pass one; files cannot) is no weight:
+// the function counts unweighted, not infinitely, and the poles and LSFD's
+// residues stay those of the system.
+TEST(PlscfTest, AZeroSigmaIsNoWeight) {
+  const ThreeDof system;
+  std::vector<cd> poles;
+  std::vector<Eigen::Matrix3cd> residues;
+  system.Modes(&poles, &residues);
+  Frf frf = MakeFrf(3, 2, 1, 100, 0.5, [&](double hz) { return system.H(hz); });
+  for (FrfFunction& f : frf.functions) f.sigma.assign(f.h.size(), 1e-6);
+  frf.functions[0].sigma[40] = 0;
+  PlscfResult r;
+  ExtractModes(frf, PlscfOptions{}, &r);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_EQ(r.modes.size(), 3u);
+  for (size_t p = 0; p < poles.size(); ++p) {
+    const ExtractedMode& m = *Nearest(r, poles[p]);
+    EXPECT_LT(std::abs(m.eigenvalue - poles[p]), 1e-6 * std::abs(poles[p]));
+    EXPECT_LT(std::abs(m.residues(0, 0) - residues[p](0, 0)), 1e-5 * residues[p].cwiseAbs().maxCoeff());
+  }
+}
+
 }  // namespace
 }  // namespace ringid
