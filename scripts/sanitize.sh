@@ -46,7 +46,7 @@ long=(
   CampaignOfDiagnosesDrawsTheGaps
   IdentifiabilityDrawsSpectrumCorrelationAndProfiles
   IdentifiabilitySaysAJumpBesideTheBound
-  'PageRendersWithEveryFigureWhole/(identifiability|campaign|diagnose|extract)( |$)'
+  'PageRendersWithEveryFigureWhole/(identifiability|campaign|diagnose|extract|extract_drum)( |$)'
   # 60-120 s each under the sanitizers (2026-11-27), beside a shorter test of
   # the same path: RollingTest.LabelsCarriedFromAnAnchor..., CampaignResumeTest's
   # other tests (and CI's campaign benchmark), DiagnoseTest.NamesLugCoupling...,
@@ -79,6 +79,7 @@ long=(
   # real poles run under the sanitizers in PlscfTest.ADrumsFrfsAtSpeedGiveTheModelsPolesAtThatSpeed.
   ExtractTest.ADrumsFrfsAtSpeedGiveTheModelsModesAtThatSpeedLabelledAsTheModelLabelsThem
   HtmlReportTest.ExtractDrawsTheDiagramAndEachFunctionAgainstItsSynthesis
+  HtmlReportTest.ExtractAtSpeedDrawsADiagramPerBlock
   ReportTest.ExtractRoundTripsByteForByteAndIsDocumented
   # 100 refinements (2-3 s optimised); the noise-free refinement test runs its paths.
   ModalRefineTest.TheStandardErrorsOfTwoCloseDampedModesCoverTheTruth

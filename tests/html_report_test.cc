@@ -348,6 +348,25 @@ Made BenchExtract() {
   return Render(path);
 }
 
+// extract of a drum at 10 m/s (datasets/examples/drum_spec.json: two
+// blocks, two stabilisation diagrams, a real pole), its --report; made once.
+Made ExtractDrum() {
+  static const Made made = [] {
+    const std::string dataset = Scratch("extract_drum_frf.json"), out = Scratch("extract_drum.json");
+    std::remove(out.c_str());
+    const RunResult sim = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
+                                 " --frf=" + Source("datasets/examples/drum_spec.json") +
+                                 " --speeds=10 --output=" + dataset + " --truth=" +
+                                 Scratch("extract_drum_truth.json"));
+    EXPECT_EQ(sim.status, 0) << sim.err;
+    const RunResult r = Ringid("extract --dataset=" + dataset + " --output=" +
+                               Scratch("extract_drum_modes.json") + " --report=" + out);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return Render(out);
+  }();
+  return made;
+}
+
 // extract of the example hammer test (28 FRFs, 2 % noise), its --report;
 // made once.
 Made Extract() {
@@ -612,6 +631,19 @@ TEST(HtmlReportTest, ExtractDrawsTheDiagramAndEachFunctionAgainstItsSynthesis) {
     EXPECT_NE(svg.find("LSFD synthesis"), std::string::npos);
     EXPECT_NE(svg.find("(synthesised − measured) / σ"), std::string::npos);
   }
+}
+
+// At speed, a drum's two blocks (in-plane, out-of-plane) each get their
+// stabilisation diagram, titled by their inputs and outputs.
+TEST(HtmlReportTest, ExtractAtSpeedDrawsADiagramPerBlock) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = ExtractDrum();
+  ASSERT_EQ(m.report["conditions"][0]["blocks"].size(), 2u);
+  EXPECT_FALSE(FigureSvg(m.html, "extract-c0-diagram").empty());
+  EXPECT_FALSE(FigureSvg(m.html, "extract-c0-diagram-2").empty());
+  EXPECT_NE(m.html.find("inputs contact_x, contact_z to outputs axle_x, axle_z"), std::string::npos);
+  EXPECT_NE(m.html.find("inputs contact_y to outputs axle_y, axle_mx, axle_mz"), std::string::npos);
+  EXPECT_EQ(m.report["conditions"][0]["real_poles_per_s"].size(), 1u);
 }
 
 TEST(HtmlReportTest, IdentifyAtSpeedDrawsACampbellFigure) {
@@ -1262,7 +1294,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"compare", Compare}, Kind{"diagnose", Diagnose},
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
                       Kind{"forces", Forces}, Kind{"predict_speeds", PredictAtSpeeds},
-                      Kind{"extract", Extract},
+                      Kind{"extract", Extract}, Kind{"extract_drum", ExtractDrum},
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},
