@@ -533,6 +533,18 @@ TEST(HtmlReportTest, DiagnoseDrawsMisfitRankingAndShrink) {
   if (verdict["effect"] != "none") {  // before and after, one panel each
     EXPECT_NE(svg.find("after: with " + verdict["effect"].get<std::string>()), std::string::npos);
   }
+  // What absorbs an effect's parameter whatever its size (standing, no prior
+  // on k_cz: the sidewall's dk_bz acts on z_b as k_cz does) is in its row.
+  int absorbed = 0;
+  for (const json& f : m.report["ranking"]) {
+    for (const auto& [name, by] : f["absorbed_by"].items()) {
+      std::string text = name + ": ";
+      for (size_t k = 0; k < by.size(); ++k) text += (k ? ", " : "") + by[k].get<std::string>();
+      EXPECT_NE(m.html.find(text), std::string::npos) << text;
+      ++absorbed;
+    }
+  }
+  EXPECT_GE(absorbed, 1);
 }
 
 // Static stiffnesses (dataset format 3) get their own misfit table.

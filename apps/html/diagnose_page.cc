@@ -104,6 +104,16 @@ Cell ValuesCell(const EffectFit& fit) {
   return ListCell(items);
 }
 
+// Per effect parameter the free baseline parameters that absorb it whatever
+// its size ("dm: m_b, I_by"), "–" where none does.
+Cell AbsorbedCell(const EffectFit& fit) {
+  std::vector<std::string> items;
+  for (const auto& [name, by] : fit.absorbed_by) {
+    if (!by.empty()) items.push_back(name + ": " + Join(by, ", "));
+  }
+  return items.empty() ? TextCell("–") : ListCell(items);
+}
+
 Row EffectRow(const EffectFit& fit) {
   // An effect that was not fitted has no evidence.
   const auto shown = [&fit](double value) { return fit.ok ? Finite(value) : std::nullopt; };
@@ -119,7 +129,8 @@ Row EffectRow(const EffectFit& fit) {
           YesNoCell(fit.supported),
           NumberCell(shown(fit.chi2_above_verdict)),
           NumberCell(shown(fit.group_threshold)),
-          ValuesCell(fit)};
+          ValuesCell(fit),
+          AbsorbedCell(fit)};
 }
 
 void EffectsSection(const DiagnosisResult& report, Page* page) {
@@ -128,7 +139,7 @@ void EffectsSection(const DiagnosisResult& report, Page* page) {
   page->Heading("Effects, best first");
   page->Table({"effect", "fitted", "gap after", "shrink (%)", "likelihood ratio", "p",
                "extra parameters", "AIC", "BIC", "supported", "χ² above the verdict's",
-               "group threshold", "values"},
+               "group threshold", "values", "absorbed by (whatever its size)"},
               rows);
 }
 
