@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -363,16 +364,17 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
 }
 
 // The physical real poles: repeatedly, the stable real pole (negative, its
-// |σ| / 2π in [low_hz, high_hz]) that the most orders hold within
+// |σ| / 2π at most high_hz: one below the band leaves a 1 / s term in it,
+// which neither residual term is) that the most orders hold within
 // stable_frequency (relative), taken at its highest order; one near a pole
 // already taken is that pole again.
 std::vector<double> ChooseRealPoles(const PlscfOptions& o, const std::vector<PlscfOrder>& diagram,
-                                    double low_hz, double high_hz) {
+                                    double high_hz) {
   std::vector<std::pair<int, double>> stable;  // (order index, σ)
   for (int k = 0; k < static_cast<int>(diagram.size()); ++k) {
     for (const PlscfPole& p : diagram[k].real_poles) {
       const double sigma = p.eigenvalue.real(), corner_hz = -sigma / (2 * M_PI);
-      if (p.stable() && sigma < 0 && corner_hz >= low_hz && corner_hz <= high_hz) {
+      if (p.stable() && sigma < 0 && corner_hz <= high_hz) {
         stable.emplace_back(k, sigma);
       }
     }
@@ -492,16 +494,55 @@ std::vector<ExtractedMode> UnsettledPoles(const Frf& frf, const PlscfOptions& o,
   return out;
 }
 
+// The real poles a misfit may lack (a slip lag's root with noise is seldom
+// stable across orders, and below the band it leaves a 1 / s term): each
+// block's negative real poles of the highest order with |σ| / 2π at most
+// high_hz, and one at the band's lower edge; none within stable_frequency of
+// one in `r`.
+std::vector<double> RealPoleTrials(const Frf& frf, const PlscfOptions& o, const PlscfResult& r) {
+  std::vector<double> out = {-2 * M_PI * frf.frequencies_hz[r.lines.front()]};
+  for (const PlscfBlock& b : r.blocks) {
+    if (b.diagram.empty()) continue;
+    for (const PlscfPole& p : b.diagram.back().real_poles) {
+      const double sigma = p.eigenvalue.real();
+      if (sigma < 0 && -sigma / (2 * M_PI) <= frf.frequencies_hz[r.lines.back()]) out.push_back(sigma);
+    }
+  }
+  out.erase(std::remove_if(out.begin(), out.end(), [&](double sigma) {
+              return std::any_of(r.real_poles.begin(), r.real_poles.end(), [&](double q) {
+                return std::abs(q - sigma) <= o.stable_frequency * std::abs(q);
+              });
+            }),
+            out.end());
+  return out;
+}
+
+// `r`'s poles with `mode` or `real_pole` added, fitted by LSFD and refined.
+PlscfResult WithPole(const Frf& frf, const PlscfOptions& o, const PlscfResult& r,
+                     const ExtractedMode* mode, std::optional<double> real_pole) {
+  PlscfResult trial;
+  trial.lines = r.lines;
+  trial.modes = r.modes;
+  if (mode) trial.modes.push_back(*mode);
+  trial.real_poles = r.real_poles;
+  if (real_pole) trial.real_poles.push_back(*real_pole);
+  std::vector<Complex> poles;
+  for (const ExtractedMode& m : trial.modes) poles.push_back(m.eigenvalue);
+  trial.functions = Lsfd(frf, trial.lines, poles, o.weigh_by_sigma, trial.real_poles);
+  Refine(frf, o.weigh_by_sigma, &trial);
+  return trial;
+}
+
 // Where the refined model misses the FRFs (weighted chi-square more than
 // kMisfitSd of its sd, sqrt(2 dof), above its degrees of freedom), the
-// unsettled pole that lowers chi-square most is added and all refined again,
-// if it lowers chi-square by more than the 1e-3 critical value of its
-// coordinates (the pole's 2 and 2 per function): a likelihood-ratio test.
-// At most kMaxAddedPoles rounds.
+// unsettled pole or real pole that lowers chi-square most is added and all
+// refined again, if it lowers chi-square by more than the 1e-3 critical
+// value of its coordinates (a pole's 2 and 2 per function, a real pole's 1
+// and 1 per function): a likelihood-ratio test. At most kMaxAddedPoles rounds.
 constexpr double kMisfitSd = 5;
 constexpr int kMaxAddedPoles = 2;
 void AddMissedPoles(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
-  const double needed = ChiSquareCritical(1e-3, 2 + 2 * static_cast<double>(frf.functions.size()));
+  const double functions = static_cast<double>(frf.functions.size());
   for (int round = 0; round < kMaxAddedPoles; ++round) {
     const RefinementFit& fit = r->refinement;
     if (!fit.status.ok() || !fit.weighted ||
@@ -509,22 +550,22 @@ void AddMissedPoles(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
       return;
     }
     PlscfResult best;
-    for (const ExtractedMode& candidate : UnsettledPoles(frf, o, *r)) {
-      PlscfResult trial;
-      trial.lines = r->lines;
-      trial.modes = r->modes;
-      trial.modes.push_back(candidate);
-      trial.real_poles = r->real_poles;
-      std::vector<Complex> poles;
-      for (const ExtractedMode& mode : trial.modes) poles.push_back(mode.eigenvalue);
-      trial.functions = Lsfd(frf, trial.lines, poles, o.weigh_by_sigma, trial.real_poles);
-      Refine(frf, o.weigh_by_sigma, &trial);
-      if (trial.refinement.status.ok() &&
-          (!best.refinement.status.ok() || trial.refinement.chi_square < best.refinement.chi_square)) {
+    double best_gain = 0;  // chi-square's drop beyond its critical value
+    const auto consider = [&](PlscfResult trial, double coordinates) {
+      if (!trial.refinement.status.ok()) return;
+      const double gain = fit.chi_square - trial.refinement.chi_square - ChiSquareCritical(1e-3, coordinates);
+      if (gain > best_gain) {
+        best_gain = gain;
         best = std::move(trial);
       }
+    };
+    for (const ExtractedMode& candidate : UnsettledPoles(frf, o, *r)) {
+      consider(WithPole(frf, o, *r, &candidate, std::nullopt), 2 + 2 * functions);
     }
-    if (!best.refinement.status.ok() || fit.chi_square - best.refinement.chi_square <= needed) return;
+    for (const double sigma : RealPoleTrials(frf, o, *r)) {
+      consider(WithPole(frf, o, *r, nullptr, sigma), 1 + functions);
+    }
+    if (best_gain <= 0) return;
     r->modes = std::move(best.modes);
     r->functions = std::move(best.functions);
     r->real_poles = std::move(best.real_poles);
@@ -559,7 +600,7 @@ Status FitBlock(const Frf& frf, const PlscfOptions& o, const std::vector<int>& l
   }
   const double low_hz = frf.frequencies_hz[lines.front()], high_hz = frf.frequencies_hz[lines.back()];
   *modes = ChoosePoles(o, b->diagram, low_hz, high_hz);
-  *real_poles = ChooseRealPoles(o, b->diagram, low_hz, high_hz);
+  *real_poles = ChooseRealPoles(o, b->diagram, high_hz);
   for (ExtractedMode& m : *modes) {
     Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
     for (int i = 0; i < ni; ++i) l(b->inputs[i]) = m.participation(i);

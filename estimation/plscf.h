@@ -131,8 +131,10 @@ struct PlscfResult {
   std::vector<PlscfBlock> blocks;    // one for a full layout
   std::vector<ExtractedMode> modes;  // ascending frequency
   // The physical real poles σ < 0 (estimation/lsfd.h: a rolling tire's slip
-  // lags), stable at min_stable_orders orders with |σ| / 2π in the band,
-  // ascending |σ|; the refinement's where it succeeded.
+  // lags), stable at min_stable_orders orders with |σ| / 2π below the band's
+  // top, ascending |σ|, then any a misfit added (plscf.cc, AddMissedPoles);
+  // the refinement's where it succeeded. Each function's real_residues
+  // follow this order.
   std::vector<double> real_poles;
   // Per function of the Frf (its order): LSFD at the modes' eigenvalues and
   // the real poles, or the refinement's.
