@@ -381,17 +381,17 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   // alone: from initial values a factor 3 off that names them wrongly (bench
   // --suite=frf's standing + drum tires with the drum's modes in the stage:
   // the best fit found in 19 of 20, not 20, at 15.2 s a fit, not 3.8), so
-  // the stage takes the other conditions' modes where they give any.
-  // Where every condition is a drum, its modes are all there is.
-  const auto drum = [&](size_t c) {
+  // the stage takes the other conditions' modes. A drum alone has no stage
+  // (with one, 20 drum tires at 10 m/s were not named better: not kept).
+  for (size_t c = 0; c < found.size(); ++c) {
     const auto& frf = dataset.conditions[c].frf;
-    return frf && std::any_of(frf->outputs.begin(), frf->outputs.end(),
-                              [](const FrfOutput& out) { return out.channel.has_value(); });
-  };
-  bool named = false;
-  for (size_t c = 0; c < found.size(); ++c) named = named || (!drum(c) && !found[c].empty());
-  for (size_t c = 0; named && c < found.size(); ++c) {
-    if (drum(c)) found[c].clear();
+    if (frf && std::any_of(frf->outputs.begin(), frf->outputs.end(),
+                           [](const FrfOutput& out) { return out.channel.has_value(); })) {
+      found[c].clear();
+    }
+  }
+  if (std::all_of(found.begin(), found.end(), [](const auto& modes) { return modes.empty(); })) {
+    found.clear();
   }
   const int n = static_cast<int>(plan.size());
   // On several threads each start has its own copy of the problem, made here
