@@ -58,6 +58,11 @@ struct ThreeDof {
   // eigenvalues with Im > 0, and each one's residue matrix of H (3 x 3,
   // columns per force), from the standard form A = B^-1 [0 I; -K -C]:
   // H(s) = [I 0] (sI - A)^-1 [0; M^-1] = sum_r V_r W_r [0; M^-1] / (s - λ_r).
+  std::pair<std::vector<cd>, std::vector<Eigen::Matrix3cd>> Modes() const {
+    std::pair<std::vector<cd>, std::vector<Eigen::Matrix3cd>> out;
+    Modes(&out.first, &out.second);
+    return out;
+  }
   void Modes(std::vector<cd>* poles, std::vector<Eigen::Matrix3cd>* residues) const {
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6, 6), b = Eigen::MatrixXd::Identity(6, 6);
     a.topRightCorner(3, 3).setIdentity();
@@ -97,9 +102,7 @@ double Seconds(std::chrono::steady_clock::time_point since) {
 
 TEST(PlscfTest, ANoiseFreeThreeDofSystemGivesItsPolesAndResidues) {
   const ThreeDof system;
-  std::vector<cd> poles;
-  std::vector<Eigen::Matrix3cd> residues;
-  system.Modes(&poles, &residues);
+  const auto [poles, residues] = system.Modes();
   ASSERT_EQ(poles.size(), 3u);
   const Frf frf = MakeFrf(3, 2, 1, 100, 0.5, [&](double hz) { return system.H(hz); });
   PlscfOptions o;
@@ -281,9 +284,7 @@ TEST(PlscfTest, TwoModesThreeHertzApartAtDamping006WithNoiseAreBothFound) {
 // options, nothing runs.
 TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
   const ThreeDof system;
-  std::vector<cd> poles;
-  std::vector<Eigen::Matrix3cd> residues;
-  system.Modes(&poles, &residues);
+  const auto [poles, residues] = system.Modes();
   Frf frf = MakeFrf(3, 2, 1, 100, 0.5, [&](double hz) { return system.H(hz); });
   frf.functions.erase(frf.functions.begin() + 3);  // output 1, input 1
   PlscfResult r;
@@ -327,9 +328,7 @@ TEST(PlscfTest, AnOutputMissingAnInputJoinsOnlyLsfd) {
 // of the system is found once, with the residues of the functions measured.
 TEST(PlscfTest, WithoutAnOutputAtEveryInputBlocksFindEachPoleOnce) {
   const ThreeDof system;
-  std::vector<cd> poles;
-  std::vector<Eigen::Matrix3cd> residues;
-  system.Modes(&poles, &residues);
+  const auto [poles, residues] = system.Modes();
   const std::vector<std::vector<std::pair<int, int>>> layouts = {
       {{0, 0}, {1, 0}, {2, 2}},                           // (output, force): two parts
       {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {0, 2}}};  // one part, no common output
@@ -398,9 +397,7 @@ TEST(PlscfTest, ADrumsFrfsAtSpeedGiveTheModelsPolesAtThatSpeed) {
 // residues stay those of the system.
 TEST(PlscfTest, AZeroSigmaIsNoWeight) {
   const ThreeDof system;
-  std::vector<cd> poles;
-  std::vector<Eigen::Matrix3cd> residues;
-  system.Modes(&poles, &residues);
+  const auto [poles, residues] = system.Modes();
   Frf frf = MakeFrf(3, 2, 1, 100, 0.5, [&](double hz) { return system.H(hz); });
   for (FrfFunction& f : frf.functions) f.sigma.assign(f.h.size(), 1e-6);
   frf.functions[0].sigma[40] = 0;
