@@ -262,6 +262,25 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptio
   return found;
 }
 
+std::vector<std::vector<FrfMode>> StageModes(const Dataset& d) {
+  PlscfOptions o;
+  o.refine = false;
+  std::vector<std::vector<FrfMode>> found(d.conditions.size());
+  bool any = false;
+  for (size_t c = 0; c < d.conditions.size(); ++c) {
+    const std::optional<Frf>& frf = d.conditions[c].frf;
+    if (!frf || std::any_of(frf->outputs.begin(), frf->outputs.end(),
+                            [](const FrfOutput& out) { return out.channel.has_value(); })) {
+      continue;
+    }
+    PlscfResult r;
+    found[c] = ExtractFrfModes(*frf, o, nullptr, &r);
+    any = any || !found[c].empty();
+  }
+  if (!any) found.clear();
+  return found;
+}
+
 std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Dataset& d,
                                              const ParameterSetup& setup,
                                              const std::vector<std::vector<FrfMode>>& found,

@@ -85,6 +85,18 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptio
                                              std::string* why = nullptr,
                                              std::vector<PlscfResult>* results = nullptr);
 
+// The modes the modal stage starts from: ModesInFrfs without the
+// refinement (it costs about 60 ms a hammer test of 28 FRFs, a quarter of a
+// one-start fit, BM_FrfFit, and the FRF fit refines the modes itself), of
+// the conditions whose outputs name their modes. A drum's outputs are axle
+// channels, which name its modes by frequency alone: from initial values a
+// factor 3 off that names them wrongly (bench --suite=frf's standing + drum
+// tires with the drum's modes in the stage: the best fit in 19 of 20, not
+// 20, at 15.2 s a fit, not 3.8). A drum alone has no stage (with one, 20
+// drum tires at 10 m/s were not named better). Empty where no condition
+// gives a mode.
+std::vector<std::vector<FrfMode>> StageModes(const Dataset& d);
+
 // A start for `setup` (of `d`, a dataset with FRFs) from the point `from`:
 // `found` (ModesInFrfs) labelled by the model at `from`, fitted as modal
 // data from there (kModalStageStarts starts: `from` and the point matching

@@ -371,28 +371,7 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
   // Measured FRFs: each start first goes through the modal stage, so that
   // the model's peaks lie on the measured ones (estimation/frf_start.h).
-  // Its modes only start the FRF fit, which refines them itself: without
-  // their refinement (estimation/modal_refine.h), which costs about 60 ms a
-  // hammer test of 28 FRFs, a quarter of a one-start fit (BM_FrfFit).
-  PlscfOptions extraction;
-  extraction.refine = false;
-  auto found = internal::ModesInFrfs(dataset, extraction);
-  // A drum's outputs are axle channels, which name its modes by frequency
-  // alone: from initial values a factor 3 off that names them wrongly (bench
-  // --suite=frf's standing + drum tires with the drum's modes in the stage:
-  // the best fit found in 19 of 20, not 20, at 15.2 s a fit, not 3.8), so
-  // the stage takes the other conditions' modes. A drum alone has no stage
-  // (with one, 20 drum tires at 10 m/s were not named better: not kept).
-  for (size_t c = 0; c < found.size(); ++c) {
-    const auto& frf = dataset.conditions[c].frf;
-    if (frf && std::any_of(frf->outputs.begin(), frf->outputs.end(),
-                           [](const FrfOutput& out) { return out.channel.has_value(); })) {
-      found[c].clear();
-    }
-  }
-  if (std::all_of(found.begin(), found.end(), [](const auto& modes) { return modes.empty(); })) {
-    found.clear();
-  }
+  const auto found = internal::StageModes(dataset);
   const int n = static_cast<int>(plan.size());
   // On several threads each start has its own copy of the problem, made here
   // one after another; on one, the problem itself, whose kept solutions the

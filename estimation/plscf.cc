@@ -363,6 +363,19 @@ std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
   return modes;
 }
 
+// A block's mode with its participation on all the Frf's inputs (0 on those
+// outside the block).
+void OnAllInputs(const Frf& frf, const PlscfBlock& b, ExtractedMode* m) {
+  Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
+  for (size_t i = 0; i < b.inputs.size(); ++i) l(b.inputs[i]) = m->participation(i);
+  m->participation = std::move(l);
+}
+
+// Two real poles are one where they lie within stable_frequency of `b`.
+bool SameRealPole(const PlscfOptions& o, double a, double b) {
+  return std::abs(a - b) <= o.stable_frequency * std::abs(b);
+}
+
 // The physical real poles: repeatedly, the stable real pole (negative, its
 // |σ| / 2π at most high_hz: one below the band leaves a 1 / s term in it,
 // which neither residual term is) that the most orders hold within
@@ -379,7 +392,7 @@ std::vector<double> ChooseRealPoles(const PlscfOptions& o, const std::vector<Pls
       }
     }
   }
-  const auto near = [&](double a, double b) { return std::abs(a - b) <= o.stable_frequency * std::abs(b); };
+  const auto near = [&](double a, double b) { return SameRealPole(o, a, b); };
   std::vector<double> out;
   std::vector<bool> used(stable.size(), false);
   for (;;) {
@@ -485,9 +498,7 @@ std::vector<ExtractedMode> UnsettledPoles(const Frf& frf, const PlscfOptions& o,
           })) {
         continue;
       }
-      Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
-      for (size_t i = 0; i < b.inputs.size(); ++i) l(b.inputs[i]) = m.participation(i);
-      m.participation = std::move(l);
+      OnAllInputs(frf, b, &m);
       out.push_back(std::move(m));
     }
   }
@@ -509,9 +520,8 @@ std::vector<double> RealPoleTrials(const Frf& frf, const PlscfOptions& o, const 
     }
   }
   out.erase(std::remove_if(out.begin(), out.end(), [&](double sigma) {
-              return std::any_of(r.real_poles.begin(), r.real_poles.end(), [&](double q) {
-                return std::abs(q - sigma) <= o.stable_frequency * std::abs(q);
-              });
+              return std::any_of(r.real_poles.begin(), r.real_poles.end(),
+                                 [&](double q) { return SameRealPole(o, sigma, q); });
             }),
             out.end());
   return out;
@@ -601,11 +611,7 @@ Status FitBlock(const Frf& frf, const PlscfOptions& o, const std::vector<int>& l
   const double low_hz = frf.frequencies_hz[lines.front()], high_hz = frf.frequencies_hz[lines.back()];
   *modes = ChoosePoles(o, b->diagram, low_hz, high_hz);
   *real_poles = ChooseRealPoles(o, b->diagram, high_hz);
-  for (ExtractedMode& m : *modes) {
-    Eigen::VectorXcd l = Eigen::VectorXcd::Zero(frf.inputs.size());
-    for (int i = 0; i < ni; ++i) l(b->inputs[i]) = m.participation(i);
-    m.participation = std::move(l);
-  }
+  for (ExtractedMode& m : *modes) OnAllInputs(frf, *b, &m);
   return Status::Success();
 }
 
@@ -655,9 +661,8 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
     r->status = FitBlock(frf, o, r->lines, r->dt, theta, &b, &found, &real);
     if (!r->status.ok()) return;
     for (const double sigma : real) {
-      if (std::none_of(r->real_poles.begin(), r->real_poles.end(), [&](double q) {
-            return std::abs(q - sigma) <= o.stable_frequency * std::abs(q);
-          })) {
+      if (std::none_of(r->real_poles.begin(), r->real_poles.end(),
+                       [&](double q) { return SameRealPole(o, sigma, q); })) {
         r->real_poles.push_back(sigma);
       }
     }
