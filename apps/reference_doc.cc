@@ -30,7 +30,8 @@ const char* GroupText(Group g) {
   return "";
 }
 
-std::string Number(double v) {
+// A value to four significant digits.
+std::string Significant4(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
@@ -59,7 +60,7 @@ std::string ReferenceMarkdown() {
     const bool set = car.IsSet(p) && (info.group != Group::kEffect || car[p] != 0);
     o << "| `" << ParamName(p) << "` | " << info.description << " | " << info.unit << " | "
       << DomainText(info.domain) << " | " << GroupText(info.group) << " | "
-      << (set ? Number(car[p]) : "—") << " |\n";
+      << (set ? Significant4(car[p]) : "—") << " |\n";
   }
   o << "\n## Degrees of freedom\n\n"
        "Mode shapes name these (a dataset's `shape`, a report's shapes).\n\n"

@@ -53,7 +53,7 @@ Param ParamCalled(const std::string& name, const std::string& field) {
   return *p;
 }
 
-std::map<Param, double> Values(const ParameterValues& values, const std::string& field) {
+std::map<Param, double> Values(const NamedValues& values, const std::string& field) {
   std::map<Param, double> out;
   for (const auto& [name, v] : values) {
     const std::string f = field + "." + name;
@@ -75,7 +75,7 @@ std::vector<std::string> MeasurableLabels() {
   return names;
 }
 
-MeasuredMode Mode(const ModeFields& j, const std::string& field) {
+MeasuredMode ReadMode(const ModeFields& j, const std::string& field) {
   MeasuredMode m;
   const auto parsed = ParseLabel(j.label);
   if (!parsed) Fail(field + ".label", UnknownName("label", j.label, MeasurableLabels()));
@@ -167,7 +167,7 @@ void Modes(const std::vector<ModeFields>& modes, const std::string& field, int c
   std::set<ModeLabel> seen;
   for (size_t i = 0; i < modes.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
-    d->modes.push_back(Mode(modes[i], f));
+    d->modes.push_back(ReadMode(modes[i], f));
     d->modes.back().condition = condition;
     if (!seen.insert(d->modes.back().label).second) {
       Fail(f + ".label",

@@ -17,7 +17,8 @@
 
 namespace ringid {
 
-using ParameterValues = std::map<std::string, double>;
+// Parameter values by name, as the file spells them.
+using NamedValues = std::map<std::string, double>;
 
 struct ModeFields {
   std::string label;
@@ -76,7 +77,7 @@ struct StaticFields {
 struct ConditionFields {
   std::string name;
   std::optional<double> speed_m_s;  // 0 when absent
-  std::optional<ParameterValues> known, initial;
+  std::optional<NamedValues> known, initial;
   std::optional<std::vector<ModeFields>> modes;
   std::optional<std::vector<StaticFields>> statics;  // "static", format 3
   std::optional<FrfFields> frf;                      // format 3 (contract §9)
@@ -97,7 +98,7 @@ struct DatasetFields {
   std::string format = kDatasetFormat1;  // read first: it decides the fields after
   std::string name;
   std::optional<std::string> description;
-  std::optional<ParameterValues> known, initial;
+  std::optional<NamedValues> known, initial;
   std::optional<std::map<std::string, std::string>> ties;
   std::vector<ModeFields> modes;  // format 1
   std::optional<std::map<std::string, PriorFields>> priors;  // format 2 from here

@@ -12,14 +12,14 @@ namespace ringid {
 
 namespace {
 
-ParameterValues ValuesOf(const std::map<Param, double>& m) {
-  ParameterValues o;
+NamedValues ValuesOf(const std::map<Param, double>& m) {
+  NamedValues o;
   for (const auto& [p, v] : m) o[ParamName(p)] = v;
   return o;
 }
 
 // Absent where empty, as a reader would leave it out.
-std::optional<ParameterValues> GivenValues(const std::map<Param, double>& m) {
+std::optional<NamedValues> GivenValues(const std::map<Param, double>& m) {
   if (m.empty()) return std::nullopt;
   return ValuesOf(m);
 }

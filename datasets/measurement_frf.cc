@@ -40,7 +40,7 @@ bool MeasurableAt(const Frf& frf, double speed) {
   return true;
 }
 
-class Records final : public MeasurementRecords {
+class FrfItems final : public MeasurementRecords {
  public:
   int Items(const Dataset& d) const override {
     int n = 0;
@@ -55,8 +55,8 @@ class Records final : public MeasurementRecords {
   }
 };
 
-const Records& TheRecords() {
-  static const Records records;
+const FrfItems& TheFrfItems() {
+  static const FrfItems records;
   return records;
 }
 
@@ -98,7 +98,7 @@ class FrfKind final : public Measurement {
   Quantity quantity() const override { return Quantity::kFrf; }
   const char* description() const override { return "frequency response function"; }
   const char* unit() const override { return "per N"; }
-  const MeasurementRecords& records() const override { return TheRecords(); }
+  const MeasurementRecords& records() const override { return TheFrfItems(); }
   std::string Addition(const Dataset& d, int i) const override {
     std::string words = "the frequency response functions";
     if (d.conditions.size() > 1) words += " in condition " + d.conditions[ConditionOfItem(d, i)].name;
@@ -260,6 +260,6 @@ const Measurement& FrfMeasurement() {
   return unit;
 }
 
-const MeasurementRecords& FrfRecords() { return TheRecords(); }
+const MeasurementRecords& FrfRecords() { return TheFrfItems(); }
 
 }  // namespace ringid

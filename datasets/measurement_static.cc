@@ -8,7 +8,7 @@
 namespace ringid {
 namespace {
 
-class Records final : public MeasurementRecords {
+class StaticItems final : public MeasurementRecords {
  public:
   int Items(const Dataset& d) const override { return static_cast<int>(d.statics.size()); }
   int ConditionOf(const Dataset& d, int i) const override { return d.statics[i].condition; }
@@ -28,8 +28,8 @@ class Records final : public MeasurementRecords {
   }
 };
 
-const Records& TheRecords() {
-  static const Records records;
+const StaticItems& TheStaticItems() {
+  static const StaticItems records;
   return records;
 }
 
@@ -42,7 +42,7 @@ class Static final : public Measurement {
   Quantity quantity() const override { return Quantity::kStatic; }
   const char* description() const override { return "static stiffness"; }
   const char* unit() const override { return "N/m"; }
-  const MeasurementRecords& records() const override { return TheRecords(); }
+  const MeasurementRecords& records() const override { return TheStaticItems(); }
   std::string Addition(const Dataset& d, int i) const override {
     std::string words = "a static " + std::string(ToString(d.statics[i].direction)) + " stiffness";
     if (d.conditions.size() > 1) words += " in condition " + d.conditions[d.statics[i].condition].name;
@@ -68,7 +68,7 @@ class Static final : public Measurement {
                  MisfitTable* t) const override {
     ItemMisfit w;
     if (d.NamesConditions()) w.condition = d.conditions[d.statics[i].condition].name;
-    w.name = TheRecords().ItemName(d, i);
+    w.name = TheStaticItems().ItemName(d, i);
     w.sigma = r;
     t->others.push_back(w);
   }
@@ -119,6 +119,6 @@ const Measurement& StaticMeasurement() {
   return unit;
 }
 
-const MeasurementRecords& StaticRecords() { return TheRecords(); }
+const MeasurementRecords& StaticRecords() { return TheStaticItems(); }
 
 }  // namespace ringid

@@ -15,6 +15,7 @@ namespace {
 
 using internal::Fail;  // caught in ParseTir
 using internal::Failure;
+using internal::Quoted;
 
 std::string Upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -28,14 +29,6 @@ std::string Trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-// `s` as a message may quote it: at most 40 characters, printable ASCII.
-std::string Quoted(const std::string& s) {
-  std::string out;
-  for (const char c : s.substr(0, 40)) {
-    out += (c >= 32 && c < 127) ? c : '?';
-  }
-  return "'" + out + (s.size() > 40 ? "...'" : "'");
-}
 
 // A key, section or column name: a letter or '_', then letters, digits, '_'.
 bool ValidName(const std::string& s) {

@@ -45,7 +45,7 @@ std::string NodeName(int node, int direction) {
 
 std::string Trimmed(const std::string& s) { return std::string(uff_internal::Trim(s)); }
 // The file's text as a message may quote it: 'printable ASCII', at most 40 characters.
-std::string Quoted(const std::string& s) { return uff_internal::Quoted(s); }
+using internal::Quoted;
 
 const UffUnitName* FindUnit(const std::string& name) {
   for (const UffUnitName& u : UffUnitNames()) {

@@ -11,19 +11,16 @@
 #include <string_view>
 #include <vector>
 
+#include "datasets/load_failure.h"
 #include "datasets/uff.h"
 
 namespace ringid::uff_internal {
 
 // Thrown inside the reader only, caught in ParseUff.
-struct Failure {
-  std::string field;
-  std::string message;
-};
-[[noreturn]] void Fail(const std::string& field, const std::string& message);
+using internal::Fail;
+using internal::Failure;
 
-// `s` as a message may quote it: at most 40 characters, printable ASCII.
-std::string Quoted(std::string_view s);
+using internal::Quoted;
 std::string_view Trim(std::string_view s);
 // An I6 field "-1" in columns 1-6 and nothing else: a dataset's delimiter.
 bool IsDelimiter(std::string_view line);

@@ -60,16 +60,6 @@ bool IntSyntax(std::string_view s) {
 
 }  // namespace
 
-[[noreturn]] void Fail(const std::string& field, const std::string& message) {
-  throw Failure{field, message};
-}
-
-std::string Quoted(std::string_view s) {
-  std::string out;
-  for (const char c : s.substr(0, 40)) out += (c >= 32 && c < 127) ? c : '?';
-  return "'" + out + (s.size() > 40 ? "...'" : "'");
-}
-
 std::string_view Trim(std::string_view s) {
   const size_t b = s.find_first_not_of(" \t");
   if (b == std::string_view::npos) return {};

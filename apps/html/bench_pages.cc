@@ -58,34 +58,15 @@ FrequencyFigureOptions Table3Section(const PaperSuite& suite, Page* page) {
 
 // ------------------------------------------------------------- synthetic
 
-// The coverage per tire and the binomial band expected around 95 %.
-struct Coverage {
-  std::vector<std::string> tires;
-  Series observed, band;
-  double low = 90;
-};
-
-Coverage TiresSection(const SyntheticSuite& suite, Page* page) {
-  Coverage coverage;
+CoverageSeries TiresSection(const SyntheticSuite& suite, Page* page) {
+  CoverageSeries coverage;
   std::vector<Row> rows;
   for (const TireCoverage& tire : suite.tires) {
     rows.push_back(
         {TextCell(tire.tire), NumberCell(tire.scale), NumberCell(tire.replicates, "%.0f"),
          NumberCell(static_cast<double>(tire.intervals), "%.0f"), PercentCell(tire.coverage_95),
          NumberCell(tire.median_error_over_std, "%.3f"), NumberCell(tire.failed_fits, "%.0f")});
-    const double index = static_cast<double>(coverage.tires.size());
-    coverage.tires.push_back(tire.tire);
-    const double percent = 100 * tire.coverage_95;
-    if (std::isfinite(percent)) {
-      coverage.observed.Row({index, percent});
-      coverage.low = std::min(coverage.low, percent);
-    }
-    if (tire.intervals > 0) {
-      const double half =
-          100 * kNormal95 * std::sqrt(0.95 * 0.05 / static_cast<double>(tire.intervals));
-      coverage.band.Row({index, std::max(0.0, 95 - half), std::min(100.0, 95 + half)});
-      coverage.low = std::min(coverage.low, 95 - half);
-    }
+    coverage.Add(tire.tire, tire.coverage_95, tire.intervals);
   }
   page->Heading("Tires");
   page->Table({"tire", "scale", "replicates", "intervals", "95 % coverage (%)",
@@ -94,32 +75,14 @@ Coverage TiresSection(const SyntheticSuite& suite, Page* page) {
   return coverage;
 }
 
-void CoverageFigure(const Coverage& coverage, Page* page) {
+void CoverageFigure(const CoverageSeries& coverage, Page* page) {
   if (coverage.observed.empty()) {
     page->Note("No coverage figure: no tire has a coverage.");
     return;
   }
   Figure figure("bench-synthetic-coverage", 760, 380);
-  const std::string red = "lc rgb '" + std::string(kRed) + "'";
-  std::ostringstream script;
-  script << "set grid ytics\nset key outside below center horizontal\n"
-         << "set xrange [-0.5:" << static_cast<double>(coverage.tires.size()) - 0.5
-         << "]\nset yrange [" << std::floor(coverage.low - 2) << ":101]\n"
-         << "set xtics noenhanced " << Tics(coverage.tires) << "\n"
-         << "set ylabel 'coverage of the 95 % intervals (%)'\n"
-         << HorizontalLine(1, "95", "dt 2 lw 1.5 " + red)
-         << "set label 1 'nominal 95 %' at graph 0.01, first 95 left offset 0, 0.7 tc rgb '" << kRed
-         << "'\n";
-  std::vector<std::string> parts;
-  if (!coverage.band.empty()) {
-    parts.push_back(figure.AddData(coverage.band) +
-                    " using 1:2:(0):($3-$2) with vectors nohead lw 10 lc rgb '#cfcfcf' "
-                    "title 'expected spread if the intervals are right (95 %)'");
-  }
-  parts.push_back(figure.AddData(coverage.observed) +
-                  " using 1:2 with points pt 7 ps 1.6 lc rgb '" + kBlue +
-                  "' title 'observed coverage'");
-  figure.script = script.str() + PlotCommand(parts);
+  DrawCoverage(coverage, coverage.low, "set xtics noenhanced " + Tics(coverage.names) + "\n",
+               &figure);
   figure.caption =
       "Monte Carlo coverage of the 95 % intervals per tire, in %. Grey bars: the binomial 95 % "
       "range of the observed coverage around 95 % for that tire's number of intervals.";
@@ -314,7 +277,7 @@ void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page) {
                  {"frequency noise (relative sd)", NumberCell(suite.frequency_noise)},
                  {"damping noise (relative sd)", NumberCell(suite.damping_noise)},
                  {"shape noise (sd)", NumberCell(suite.shape_noise)}});
-  const Coverage coverage = TiresSection(suite, page);
+  const CoverageSeries coverage = TiresSection(suite, page);
   page->Heading("Figures");
   CoverageFigure(coverage, page);
 }
@@ -356,6 +319,44 @@ void BenchDiagnosisPage(const BenchDiagnosisReport& report, Page* page) {
       "Confusion matrix of the withheld-effect validation: number of cases per withheld "
       "effect (row) and verdict (column); the diagonal is a named effect.";
   page->AddFigure(std::move(figure));
+}
+
+void CoverageSeries::Add(const std::string& name, double coverage_95, long intervals) {
+  const double index = static_cast<double>(names.size());
+  names.push_back(name);
+  const double percent = 100 * coverage_95;
+  if (std::isfinite(percent)) {
+    observed.Row({index, percent});
+    low = std::min(low, percent);
+  }
+  if (intervals > 0) {
+    const double half = 100 * kNormal95 * std::sqrt(0.95 * 0.05 / static_cast<double>(intervals));
+    band.Row({index, std::max(0.0, 95 - half), std::min(100.0, 95 + half)});
+    low = std::min(low, 95 - half);
+  }
+}
+
+void DrawCoverage(const CoverageSeries& coverage, double y_low, const std::string& extra,
+                  Figure* figure) {
+  const std::string red = "lc rgb '" + std::string(kRed) + "'";
+  std::ostringstream script;
+  script << "set grid ytics\nset key outside below center horizontal\n"
+         << "set xrange [-0.5:" << static_cast<double>(coverage.names.size()) - 0.5
+         << "]\nset yrange [" << std::floor(y_low - 2) << ":101]\n" << extra
+         << "set ylabel 'coverage of the 95 % intervals (%)'\n"
+         << HorizontalLine(1, "95", "dt 2 lw 1.5 " + red)
+         << "set label 1 'nominal 95 %' at graph 0.01, first 95 left offset 0, 0.7 tc rgb '" << kRed
+         << "'\n";
+  std::vector<std::string> parts;
+  if (!coverage.band.empty()) {
+    parts.push_back(figure->AddData(coverage.band) +
+                    " using 1:2:(0):($3-$2) with vectors nohead lw 10 lc rgb '#cfcfcf' "
+                    "title 'expected spread if the intervals are right (95 %)'");
+  }
+  parts.push_back(figure->AddData(coverage.observed) +
+                  " using 1:2 with points pt 7 ps 1.6 lc rgb '" + kBlue +
+                  "' title 'observed coverage'");
+  figure->script = script.str() + PlotCommand(parts);
 }
 
 }  // namespace ringid::html

@@ -47,13 +47,10 @@ void CriteriaSection(const RollingSuite& suite, Page* page) {
              " %: " + Names(suite.OutsideCoverageRange()) + ".");
 }
 
-// The coverage per parameter, the binomial band expected around 95 %, and
-// the classes per parameter.
+// The coverage per parameter and the classes per parameter.
 struct Coverage {
-  std::vector<std::string> names;
-  Series observed, band;
+  CoverageSeries series;
   Series yes, practically_no, no;  // stacked bars of the classes
-  double low = 90;
   int replicates = 0;
 };
 
@@ -67,19 +64,8 @@ Coverage ParametersSection(const RollingSuite& suite, Page* page) {
                     NumberCell(static_cast<double>(r.intervals), "%.0f"),
                     PercentCell(r.coverage_95), NumberCell(r.mean_z, "%+.3f"),
                     NumberCell(r.rms_z, "%.3f")});
-    const double index = static_cast<double>(coverage.names.size());
-    coverage.names.push_back(ToString(r.param));
-    const double percent = 100 * r.coverage_95;
-    if (std::isfinite(percent)) {
-      coverage.observed.Row({index, percent});
-      coverage.low = std::min(coverage.low, percent);
-    }
-    if (r.intervals > 0) {
-      const double half =
-          100 * kNormal95 * std::sqrt(0.95 * 0.05 / static_cast<double>(r.intervals));
-      coverage.band.Row({index, std::max(0.0, 95 - half), std::min(100.0, 95 + half)});
-      coverage.low = std::min(coverage.low, 95 - half);
-    }
+    const double index = static_cast<double>(coverage.series.names.size());
+    coverage.series.Add(ToString(r.param), r.coverage_95, r.intervals);
     const double yes = r.yes, practically_no = yes + r.practically_no,
                  no = practically_no + r.no;
     coverage.yes.Row({index, 0, yes});
@@ -97,35 +83,18 @@ Coverage ParametersSection(const RollingSuite& suite, Page* page) {
   return coverage;
 }
 
-void CoverageFigure(const RollingSuite& suite, const Coverage& coverage, Page* page) {
+void CoverageFigure(const RollingSuite& suite, const CoverageSeries& coverage, Page* page) {
   if (coverage.observed.empty()) {
     page->Note("No coverage figure: no parameter has an interval.");
     return;
   }
   Figure figure("bench-rolling-coverage", 900, 420);
-  const std::string red = "lc rgb '" + std::string(kRed) + "'";
   const auto& [low, high] = suite.coverage_range;
-  std::ostringstream script;
-  script << "set grid ytics\nset key outside below center horizontal\n"
-         << "set xrange [-0.5:" << static_cast<double>(coverage.names.size()) - 0.5
-         << "]\nset yrange [" << std::floor(std::min(coverage.low, 100 * low) - 2) << ":101]\n"
-         << CategoryXTics(coverage.names, figure.width - 150.0, -35)
-         << "set ylabel 'coverage of the 95 % intervals (%)'\n"
-         << HorizontalLine(1, "95", "dt 2 lw 1.5 " + red)
-         << HorizontalLine(2, Format(100 * low, "%g"), kDashedGrey)
-         << HorizontalLine(3, Format(100 * high, "%g"), kDashedGrey)
-         << "set label 1 'nominal 95 %' at graph 0.01, first 95 left offset 0, 0.7 tc rgb '"
-         << kRed << "'\n";
-  std::vector<std::string> parts;
-  if (!coverage.band.empty()) {
-    parts.push_back(figure.AddData(coverage.band) +
-                    " using 1:2:(0):($3-$2) with vectors nohead lw 10 lc rgb '#cfcfcf' "
-                    "title 'expected spread if the intervals are right (95 %)'");
-  }
-  parts.push_back(figure.AddData(coverage.observed) +
-                  " using 1:2 with points pt 7 ps 1.6 lc rgb '" + kBlue +
-                  "' title 'observed coverage'");
-  figure.script = script.str() + PlotCommand(parts);
+  DrawCoverage(coverage, std::min(coverage.low, 100 * low),
+               CategoryXTics(coverage.names, figure.width - 150.0, -35) +
+                   HorizontalLine(2, Format(100 * low, "%g"), kDashedGrey) +
+                   HorizontalLine(3, Format(100 * high, "%g"), kDashedGrey),
+               &figure);
   figure.caption =
       "Monte Carlo coverage of the 95 % intervals per free parameter, in %. Grey bars: the "
       "binomial 95 % range of the observed coverage around 95 % for that parameter's number "
@@ -135,18 +104,19 @@ void CoverageFigure(const RollingSuite& suite, const Coverage& coverage, Page* p
 }
 
 void ClassFigure(const Coverage& coverage, Page* page) {
-  if (coverage.names.empty()) {
+  const std::vector<std::string>& names = coverage.series.names;
+  if (names.empty()) {
     page->Note("No class figure: the report has no free parameter.");
     return;
   }
-  const int count = static_cast<int>(coverage.names.size());
+  const int count = static_cast<int>(names.size());
   Figure figure("bench-rolling-classes", 760, 110 + 26 * count);
   std::ostringstream script;
   script << "set style fill solid 0.85 noborder\nset grid xtics\n"
          << "set key outside below center horizontal\n"
          << "set yrange [" << count - 0.5 << ":-0.5]\nset xrange [0:"
          << std::max(coverage.replicates, 1) << "]\n"
-         << "set ytics noenhanced " << Tics(coverage.names) << "\n"
+         << "set ytics noenhanced " << Tics(names) << "\n"
          << "set xlabel 'replicates by identifiability class'\n";
   std::vector<std::string> parts;
   for (auto [series, color, title] :
@@ -189,7 +159,7 @@ void BenchRollingPage(const BenchRollingReport& report, Page* page) {
   CriteriaSection(suite, page);
   const Coverage coverage = ParametersSection(suite, page);
   page->Heading("Figures");
-  CoverageFigure(suite, coverage, page);
+  CoverageFigure(suite, coverage.series, page);
   ClassFigure(coverage, page);
 }
 

@@ -33,6 +33,20 @@ void CoverageTable(const std::string& title, const std::vector<StaticParameter>&
 void BenchFrfPage(const BenchFrfReport& report, Page* page);
 void BenchExtractPage(const BenchExtractReport& report, Page* page);
 
+// Monte Carlo coverage of the 95 % intervals per item (a tire, a parameter), in %, with the
+// binomial 95 % range expected around 95 % for the item's number of intervals.
+struct CoverageSeries {
+  std::vector<std::string> names;
+  Series observed, band;
+  double low = 90;  // the lowest value either holds
+  // The next item; a coverage that is not finite draws no point.
+  void Add(const std::string& name, double coverage_95, long intervals);
+};
+// The plot of `coverage` in `figure`: its script's common lines (y from `y_low`), then
+// `extra` (the page's tics and lines), then the band and the observed points.
+void DrawCoverage(const CoverageSeries& coverage, double y_low, const std::string& extra,
+                  Figure* figure);
+
 // Where the report came from: version, command line, inputs and digests.
 void ProvenanceSection(const Provenance& provenance, Page* page);
 
