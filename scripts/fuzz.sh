@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) into
-# build-fuzz/ and runs each for SECONDS (default 60), one worker per core,
-# from its seed corpus: the project's own datasets plus the regression inputs
-# in tests/fuzz/corpus.
+# build-asan/, the build of the sanitized test suite (scripts/sanitized_build.sh),
+# and runs each for SECONDS (default 60), one worker per core, from its seed
+# corpus: the project's own datasets plus the regression inputs in tests/fuzz/corpus.
 # Usage: bash scripts/fuzz.sh [SECONDS [TARGET...]]
 #   e.g. bash scripts/fuzz.sh 3600 identify   (an hour on the identify target)
 # FUZZ_SANITIZERS=undefined drops ASan for long runs (about 3x the executions;
@@ -12,23 +12,12 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=${*:-dataset dataset3 model identify tir forces uff uff58}
-bash scripts/install_deps.sh clang libclang-rt-14-dev
-# Debian's Ceres is a static library built without sanitizers. Eigen drops its
-# "glibc malloc is aligned" assumption under ASan, so without this define our
-# objects and Ceres' copies of Eigen's inline allocator disagree (a bad free in
-# BDCSVD inside ceres::Covariance). glibc and ASan both align malloc to 16.
-# Coverage is not traced inside Eigen, Ceres and the standard library
-# (tests/fuzz/coverage_ignorelist.txt): their inner loops took 55 % of an
-# identify execution. ASan and UBSan still check them.
 sanitizers=${FUZZ_SANITIZERS:-address,undefined}
-build=build-fuzz
+build=build-asan
 [ "$sanitizers" = address,undefined ] || build=build-fuzz-${sanitizers//,/-}
-flags="-fsanitize=fuzzer-no-link,$sanitizers -fno-sanitize-recover=all -g -O2 -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
-flags+=" -fsanitize-coverage-ignorelist=$PWD/tests/fuzz/coverage_ignorelist.txt"
-cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DRINGID_BUILD_TESTS=OFF -DRINGID_BUILD_BENCHMARKS=OFF -DRINGID_BUILD_FUZZERS=ON \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$sanitizers" > /dev/null
-cmake --build "$build" -j"$(nproc)" --target dataset_fuzzer dataset3_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer uff_fuzzer uff58_fuzzer
+fuzzers=(dataset_fuzzer dataset3_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer
+         uff_fuzzer uff58_fuzzer)
+bash scripts/sanitized_build.sh "$build" "$sanitizers" "${fuzzers[@]}"
 export ASAN_OPTIONS=detect_leaks=1
 for target in $targets; do
   work=$build/corpus-$target

@@ -5,7 +5,7 @@
 # without them when CI is set. pybind11 and python3-dev build the Python
 # module (python/), numpy and scipy its tests and benchmark.
 set -euo pipefail
-packages=(g++ cmake make libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
+packages=(g++ cmake make ninja-build libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
           libgtest-dev libbenchmark-dev nlohmann-json3-dev libssl-dev libboost-dev gnuplot-nox chromium
           pybind11-dev python3-pybind11 python3-dev python3-numpy python3-scipy "$@")
 missing=()

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The README's Slurm job array on a real Slurm (issue 34): installs Debian's
+# The Slurm job array of docs/guides/campaigns.md on a real Slurm: installs Debian's
 # slurm-wlm and munge if missing, starts a one-node cluster on this machine
 # (munged, slurmctld and slurmd as root, everything in a temporary directory,
-# nothing under /etc), submits the README's job-array script over 8 demo
+# nothing under /etc), submits the guide's job-array script over 8 demo
 # datasets as --array=0-3%2, cancels task 0 (scancel) once its first report is
 # written, resubmits the whole array (what was reported is kept, not fitted
 # again), merges, and checks the merged table equals a serial run's apart from
@@ -149,13 +149,13 @@ bash scripts/campaign_demo.sh "$campaign" 8 > /dev/null
 "$ringid" simulate --parameters=datasets/paper/parameters.json --seed=5 --set=m_a=15 \
   --speeds=0,30 --output="$campaign/datasets/case004.json" \
   --truth="$campaign/truth/case004.json" > /dev/null
-# The README's job script, its placeholders pointed at this campaign.
-awk '/^A Slurm job array/ { f = 1 } f && /^```sh$/ { b = 1; next } b && /^```$/ { exit } b' README.md |
+# The campaigns guide's job script, its placeholders pointed at this campaign.
+awk '/^A Slurm job array/ { f = 1 } f && /^```sh$/ { b = 1; next } b && /^```$/ { exit } b' docs/guides/campaigns.md |
   sed "s|/data/campaign|$campaign/datasets|; s|/data/reports|$reports|" > "$work/job.sh"
 grep -q -- "--shard=slurm" "$work/job.sh" && grep -qF "$reports" "$work/job.sh" ||
-  fail "no job-array script using /data/campaign, /data/reports and --shard=slurm in README.md"
-say "job script (README.md):"; sed 's/^/    /' "$work/job.sh"
-# Two tasks at once on this 2-CPU node: one CPU each, not the README's 2.
+  fail "no job-array script using /data/campaign, /data/reports and --shard=slurm in docs/guides/campaigns.md"
+say "job script (docs/guides/campaigns.md):"; sed 's/^/    /' "$work/job.sh"
+# Two tasks at once on this 2-CPU node: one CPU each, not the guide's 2.
 submit() {
   timeout 300 sbatch --parsable --array=0-3%2 --cpus-per-task=1 --chdir="$root" \
     --output="$work/slurm-%A_%a.out" "$@" "$work/job.sh" | cut -d';' -f1

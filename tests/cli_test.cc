@@ -45,12 +45,12 @@ using ringid::testing::Scratch;
 using ringid::testing::StartRingid;
 using ringid::testing::WaitFor;
 
-std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
+using ringid::testing::SourcePath;
 
 TEST(CliTest, IdentifyWritesTheContractReport) {
   const std::string out = Scratch("identify.json");
   std::remove(out.c_str());
-  const RunResult r = Ringid("identify --dataset=" + Source("datasets/paper/table1.json") +
+  const RunResult r = Ringid("identify --dataset=" + SourcePath("datasets/paper/table1.json") +
                        " --output=" + out);
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(out);
@@ -67,7 +67,7 @@ TEST(CliTest, IdentifyWritesTheContractReport) {
 
 TEST(CliTest, PredictReproducesTable3Vertical) {
   const std::string out = Scratch("predict.json");
-  const RunResult r = Ringid("predict --parameters=" + Source("datasets/paper/parameters.json") +
+  const RunResult r = Ringid("predict --parameters=" + SourcePath("datasets/paper/parameters.json") +
                        " --output=" + out);
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(out);
@@ -94,11 +94,11 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
   const std::string cases[] = {
       "identify --dataset=" + bad + " --output=" + out,
       "identify --dataset=/nonexistent.json --output=" + out,
-      "identify --dataset=" + Source("datasets/paper/table1.json") + " --bogus=1 --output=" + out,
-      "identify --dataset=" + Source("datasets/paper/table1.json") + " --starts=abc --output=" + out,
-      "identify --dataset=" + Source("datasets/paper/table1.json") + " --method=newton --output=" + out,
-      "identify --dataset=" + Source("datasets/paper/table1.json") + " --threads=-1 --output=" + out,
-      "diagnose --dataset=" + Source("datasets/paper/table1.json") + " --threads=100000 --output=" + out,
+      "identify --dataset=" + SourcePath("datasets/paper/table1.json") + " --bogus=1 --output=" + out,
+      "identify --dataset=" + SourcePath("datasets/paper/table1.json") + " --starts=abc --output=" + out,
+      "identify --dataset=" + SourcePath("datasets/paper/table1.json") + " --method=newton --output=" + out,
+      "identify --dataset=" + SourcePath("datasets/paper/table1.json") + " --threads=-1 --output=" + out,
+      "diagnose --dataset=" + SourcePath("datasets/paper/table1.json") + " --threads=100000 --output=" + out,
       "predict --parameters=" + bad + " --output=" + out,
       "predict --dataset=" + bad + " --output=" + out,
       "predict --parameters=" + partial + " --output=" + out,
@@ -119,7 +119,7 @@ TEST(CliTest, BadInputIsOneLineExitTwoAndNoReport) {
 // on every fitting command; a bad item, an unknown or non-free parameter, or
 // a start outside the bounds is exit 2 with one line naming it.
 TEST(CliTest, FixAndBoundsReachEveryFittingCommandAndBadOnesAreRefused) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   const std::string out = Scratch("fixed.json");
   std::remove(out.c_str());
   RunResult r = Ringid("identify --dataset=" + table1 + " --fix=t_0 --output=" + out);
@@ -135,7 +135,7 @@ TEST(CliTest, FixAndBoundsReachEveryFittingCommandAndBadOnesAreRefused) {
   EXPECT_LE(t_0, 0.05 * (1 + 1e-12));
   // The example car tire's k_cz is 2e5 N/m; bounds above it, around the
   // start of 2.5e5, hold the fit on the lower one.
-  r = Ringid("identify --dataset=" + Source("datasets/examples/car_tire_rolling.json") +
+  r = Ringid("identify --dataset=" + SourcePath("datasets/examples/car_tire_rolling.json") +
              " --starts=1 --bounds=k_cz:220000:300000 --output=" + out);
   ASSERT_EQ(r.status, 0) << r.err;
   j = nlohmann::json::parse(ReadFile(out));
@@ -192,7 +192,7 @@ TEST(CliTest, AnInterruptedRunLeavesNoReport) {
   // 100000 starts take minutes; SIGINT arrives after half a second.
   const std::string cmd = "timeout -s INT 0.5 " + std::string(RINGID_BINARY) +
                           " identify --starts=100000 --dataset=" +
-                          Source("datasets/paper/table1.json") + " --output=" + out +
+                          SourcePath("datasets/paper/table1.json") + " --output=" + out +
                           " > /dev/null 2>&1";
   const int raw = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(raw));
@@ -202,7 +202,7 @@ TEST(CliTest, AnInterruptedRunLeavesNoReport) {
 }
 
 TEST(CliTest, UnwritableOutputIsRefusedBeforeTheRun) {
-  const RunResult r = Ringid("identify --dataset=" + Source("datasets/paper/table1.json") +
+  const RunResult r = Ringid("identify --dataset=" + SourcePath("datasets/paper/table1.json") +
                        " --output=/nonexistent-dir/report.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("/nonexistent-dir/report.json"), std::string::npos);
@@ -252,7 +252,7 @@ nlohmann::json LoadJson(const std::string& path) {
 TEST(CliTest, ValuesNoRigidRingCanHaveAreRefusedBeforeAnySolve) {
   const std::string dir = Scratch("");
   const std::string out = dir + "absurd_report.json";
-  const nlohmann::json base = LoadJson(Source("datasets/template.json"));
+  const nlohmann::json base = LoadJson(SourcePath("datasets/template.json"));
   ASSERT_EQ(base["modes"][0]["label"], "longitudinal");
   ASSERT_EQ(base["modes"][3]["label"], "lateral");
   const struct { const char* pointer; double value; const char* field; } cases[] = {
@@ -277,12 +277,12 @@ TEST(CliTest, ValuesNoRigidRingCanHaveAreRefusedBeforeAnySolve) {
   }
   // The same of a parameter set and of --set, for predict and simulate.
   const std::string set = dir + "absurd_set.json";
-  nlohmann::json p = LoadJson(Source("datasets/examples/car_tire.json"));
+  nlohmann::json p = LoadJson(SourcePath("datasets/examples/car_tire.json"));
   p["parameters"]["k_bx"] = 1e300;
   std::ofstream(set) << p.dump(1);
   for (const std::string args :
        {"predict --parameters=" + set, "simulate --parameters=" + set + " --truth=" + out + ".t",
-        "predict --parameters=" + Source("datasets/examples/car_tire.json") + " --set=k_bx=1e13"}) {
+        "predict --parameters=" + SourcePath("datasets/examples/car_tire.json") + " --set=k_bx=1e13"}) {
     std::remove(out.c_str());
     const RunResult r = Ringid(args + " --output=" + out);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
@@ -296,7 +296,7 @@ TEST(CliTest, ValuesNoRigidRingCanHaveAreRefusedBeforeAnySolve) {
 // `ringid simulate` of the example car tire with `flags`, into Scratch(name).
 std::string SimulateCarTire(const std::string& name, const std::string& flags) {
   const std::string out = Scratch(name);
-  const RunResult r = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
+  const RunResult r = Ringid("simulate --parameters=" + SourcePath("datasets/examples/car_tire.json") +
                              " " + flags + " --output=" + out + " --truth=" + out + ".truth");
   EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
   return out;
@@ -374,7 +374,7 @@ TEST(CliTest, SimulateAtSeveralSpeedsWritesFormat2ThatIdentifies) {
 // predict --dataset of several conditions gives each condition's modes: the
 // model at the condition's speed, the slip damping growing with speed.
 TEST(CliTest, PredictOnAFormat2DatasetGivesTheModesOfEveryCondition) {
-  const std::string rolling = Source("datasets/examples/car_tire_rolling.json");
+  const std::string rolling = SourcePath("datasets/examples/car_tire_rolling.json");
   const std::string out = Scratch("predict_conditions.json");
   std::remove(out.c_str());
   const RunResult r = Ringid("predict --dataset=" + rolling + " --output=" + out);
@@ -489,7 +489,7 @@ TEST(CliTest, BadSpeedsOrLoadsAreRefusedNamingTheFlag) {
   for (const auto& [flag, name] : cases) {
     std::remove(out.c_str());
     std::remove(truth.c_str());
-    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
+    const RunResult r = Ringid("simulate --parameters=" + SourcePath("datasets/examples/car_tire.json") +
                                " " + flag + " --output=" + out + " --truth=" + truth);
     EXPECT_EQ(r.status, 2) << flag;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flag << ": " << r.err;
@@ -579,7 +579,7 @@ std::map<std::string, std::pair<double, double>> PredictedModes(const std::strin
 // the .tir was written by export or is the public TNO belt (whose rest, the
 // example car tire's, also supplies damping and k_cz).
 TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
-  const std::string car = Source("datasets/examples/car_tire.json");
+  const std::string car = SourcePath("datasets/examples/car_tire.json");
   const std::string tir = Scratch("car_tire.tir");
   std::remove(tir.c_str());
   const RunResult r = Ringid("export --parameters=" + car + " --format=tir --output=" + tir);
@@ -589,7 +589,7 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
   ASSERT_TRUE(ringid::LoadParameterSet(car, &full, &e)) << e.OneLine();
   const auto expected = PredictedModes("--parameters=" + car);
   ASSERT_EQ(expected.size(), 7u);
-  for (const std::string& file : {tir, Source("datasets/examples/tno_205_60R15_belt.tir")}) {
+  for (const std::string& file : {tir, SourcePath("datasets/examples/tno_205_60R15_belt.tir")}) {
     ringid::Parameters from_tir;
     ASSERT_TRUE(ringid::LoadParameters(file, {}, &from_tir, &e)) << e.OneLine();
     const auto modes = PredictedModes("--parameters=" + file + " " + SetTheRest(from_tir, full));
@@ -605,9 +605,9 @@ TEST(CliTest, PredictReadsATirAndTheRestFromSetAsTheFullParameterSet) {
 // the full parameter set; without it, the line that asks for --set (the help
 // said only predict and export read a .tir, and forces had no --set).
 TEST(CliTest, ForcesReadsATirWithTheRestFromSet) {
-  const std::string car = Source("datasets/examples/car_tire.json");
-  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
-  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string car = SourcePath("datasets/examples/car_tire.json");
+  const std::string response = SourcePath("datasets/examples/car_tire_lug_response.json");
+  const std::string tir = SourcePath("datasets/examples/tno_205_60R15_belt.tir");
   ringid::Parameters full, from_tir;
   ringid::LoadError e;
   ASSERT_TRUE(ringid::LoadParameterSet(car, &full, &e)) << e.OneLine();
@@ -642,7 +642,7 @@ TEST(CliTest, ForcesReadsATirWithTheRestFromSet) {
   EXPECT_NE(r.err.find("give --set=I_ay=VALUE"), std::string::npos) << r.err;
   // --set over an identify report, whose values carry the fit's covariance: refused.
   const std::string fit = Scratch("forces_tir_fit.json");
-  r = Ringid("identify --starts=1 --dataset=" + Source("datasets/paper/table1.json") +
+  r = Ringid("identify --starts=1 --dataset=" + SourcePath("datasets/paper/table1.json") +
              " --output=" + fit);
   ASSERT_EQ(r.status, 0) << r.err;
   r = Ringid("forces --parameters=" + fit + " --set=I_ay=0.4 --dataset=" + response);
@@ -676,9 +676,9 @@ TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
         << command;
   }
   EXPECT_NE(Ringid("forces --help").out.find("--set=TEXT"), std::string::npos);
-  const std::string tir = Source("datasets/examples/tno_205_60R15_belt.tir");
-  const std::string lugs = Source("datasets/examples/car_tire_lug_forces.json");
-  const std::string response = Source("datasets/examples/car_tire_lug_response.json");
+  const std::string tir = SourcePath("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string lugs = SourcePath("datasets/examples/car_tire_lug_forces.json");
+  const std::string response = SourcePath("datasets/examples/car_tire_lug_response.json");
   const std::string lack = "tno_205_60R15_belt.tir: I_ay: missing";
   for (const std::string& args :
        {"predict --parameters=" + tir,
@@ -693,12 +693,12 @@ TEST(CliTest, TheHelpNamesTheCommandsThatReadATirAndTheyDo) {
   EXPECT_EQ(r.status, 0) << r.err;
   // extract takes the values a .tir holds in place of the dataset's initial ones.
   r = Ringid("extract --parameters=" + tir + " --dataset=" +
-             Source("datasets/examples/car_tire_hammer_frf.json") + " --output=" +
+             SourcePath("datasets/examples/car_tire_hammer_frf.json") + " --output=" +
              Scratch("tir_extract.json"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("parameters: no [VERTICAL] FNOMIN"), std::string::npos) << r.out;  // read
-  r = Ringid("import --uff=" + Source("datasets/examples/car_tire_lab.uff") + " --map=" +
-             Source("datasets/examples/car_tire_lab_map.json") + " --parameters=" + tir +
+  r = Ringid("import --uff=" + SourcePath("datasets/examples/car_tire_lab.uff") + " --map=" +
+             SourcePath("datasets/examples/car_tire_lab_map.json") + " --parameters=" + tir +
              " --output=" + Scratch("tir_import.json"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("parameters: no [VERTICAL] FNOMIN"), std::string::npos) << r.out;  // read
@@ -718,7 +718,7 @@ TEST(CliTest, ExportFromIdentifyMarksTheValuesTheDataLeftUndetermined) {
   const std::string set = Scratch("template_set.json");
   std::remove(report.c_str());
   std::remove(set.c_str());
-  RunResult r = Ringid("identify --dataset=" + Source("datasets/template.json") +
+  RunResult r = Ringid("identify --dataset=" + SourcePath("datasets/template.json") +
                        " --starts=1 --derivatives=analytic --output=" + report +
                        " --save_parameters=" + set);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -750,7 +750,7 @@ TEST(CliTest, ExportFromIdentifyMarksTheValuesTheDataLeftUndetermined) {
 // export --format=json of a .tir: a parameter set a dataset's initial values
 // can be copied from, holding what the .tir determines and nothing else.
 TEST(CliTest, ExportOfATirAsJsonWritesTheParameterSetItDetermines) {
-  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string tno = SourcePath("datasets/examples/tno_205_60R15_belt.tir");
   const std::string out = Scratch("tno_belt.json");
   std::remove(out.c_str());
   RunResult r = Ringid("export --parameters=" + tno + " --set=k_cz=2e5 --format=json --output=" + out);
@@ -760,7 +760,7 @@ TEST(CliTest, ExportOfATirAsJsonWritesTheParameterSetItDetermines) {
   ringid::Parameters back, car;
   ringid::LoadError e;
   ASSERT_TRUE(ringid::LoadParameterSet(out, &back, &e)) << e.OneLine();
-  ASSERT_TRUE(ringid::LoadParameterSet(Source("datasets/examples/car_tire.json"), &car, &e));
+  ASSERT_TRUE(ringid::LoadParameterSet(SourcePath("datasets/examples/car_tire.json"), &car, &e));
   std::vector<std::string> names;
   for (auto it = j["parameters"].begin(); it != j["parameters"].end(); ++it) names.push_back(it.key());
   EXPECT_EQ(names, (std::vector<std::string>{"I_bx", "I_by", "I_bz", "k_bgamma", "k_bpsi",
@@ -785,8 +785,8 @@ TEST(CliTest, ExportOfATirAsJsonWritesTheParameterSetItDetermines) {
 // file and the key or flag, nothing written.
 TEST(CliTest, BadTirOrExportInputIsOneLineExitTwoAndNothingWritten) {
   const std::string dir = Scratch("");
-  const std::string car = Source("datasets/examples/car_tire.json");
-  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string car = SourcePath("datasets/examples/car_tire.json");
+  const std::string tno = SourcePath("datasets/examples/tno_205_60R15_belt.tir");
   const std::string good = ReadFile(tno);
   const auto with = [&](const std::string& name, const std::string& from, const std::string& to) {
     std::string text = good;
@@ -920,7 +920,7 @@ TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
 }
 
 TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   const std::string out = Scratch("next_argument.json");
   std::remove(out.c_str());
   RunResult r = Ringid("identify --dataset " + table1 + " --starts 1 --noshapes --damping" +
@@ -934,7 +934,7 @@ TEST(CliTest, AFlagsValueMayBeTheNextArgument) {
   // --noshapes turns the shapes off: the example car tire's 21 modes then
   // give 42 residuals (frequency and damping) instead of 252, less one fitted
   // scale per shape.
-  const std::string rolling = Source("datasets/examples/car_tire_rolling.json");
+  const std::string rolling = SourcePath("datasets/examples/car_tire_rolling.json");
   int dof[2];
   for (int shapes = 0; shapes < 2; ++shapes) {
     r = Ringid("identify --dataset " + rolling + " --starts 1 " +
@@ -982,7 +982,7 @@ TEST(SpellingTest, ATypoIsNearAndAnotherWordIsNot) {
 // A misspelled name, wherever it is given, is answered with the nearest
 // valid one and the valid ones.
 TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   const std::string bad_label = Scratch("bad_label.json");
   std::ofstream(bad_label) << R"({"format":"ringid-modal-dataset/1","name":"x",)"
                               R"("modes":[{"label":"rotation_inphase","frequency_hz":30}]})";
@@ -1026,7 +1026,7 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
 }
 
 TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
-  const std::string set = Source("datasets/paper/parameters.json");
+  const std::string set = SourcePath("datasets/paper/parameters.json");
   for (const std::string command : {"identify", "predict", "diagnose"}) {
     const RunResult r = Ringid(command + " --dataset=" + set);
     EXPECT_EQ(r.status, 2) << command;
@@ -1062,7 +1062,7 @@ TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
   for (const auto& [flags, line] : cases) {
     std::remove(out.c_str());
     std::remove(truth.c_str());
-    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+    const RunResult r = Ringid("simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
                                " " + flags + " --output=" + out + " --truth=" + truth);
     EXPECT_EQ(r.status, 2) << flags;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
@@ -1073,7 +1073,7 @@ TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
   // Sized, they run; an effect's other parameter may be set without it.
   for (const std::string flags : {"--effects=lug_coupling --shift=0.05", "--set=m_a=15",
                                   "--effects=hub_compliance --set=s_h=2e-7,m_a=15"}) {
-    const RunResult r = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+    const RunResult r = Ringid("simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
                                " " + flags + " --output=" + out + " --truth=" + truth);
     EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
   }
@@ -1084,7 +1084,7 @@ TEST(CliTest, SimulateRefusesAnEffectWithoutASizeAndASizeWithoutItsEffect) {
 // output that would overwrite an input, and a --figures_dir that cannot be
 // made. --figures_dir is made when missing, as --output_dir is.
 TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   const std::string dir = Scratch("outputs");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir + "/a_directory");
@@ -1108,7 +1108,7 @@ TEST(CliTest, EveryOutputIsCheckedBeforeAnyWork) {
       {"identify --dataset=" + copy + " --output=" + dir + "/./table1.json",
        "ringid: --output: " + dir + "/./table1.json is the --dataset input, which it would "
        "overwrite\n"},
-      {"simulate --parameters=" + Source("datasets/paper/parameters.json") + " --output=" + same +
+      {"simulate --parameters=" + SourcePath("datasets/paper/parameters.json") + " --output=" + same +
            " --truth=" + same,
        "ringid: --truth: " + same + " is also --output"},
       {"bench --suite=paper --output=" + same + " --markdown=" + same,
@@ -1172,7 +1172,7 @@ TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir + "/data");
   for (const char* name : {"a", "b", "c"}) {
-    std::filesystem::copy_file(Source("datasets/paper/table1.json"),
+    std::filesystem::copy_file(SourcePath("datasets/paper/table1.json"),
                                dir + "/data/" + name + ".json");
   }
   const std::string err = Scratch("interrupted_campaign.txt");
@@ -1241,8 +1241,8 @@ TEST(CliTest, ADirectoryOrListWithoutOutputDirIsSaidAsACampaign) {
   const std::string dir = Scratch("one_campaign");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/a.json");
-  std::filesystem::copy_file(Source("datasets/paper/table1.json"), dir + "/b.json");
+  std::filesystem::copy_file(SourcePath("datasets/paper/table1.json"), dir + "/a.json");
+  std::filesystem::copy_file(SourcePath("datasets/paper/table1.json"), dir + "/b.json");
   const std::string list = dir + "/a.json," + dir + "/b.json";
   for (const std::string command : {"identify", "diagnose"}) {
     for (const std::string& datasets : {dir, list}) {
@@ -1263,12 +1263,12 @@ TEST(CliTest, ADirectoryOrListWithoutOutputDirIsSaidAsACampaign) {
 // A file of another kind given as a dataset is named as what it is.
 TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
   const std::pair<std::string, std::string> cases[] = {
-      {Source("datasets/examples/car_tire_lab.uff"), "this is a UFF file, not a dataset; import"},
-      {Source("datasets/examples/tno_205_60R15_belt.tir"),
+      {SourcePath("datasets/examples/car_tire_lab.uff"), "this is a UFF file, not a dataset; import"},
+      {SourcePath("datasets/examples/tno_205_60R15_belt.tir"),
        "this is an MF-Swift tire property file (.tir), not a dataset; use --parameters"},
-      {Source("datasets/examples/car_tire_lab_map.json"),
+      {SourcePath("datasets/examples/car_tire_lab_map.json"),
        "this is a UFF map (ringid-uff-map/1), not a dataset; use import --map"},
-      {Source("datasets/examples/car_tire_lug_response.json"),
+      {SourcePath("datasets/examples/car_tire_lug_response.json"),
        "this is a response dataset (ringid-lug-response/1), not a dataset"},
   };
   for (const auto& [file, words] : cases) {
@@ -1278,8 +1278,8 @@ TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
     EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
   }
   // And a modal dataset where a response dataset belongs.
-  const RunResult r = Ringid("forces --parameters=" + Source("datasets/examples/car_tire.json") +
-                             " --dataset=" + Source("datasets/paper/table1.json"));
+  const RunResult r = Ringid("forces --parameters=" + SourcePath("datasets/examples/car_tire.json") +
+                             " --dataset=" + SourcePath("datasets/paper/table1.json"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("this is a modal dataset (ringid-modal-dataset/1), not a response dataset "
                        "(ringid-lug-response/1)"),
@@ -1291,7 +1291,7 @@ TEST(CliTest, AFileOfAnotherKindIsNamedAsWhatItIs) {
 // "not converged" and what to try, and the same fit with the default
 // iterations converges (so the advice is right).
 TEST(CliTest, MaxIterationsIsAFlagAndNotConvergedSaysWhatToTry) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   RunResult r = Ringid("identify --starts=1 --max_iterations=2 --dataset=" + table1);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("(lm): not converged"), std::string::npos) << r.out;
@@ -1316,7 +1316,7 @@ TEST(CliTest, MaxIterationsIsAFlagAndNotConvergedSaysWhatToTry) {
 // Notes on where the parameters came from are notes, as predict and import
 // print them ("parameters: ..."), not errors ("ringid: ...").
 TEST(CliTest, ExportPrintsItsNotesAsNotesNotErrors) {
-  const std::string tno = Source("datasets/examples/tno_205_60R15_belt.tir");
+  const std::string tno = SourcePath("datasets/examples/tno_205_60R15_belt.tir");
   const std::string out = Scratch("noted.json");
   for (const std::string& to : {std::string(), " --output=" + out}) {
     const RunResult r = Ringid("export --parameters=" + tno + " --set=k_cz=2e5 --format=json" + to);
@@ -1332,7 +1332,7 @@ TEST(CliTest, ExportPrintsItsNotesAsNotesNotErrors) {
 // rotational ones, N s/m for its dampers, N for the slip stiffness, m for the
 // radii).
 TEST(CliTest, TheParameterTablesGiveUnits) {
-  const std::string dataset = Source("datasets/template.json");
+  const std::string dataset = SourcePath("datasets/template.json");
   const std::map<std::string, std::string> units = {
       {"k_bx", "N/m"}, {"k_btheta", "N m/rad"}, {"c_bx", "N s/m"}, {"K_cx", "N"}, {"r_e0", "m"}};
   for (const std::string command : {"identify", "identifiability"}) {
@@ -1408,7 +1408,7 @@ std::string OnATerminal(const std::string& args, int* status, double* seconds) {
   EXPECT_EQ(grantpt(master), 0);
   EXPECT_EQ(unlockpt(master), 0);
   const std::string terminal = ptsname(master);
-  const std::string shell = "cd " + Source("") + " && exec " + std::string(RINGID_BINARY) + " " +
+  const std::string shell = "cd " + SourcePath("") + " && exec " + std::string(RINGID_BINARY) + " " +
                             args + " > " + Scratch("terminal_stdout.txt");
   posix_spawn_file_actions_t files;
   posix_spawn_file_actions_init(&files);
@@ -1445,8 +1445,8 @@ std::string OnATerminal(const std::string& args, int* status, double* seconds) {
 // terminal, a run that took over 2.5 s showed it, one under 1.5 s did not.
 // Each command's runs go from quick to slow until one took over 2.5 s here.
 TEST(CliTest, ALongSingleRunShowsProgressOnATerminal) {
-  const std::string tire = " --dataset=" + Source("datasets/template.json");
-  const std::string rolling = " --dataset=" + Source("datasets/examples/car_tire_rolling.json");
+  const std::string tire = " --dataset=" + SourcePath("datasets/template.json");
+  const std::string rolling = " --dataset=" + SourcePath("datasets/examples/car_tire_rolling.json");
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
       {"identifiability",
        {"--derivatives=analytic --threads=1" + tire, "--derivatives=analytic" + rolling,

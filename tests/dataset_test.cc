@@ -89,12 +89,6 @@ json Valid2() {
 }
 
 // The error of loading `j`, as one line ("" when it loads).
-std::string ErrorOf(const json& j) {
-  Dataset d;
-  LoadError e;
-  if (ParseDataset(j.dump(), "bad.json", &d, &e)) return "";
-  return e.OneLine();
-}
 
 void ExpectSameModes(const std::vector<MeasuredMode>& a, const std::vector<MeasuredMode>& b) {
   ASSERT_EQ(a.size(), b.size());
@@ -401,11 +395,11 @@ TEST(DatasetTest, FormatTwoRefusesEachKindOfBadInputNamingTheField) {
        [](json& j) { j["priors"]["k_cz"] = j["priors"]["K_cx"]; }, "priors.k_cz",
        "priors on per-condition parameters are not supported"},
   };
-  ASSERT_EQ(ErrorOf(Valid2()), "");
+  ASSERT_EQ(testing::DatasetErrorOf(Valid2()), "");
   for (const Refused& c : cases) {
     json j = Valid2();
     c.change(j);
-    const std::string line = ErrorOf(j);
+    const std::string line = testing::DatasetErrorOf(j);
     EXPECT_NE(line.find(std::string("bad.json: ") + c.field + ": "), std::string::npos)
         << c.what << ": " << line;
     EXPECT_NE(line.find(c.message), std::string::npos) << c.what << ": " << line;
@@ -415,13 +409,13 @@ TEST(DatasetTest, FormatTwoRefusesEachKindOfBadInputNamingTheField) {
 TEST(DatasetTest, FormatOneRefusesFormatTwoKeysAndUnknownFormats) {
   json j = Valid();
   j["priors"] = json::object();
-  EXPECT_NE(ErrorOf(j).find("bad.json: priors: unknown key"), std::string::npos) << ErrorOf(j);
+  EXPECT_NE(testing::DatasetErrorOf(j).find("bad.json: priors: unknown key"), std::string::npos) << testing::DatasetErrorOf(j);
   j = Valid();
   j["format"] = "ringid-modal-dataset/3";
-  EXPECT_NE(ErrorOf(j).find("format: must be \"ringid-modal-dataset/1\", "
+  EXPECT_NE(testing::DatasetErrorOf(j).find("format: must be \"ringid-modal-dataset/1\", "
                             "\"ringid-modal-dataset/2\" or \"ringid-dataset/3\""),
             std::string::npos)
-      << ErrorOf(j);
+      << testing::DatasetErrorOf(j);
 }
 
 // A typo in a label, a parameter or a degree of freedom is answered with the
@@ -430,26 +424,26 @@ TEST(DatasetTest, FormatOneRefusesFormatTwoKeysAndUnknownFormats) {
 TEST(DatasetTest, AMisspelledNameSuggestsTheNearestValidOne) {
   json j = Valid();
   j["modes"][0]["label"] = "rotation_inphase";
-  EXPECT_EQ(ErrorOf(j), "bad.json: modes[0].label: unknown label 'rotation_inphase' (did you "
+  EXPECT_EQ(testing::DatasetErrorOf(j), "bad.json: modes[0].label: unknown label 'rotation_inphase' (did you "
                         "mean 'rotation_in_phase'? expected rotation_in_phase, "
                         "rotation_anti_phase, vertical, longitudinal, camber, yaw or lateral)");
   j = Valid();
   j["modes"][0]["label"] = "hub_vertical";
-  EXPECT_EQ(ErrorOf(j), "bad.json: modes[0].label: 'hub_vertical' is a mode of the hub, which a "
+  EXPECT_EQ(testing::DatasetErrorOf(j), "bad.json: modes[0].label: 'hub_vertical' is a mode of the hub, which a "
                         "dataset does not list (expected rotation_in_phase, rotation_anti_phase, "
                         "vertical, longitudinal, camber, yaw or lateral)");
   j = Valid();
   j["known"] = {{"m_bb", 2.37}};
-  EXPECT_NE(ErrorOf(j).find("known.m_bb: unknown parameter 'm_bb' (did you mean 'm_b'? "
+  EXPECT_NE(testing::DatasetErrorOf(j).find("known.m_bb: unknown parameter 'm_bb' (did you mean 'm_b'? "
                             "expected m_b, I_ay,"),
             std::string::npos)
-      << ErrorOf(j);
+      << testing::DatasetErrorOf(j);
   j = Valid();
   j["modes"][0]["shape"] = {{"zb", 1.0}};
-  EXPECT_NE(ErrorOf(j).find("modes[0].shape.zb: unknown degree of freedom 'zb' (did you mean "
+  EXPECT_NE(testing::DatasetErrorOf(j).find("modes[0].shape.zb: unknown degree of freedom 'zb' (did you mean "
                             "'z_b'?"),
             std::string::npos)
-      << ErrorOf(j);
+      << testing::DatasetErrorOf(j);
 }
 
 // A parameter set or a report given where a dataset belongs is named as what

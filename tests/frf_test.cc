@@ -66,15 +66,15 @@ Json ValidAtSpeed() {
   })");
 }
 
-struct Outcome {
+struct ReadOutcome {
   bool ok = false;
   Frf frf;
   LoadError error;
 };
 
 // `block` read as the frf of condition 0 at `speed`: the archive, then ReadFrf.
-Outcome Read(const Json& block, double speed = 0) {
-  Outcome o;
+ReadOutcome Read(const Json& block, double speed = 0) {
+  ReadOutcome o;
   o.error.file = kFile;
   FrfFields fields;
   std::string why;
@@ -100,7 +100,7 @@ void ExpectCombination(const DofCombination& got, const DofCombination& want) {
 }
 
 TEST(FrfTest, AHandWrittenBlockOfContractSection9Reads) {
-  const Outcome o = Read(Valid());
+  const ReadOutcome o = Read(Valid());
   ASSERT_TRUE(o.ok) << o.error.OneLine();
   const Frf& f = o.frf;
   ASSERT_EQ(f.inputs.size(), 5u);
@@ -183,7 +183,7 @@ TEST(FrfTest, APointForceAtTheContactHasSection8sGeneralisedForces) {
 // sqrt(1 - g2) / (|g| sqrt(2 n)); contract §9 takes |H| times it as the
 // standard error of re and of im each.
 TEST(FrfTest, CoherenceGivesBendatAndPiersolsSigma) {
-  const Outcome o = Read(Valid());
+  const ReadOutcome o = Read(Valid());
   ASSERT_TRUE(o.ok) << o.error.OneLine();
   const FrfFunction& fn = o.frf.functions[1];
   const double h[][2] = {{3, 4}, {1, 0}, {-2, 0.5}};
@@ -214,7 +214,7 @@ struct Refused {
 void ExpectRefused(const Refused& c, const Json& valid, double speed) {
   Json j = valid;
   c.change(j);
-  const Outcome o = Read(j, speed);
+  const ReadOutcome o = Read(j, speed);
   ASSERT_FALSE(o.ok) << c.what;
   const std::string line = o.error.OneLine();
   EXPECT_EQ(o.error.field, std::string(kBlock) + (*c.field ? "." : "") + c.field)
@@ -351,7 +351,7 @@ TEST(FrfTest, EachRuleRefusesItsBreachNamingTheField) {
 }
 
 TEST(FrfTest, AtSpeedOnlyContactInputsAndChannelOrCoordinatesOutputsRead) {
-  const Outcome o = Read(ValidAtSpeed(), 8.0);
+  const ReadOutcome o = Read(ValidAtSpeed(), 8.0);
   ASSERT_TRUE(o.ok) << o.error.OneLine();
   EXPECT_EQ(o.frf.outputs[1].quantity, FrfQuantity::kVelocity);
   const Refused cases[] = {
@@ -371,16 +371,16 @@ TEST(FrfTest, AtSpeedOnlyContactInputsAndChannelOrCoordinatesOutputsRead) {
   standing["inputs"].push_back(Valid()["inputs"][0]);
   standing["inputs"].push_back(Valid()["inputs"][3]);
   standing["outputs"].push_back(Valid()["outputs"][0]);
-  const Outcome read = Read(standing, 0);
+  const ReadOutcome read = Read(standing, 0);
   EXPECT_TRUE(read.ok) << read.error.OneLine();
   ASSERT_FALSE(Read(standing, 8.0).ok);
 }
 
 TEST(FrfTest, WrittenReadAndWrittenAgainGivesTheSameBytes) {
-  const Outcome first = Read(Valid());
+  const ReadOutcome first = Read(Valid());
   ASSERT_TRUE(first.ok) << first.error.OneLine();
   const std::string written = Written(first.frf);
-  const Outcome again = Read(Json::parse(written));
+  const ReadOutcome again = Read(Json::parse(written));
   ASSERT_TRUE(again.ok) << again.error.OneLine();
   EXPECT_EQ(Written(again.frf), written);
   // As given: the direction not normalised, the noise as coherence and averages.
@@ -413,7 +413,7 @@ TEST(FrfTest, EveryDoubleWrittenReadsBackExactly) {
   with_sigma.h[0] = {std::numeric_limits<double>::denorm_min(), -0.0};
   frf.functions = {with_sigma, with_coherence};
   const std::string written = Written(frf);
-  const Outcome read = Read(Json::parse(written));
+  const ReadOutcome read = Read(Json::parse(written));
   ASSERT_TRUE(read.ok) << read.error.OneLine();
   EXPECT_EQ(Written(read.frf), written);
   EXPECT_EQ(read.frf.frequencies_hz, frf.frequencies_hz);

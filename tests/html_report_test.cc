@@ -44,7 +44,7 @@ using ringid::testing::Ringid;
 using ringid::testing::RunResult;
 using ringid::testing::Scratch;
 
-std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
+using ringid::testing::SourcePath;
 
 bool HaveGnuplot() { return ringid::testing::HaveProgram("gnuplot"); }
 
@@ -92,7 +92,7 @@ Made Render(const std::string& report_path) {
 Made Make(const std::string& name, const std::string& args, bool in_source = false) {
   const std::string out = Scratch(name + ".json");
   std::remove(out.c_str());
-  const std::string command = (in_source ? "cd " + Source("") + " && " : std::string()) +
+  const std::string command = (in_source ? "cd " + SourcePath("") + " && " : std::string()) +
                               RINGID_BINARY + " " + args + " --output=" + out;
   const RunResult r = Shell(command);
   EXPECT_EQ(r.status, 0) << command << ": " << r.err;
@@ -103,7 +103,7 @@ Made Make(const std::string& name, const std::string& args, bool in_source = fal
 std::string Simulate(const std::string& name, const std::string& extra = "") {
   const std::string out = Scratch(name + ".json");
   const RunResult r =
-      Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+      Ringid("simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
              " --seed=3 --set=m_a=15 " + extra + " --output=" + out + " --truth=" +
              Scratch("truth_" + std::to_string(std::hash<std::string>()(name)) + ".json"));
   EXPECT_EQ(r.status, 0) << r.err;
@@ -153,7 +153,7 @@ std::string Shown(std::string label) {
 // ------------------------------------------------------------ the pages
 
 Made IdentifyPaper() {
-  return Make("identify", "identify --dataset=" + Source("datasets/paper/table1.json"));
+  return Make("identify", "identify --dataset=" + SourcePath("datasets/paper/table1.json"));
 }
 
 Made IdentifyShapes() {
@@ -166,7 +166,7 @@ Made IdentifyShapes() {
 Made IdentifyFrf() {
   static const Made made =
       Make("identify_frf", "identify --starts=1 --derivatives=analytic --dataset=" +
-                               Source("datasets/examples/car_tire_hammer_frf.json"));
+                               SourcePath("datasets/examples/car_tire_hammer_frf.json"));
   return made;
 }
 
@@ -176,7 +176,7 @@ Made Identifiability() {
 }
 
 Made Compare() {
-  return Make("compare", "compare --starts=3 --dataset=" + Source("datasets/paper/table1.json"));
+  return Make("compare", "compare --starts=3 --dataset=" + SourcePath("datasets/paper/table1.json"));
 }
 
 Made Diagnose() {
@@ -185,7 +185,7 @@ Made Diagnose() {
 }
 
 Made Predict() {
-  return Make("predict", "predict --parameters=" + Source("datasets/paper/parameters.json"));
+  return Make("predict", "predict --parameters=" + SourcePath("datasets/paper/parameters.json"));
 }
 
 // Forces from a response at 6 and 12 m/s (orders 1-3, every channel, 10 %
@@ -213,7 +213,7 @@ Made Forces() {
 
 // The paper's tire from 2 to 12 m/s with 20 lugs per revolution.
 Made PredictAtSpeeds() {
-  return Make("predict_speeds", "predict --parameters=" + Source("datasets/paper/parameters.json") +
+  return Make("predict_speeds", "predict --parameters=" + SourcePath("datasets/paper/parameters.json") +
                                     " --speeds=2,3,4,5,6,7,8,9,10,11,12 --lugs_per_revolution=20");
 }
 
@@ -354,8 +354,8 @@ Made ExtractDrum() {
   static const Made made = [] {
     const std::string dataset = Scratch("extract_drum_frf.json"), out = Scratch("extract_drum.json");
     std::remove(out.c_str());
-    const RunResult sim = Ringid("simulate --parameters=" + Source("datasets/examples/car_tire.json") +
-                                 " --frf=" + Source("datasets/examples/drum_spec.json") +
+    const RunResult sim = Ringid("simulate --parameters=" + SourcePath("datasets/examples/car_tire.json") +
+                                 " --frf=" + SourcePath("datasets/examples/drum_spec.json") +
                                  " --speeds=10 --output=" + dataset + " --truth=" +
                                  Scratch("extract_drum_truth.json"));
     EXPECT_EQ(sim.status, 0) << sim.err;
@@ -374,7 +374,7 @@ Made Extract() {
     const std::string out = Scratch("extract.json");
     std::remove(out.c_str());
     const RunResult r =
-        Ringid("extract --dataset=" + Source("datasets/examples/car_tire_hammer_frf.json") +
+        Ringid("extract --dataset=" + SourcePath("datasets/examples/car_tire_hammer_frf.json") +
                " --output=" + Scratch("extract_modes.json") + " --report=" + out);
     EXPECT_EQ(r.status, 0) << r.err;
     return Render(out);
@@ -856,7 +856,7 @@ TEST(HtmlReportTest, DiagnoseThresholdsAreTheReportsAtItsLevel) {
   EXPECT_NE(m.html.find("gives p = 0.01 for the effect"), std::string::npos);
   for (const char* level : {"0", "1", "1.5", "-0.1"}) {
     const RunResult r = Ringid(std::string("diagnose --level=") + level +
-                               " --dataset=" + Source("datasets/paper/table1.json"));
+                               " --dataset=" + SourcePath("datasets/paper/table1.json"));
     EXPECT_EQ(r.status, 2) << level;
     EXPECT_NE(r.err.find("--level"), std::string::npos) << r.err;
   }
@@ -980,8 +980,8 @@ TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSp
 TEST(HtmlReportTest, ForcesFlagsTheOrdersAboveTheModelsRange) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
   const Made m = Make("forces_range", "forces --parameters=" +
-                                          Source("datasets/examples/car_tire.json") + " --dataset=" +
-                                          Source("datasets/examples/car_tire_lug_response.json"));
+                                          SourcePath("datasets/examples/car_tire.json") + " --dataset=" +
+                                          SourcePath("datasets/examples/car_tire_lug_response.json"));
   ExpectWellFormed(m.html, 3);
   EXPECT_NE(m.html.find("model valid below (Hz)"), std::string::npos);
   EXPECT_NE(m.html.find("<td>drum_6</td><td class=\"n\">6</td><td class=\"n\">63.66</td>"

@@ -35,7 +35,7 @@ using ringid::testing::ReadFile;
 using ringid::testing::Ringid;
 using ringid::testing::Scratch;
 
-std::string Source(const std::string& f) { return ringid::testing::SourcePath(f); }
+using ringid::testing::SourcePath;
 
 template <class R>
 void ExpectRoundTrip(const std::string& path) {
@@ -57,13 +57,13 @@ std::string Made(const std::string& command, const std::string& out) {
 
 TEST(ReportTest, IdentifyRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::IdentifyReport>(
-      Made("identify --dataset=" + Source("datasets/paper/table1.json"), "identify.json"));
+      Made("identify --dataset=" + SourcePath("datasets/paper/table1.json"), "identify.json"));
 }
 
 TEST(ReportTest, IdentifyWithShapesAndDampingRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::IdentifyReport>(
       Made("identify --starts=1 --shape_convention=paper --dataset=" +
-               Source("datasets/paper/inertia_recovery.json"),
+               SourcePath("datasets/paper/inertia_recovery.json"),
            "identify-shapes.json"));
 }
 
@@ -72,7 +72,7 @@ TEST(ReportTest, ProvenanceRecordsTheDerivativeMode) {
   for (const char* mode : {"numeric", "analytic"}) {
     const Json j = Json::parse(ReadFile(Made(std::string("identify --starts=1 --derivatives=") +
                                                  mode + " --dataset=" +
-                                                 Source("datasets/paper/table1.json"),
+                                                 SourcePath("datasets/paper/table1.json"),
                                              std::string("identify-") + mode + ".json")));
     EXPECT_EQ(j["provenance"]["derivatives"], mode);
   }
@@ -80,18 +80,18 @@ TEST(ReportTest, ProvenanceRecordsTheDerivativeMode) {
 
 TEST(ReportTest, PredictRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::PredictReport>(
-      Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "predict.json"));
+      Made("predict --parameters=" + SourcePath("datasets/paper/parameters.json"), "predict.json"));
 }
 
 TEST(ReportTest, IdentifiabilityRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::IdentifiabilityReport>(Made(
-      "identifiability --starts=1 --derivatives=analytic --dataset=" + Source("datasets/paper/table1.json"),
+      "identifiability --starts=1 --derivatives=analytic --dataset=" + SourcePath("datasets/paper/table1.json"),
       "identifiability.json"));
 }
 
 TEST(ReportTest, CompareRoundTripsByteForByte) {
   ExpectRoundTrip<ringid::CompareReport>(
-      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"),
+      Made("compare --starts=2 --dataset=" + SourcePath("datasets/paper/table1.json"),
            "compare.json"));
 }
 
@@ -99,7 +99,7 @@ TEST(ReportTest, DiagnoseAndCampaignRoundTripByteForByte) {
   const std::string dir = Scratch("campaign-data");
   const std::string out = Scratch("campaign-reports");
   std::filesystem::create_directories(dir);
-  const auto sim = Ringid("simulate --parameters=" + Source("datasets/paper/parameters.json") +
+  const auto sim = Ringid("simulate --parameters=" + SourcePath("datasets/paper/parameters.json") +
                           " --effects=lug_coupling --shift=0.05 --output=" + dir +
                           "/lug.json --truth=" + Scratch("lug-truth.json"));
   ASSERT_EQ(sim.status, 0) << sim.err;
@@ -133,7 +133,7 @@ TEST(ReportTest, DiagnoseAndCampaignRoundTripByteForByte) {
 }
 
 TEST(ReportTest, TheProvenanceNamesEachInputWithItsSha256) {
-  const std::string table1 = Source("datasets/paper/table1.json");
+  const std::string table1 = SourcePath("datasets/paper/table1.json");
   const std::string path = Made("identify --starts=1 --dataset=" + table1, "provenance.json");
   // sha256sum is an independent implementation of the digest.
   const std::string digest_file = Scratch("table1.sha256");
@@ -152,7 +152,7 @@ TEST(ReportTest, TheProvenanceNamesEachInputWithItsSha256) {
 
 TEST(ReportTest, TheReaderNamesTheFieldThatIsWrong) {
   const Json good = Json::parse(ReadFile(Made(
-      "identify --starts=1 --dataset=" + Source("datasets/paper/table1.json"), "strict.json")));
+      "identify --starts=1 --dataset=" + SourcePath("datasets/paper/table1.json"), "strict.json")));
   const struct {
     const char* what;
     std::function<void(Json*)> change;
@@ -232,12 +232,12 @@ bool Documented(const std::string& schema, const std::string& path) {
 
 TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
   const std::string identify = Made("identify --starts=1 --shape_convention=paper --dataset=" +
-                                        Source("datasets/paper/inertia_recovery.json"),
+                                        SourcePath("datasets/paper/inertia_recovery.json"),
                                     "schema-identify.json");
   const std::string compare =
-      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"), "schema-compare.json");
+      Made("compare --starts=2 --dataset=" + SourcePath("datasets/paper/table1.json"), "schema-compare.json");
   const std::string predict =
-      Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "schema-predict.json");
+      Made("predict --parameters=" + SourcePath("datasets/paper/parameters.json"), "schema-predict.json");
   const struct {
     std::string path;
     std::string schema;
@@ -259,7 +259,7 @@ TEST(ReportTest, TheSchemaDocumentsEveryFieldAReportWrites) {
 TEST(ReportTest, IdentifyOfFrfsRoundTripsByteForByteAndIsDocumented) {
   const std::string path =
       Made("identify --starts=1 --derivatives=analytic --band=10,150 --dataset=" +
-               Source("datasets/examples/car_tire_hammer_frf.json"),
+               SourcePath("datasets/examples/car_tire_hammer_frf.json"),
            "identify-frf.json");
   ExpectRoundTrip<ringid::IdentifyReport>(path);
   const Json j = Json::parse(ReadFile(path));
@@ -277,7 +277,7 @@ TEST(ReportTest, IdentifyOfFrfsRoundTripsByteForByteAndIsDocumented) {
 TEST(ReportTest, ExtractRoundTripsByteForByteAndIsDocumented) {
   const std::string path = Scratch("extract-report.json");
   std::remove(path.c_str());
-  const auto r = Ringid("extract --dataset=" + Source("datasets/examples/car_tire_hammer_frf.json") +
+  const auto r = Ringid("extract --dataset=" + SourcePath("datasets/examples/car_tire_hammer_frf.json") +
                         " --output=" + Scratch("extract-report-modes.json") + " --report=" + path);
   ASSERT_EQ(r.status, 0) << r.err;
   ExpectRoundTrip<ringid::ExtractReport>(path);
@@ -307,12 +307,12 @@ TEST(ReportTest, ExtractRoundTripsByteForByteAndIsDocumented) {
 }
 
 TEST(ReportTest, DocsReportsMdIsTheGeneratedSchema) {
-  EXPECT_EQ(ReadFile(Source("docs/reports.md")), ringid::ReportsMarkdown())
+  EXPECT_EQ(ReadFile(SourcePath("docs/reports.md")), ringid::ReportsMarkdown())
       << "run: build/ringid schema > docs/reports.md";
 }
 
 TEST(ReportTest, DocsInputsMdIsTheGeneratedFieldList) {
-  EXPECT_EQ(ReadFile(Source("docs/inputs.md")), ringid::InputsMarkdown())
+  EXPECT_EQ(ReadFile(SourcePath("docs/inputs.md")), ringid::InputsMarkdown())
       << "run: build/ringid inputs > docs/inputs.md";
 }
 
@@ -337,7 +337,7 @@ TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
 }
 
 TEST(ReportTest, DocsReferenceMdIsTheGeneratedReference) {
-  EXPECT_EQ(ReadFile(Source("docs/reference.md")), ringid::ReferenceMarkdown())
+  EXPECT_EQ(ReadFile(SourcePath("docs/reference.md")), ringid::ReferenceMarkdown())
       << "run: build/ringid reference > docs/reference.md";
 }
 
@@ -362,14 +362,14 @@ std::string Word(int n) {
 TEST(ReportTest, DocsDevelopmentMdStatesTheCodesFigures) {
   using namespace ringid;  // NOLINT
   std::string doc;
-  for (const char c : ReadFile(Source("docs/development.md"))) {
+  for (const char c : ReadFile(SourcePath("docs/development.md"))) {
     if (!std::isspace(static_cast<unsigned char>(c))) {
       doc += c;
     } else if (!doc.empty() && doc.back() != ' ') {
       doc += ' ';
     }
   }
-  const std::string sizes = ReadFile(Source("scripts/check_sizes.py"));
+  const std::string sizes = ReadFile(SourcePath("scripts/check_sizes.py"));
   const auto script = [&](const std::string& name) {  // "NAME = VALUE" on a line of its own
     const size_t at = sizes.find("\n" + name + " = ");
     if (at == std::string::npos) return std::string("(no " + name + ")");
@@ -424,7 +424,7 @@ TEST(ReportTest, ReportsCarryTheFieldsOfTheContract) {
     for (const std::string& k : keys) EXPECT_TRUE(j.contains(k)) << what << ": " << k;
   };
   const Json identify = Json::parse(ReadFile(Made("identify --starts=1 --shape_convention=paper --dataset=" +
-                                                      Source("datasets/paper/inertia_recovery.json"),
+                                                      SourcePath("datasets/paper/inertia_recovery.json"),
                                                   "contract-identify.json")));
   has(identify, {"method", "converged", "cost", "evaluations", "seconds", "parameters", "covariance", "modes"},
       "identify");
@@ -436,7 +436,7 @@ TEST(ReportTest, ReportsCarryTheFieldsOfTheContract) {
   for (const Json& m : identify["modes"]) has(m, {"label", "measured_hz", "model_hz", "mac"}, "identify modes");
 
   const Json predict = Json::parse(
-      ReadFile(Made("predict --parameters=" + Source("datasets/paper/parameters.json"), "contract-predict.json")));
+      ReadFile(Made("predict --parameters=" + SourcePath("datasets/paper/parameters.json"), "contract-predict.json")));
   ASSERT_EQ(predict["modes"].size(), 7u);
   for (const Json& m : predict["modes"]) {
     has(m, {"label", "plane", "model_hz", "damping_ratio", "shape"}, "predict modes");
@@ -445,7 +445,7 @@ TEST(ReportTest, ReportsCarryTheFieldsOfTheContract) {
   }
 
   const Json identifiability = Json::parse(ReadFile(
-      Made("identifiability --starts=1 --derivatives=analytic --dataset=" + Source("datasets/paper/table1.json"), "contract-ident.json")));
+      Made("identifiability --starts=1 --derivatives=analytic --dataset=" + SourcePath("datasets/paper/table1.json"), "contract-ident.json")));
   has(identifiability, {"rank", "condition_number", "singular_values", "parameters", "combinations"},
       "identifiability");
   for (const auto& [name, p] : identifiability["parameters"].items()) {
@@ -455,7 +455,7 @@ TEST(ReportTest, ReportsCarryTheFieldsOfTheContract) {
   for (const Json& c : identifiability["combinations"]) has(c, {"text", "singular_value"}, "combinations");
 
   const Json compare = Json::parse(ReadFile(
-      Made("compare --starts=2 --dataset=" + Source("datasets/paper/table1.json"), "contract-compare.json")));
+      Made("compare --starts=2 --dataset=" + SourcePath("datasets/paper/table1.json"), "contract-compare.json")));
   for (const char* method : {"lm", "simplex"}) {
     has(compare["methods"][method], {"starts", "success_rate", "final_costs", "evaluations", "seconds_per_fit"},
         std::string("compare ") + method);

@@ -23,12 +23,7 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string ErrorOf(const json& j) {
-  Dataset d;
-  LoadError e;
-  if (ParseDataset(j.dump(), "lab.json", &d, &e)) return "";
-  return e.OneLine();
-}
+std::string LabErrorOf(const json& j) { return testing::DatasetErrorOf(j, "lab.json"); }
 
 // A format-3 dataset: a standing condition with two modes, its static
 // stiffnesses and an FRF; a drum condition with one mode.
@@ -129,7 +124,7 @@ TEST(StaticMeasurementTest, Format3RefusesEachBadStaticNamingTheField) {
   for (const Case& c : cases) {
     json j = Format3();
     c.edit(&j);
-    const std::string error = ErrorOf(j);
+    const std::string error = LabErrorOf(j);
     EXPECT_EQ(error.rfind(c.expected, 0), 0u) << c.what << ": " << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << c.what;
   }

@@ -28,6 +28,27 @@ std::string CorpusDir() {
 
 std::string CorpusPath(const std::string& relative) { return CorpusDir() + "/" + relative; }
 
+std::string DatasetErrorOf(const nlohmann::json& j, const std::string& file) {
+  Dataset d;
+  LoadError e;
+  if (ParseDataset(j.dump(), file, &d, &e)) return "";
+  return e.OneLine();
+}
+
+UffFile ParsedUff(const std::string& text) {
+  UffFile f;
+  LoadError e;
+  EXPECT_TRUE(ParseUff(text, "test.uff", &f, &e)) << e.OneLine();
+  return f;
+}
+
+UffMap ParsedUffMap(const std::string& json) {
+  UffMap map;
+  LoadError e;
+  EXPECT_TRUE(ParseUffMap(json, "map.json", &map, &e)) << e.OneLine();
+  return map;
+}
+
 void CorpusTest::SetUp() {
   struct stat st;
   if (stat(CorpusDir().c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {

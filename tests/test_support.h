@@ -8,7 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "datasets/dataset.h"
+#include "datasets/uff.h"
+#include "datasets/uff_dataset.h"
 #include "model/parameters.h"
 #include "model/effects.h"
 #include "model/rigid_ring_model.h"
@@ -24,6 +28,7 @@ std::string SourcePath(const std::string& relative);
 // each skips, naming the directory, where the corpus is absent.
 std::string CorpusDir();
 std::string CorpusPath(const std::string& relative);  // CorpusDir() + "/" + relative
+inline std::string UffCorpus(const std::string& name) { return CorpusPath("uff/" + name); }
 class CorpusTest : public ::testing::Test {
  protected:
   void SetUp() override;
@@ -54,6 +59,12 @@ struct MalformedDataset {
   std::string field;
 };
 std::vector<MalformedDataset> MalformedDatasets();
+
+// The one line a dataset's text, read as `file`, is refused with; "" where it loads.
+std::string DatasetErrorOf(const nlohmann::json& j, const std::string& file = "bad.json");
+// A UFF file's and a UFF map's text, parsed; a failure fails the test.
+UffFile ParsedUff(const std::string& text);  // read as test.uff
+UffMap ParsedUffMap(const std::string& json);  // read as map.json
 
 // The ringid executable, run with `args` (in directory `cwd` if given).
 struct RunResult {

@@ -126,21 +126,9 @@ std::vector<C> TruthLines(int r, double scale, int lines = 40, double min = 2.5,
   return y;
 }
 
-UffFile Parse(const std::string& text) {
-  UffFile f;
-  LoadError e;
-  EXPECT_TRUE(ParseUff(text, "test.uff", &f, &e)) << e.OneLine();
-  return f;
-}
-UffMap Map(const std::string& json) {
-  UffMap map;
-  LoadError e;
-  EXPECT_TRUE(ParseUffMap(json, "map.json", &map, &e)) << e.OneLine();
-  return map;
-}
 bool Import(const std::string& uff, const std::string& map, UffImport* out, LoadError* e) {
   *out = UffImport{};
-  return AddUffFrfs(Parse(uff), Map(map), out, e);
+  return AddUffFrfs(testing::ParsedUff(uff), testing::ParsedUffMap(map), out, e);
 }
 
 constexpr const char* kPlacedMap = R"({"format": "ringid-uff-map/2", "name": "lab",

@@ -32,16 +32,9 @@ using testing::Ringid;
 using testing::RunResult;
 using testing::Scratch;
 
-std::string Corpus(const std::string& name) { return testing::CorpusPath("uff/" + name); }
 
 using UffImportCorpusTest = testing::CorpusTest;
 
-UffMap Map(const std::string& json) {
-  UffMap map;
-  LoadError e;
-  EXPECT_TRUE(ParseUffMap(json, "map.json", &map, &e)) << e.OneLine();
-  return map;
-}
 
 double ShapeOf(const MeasuredMode& m, Dof dof) {
   for (const auto& [d, v] : m.shape) {
@@ -54,8 +47,8 @@ double ShapeOf(const MeasuredMode& m, Dof dof) {
 TEST_F(UffImportCorpusTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
   UffFile file;
   LoadError e;
-  ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
-  const UffMap map = Map(R"({"format": "ringid-uff-map/1", "name": "t",
+  ASSERT_TRUE(LoadUff(testing::UffCorpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
+  const UffMap map = testing::ParsedUffMap(R"({"format": "ringid-uff-map/1", "name": "t",
       "channels": [{"node": 1, "direction": 3, "dof": "z_b"},
                    {"node": 2, "direction": 1, "dof": "x_b", "sign": -1}],
       "labels": [{"mode": 1, "label": "vertical"}, {"mode": 2, "label": "longitudinal"},
@@ -88,10 +81,10 @@ TEST_F(UffImportCorpusTest, TheModesOfAPublicFileReadAsItsTextSaysUnderAMap) {
 TEST_F(UffImportCorpusTest, AComplexEigenvalueGivesTheDampedFrequencyAndItsRatio) {
   UffFile file;
   LoadError e;
-  ASSERT_TRUE(LoadUff(Corpus("uff55_sample_test_record10.uff"), &file, &e)) << e.OneLine();
+  ASSERT_TRUE(LoadUff(testing::UffCorpus("uff55_sample_test_record10.uff"), &file, &e)) << e.OneLine();
   // Record 8: -1.111111E-01 4.111111E+01 (the eigenvalue); node 111111's z
   // value 7.111111E-03 + 4.111111E-03 i and y 1.111111E-01 + 9.111111E-02 i.
-  const UffMap map = Map(R"({"format": "ringid-uff-map/1", "name": "r",
+  const UffMap map = testing::ParsedUffMap(R"({"format": "ringid-uff-map/1", "name": "r",
       "channels": [{"node": 111111, "direction": 2, "dof": "y_b"},
                    {"node": 111111, "direction": 3, "dof": "psi_b"}],
       "labels": [{"mode": 1, "label": "lateral"}]})");
@@ -137,7 +130,7 @@ std::string Record55(int number, std::complex<double> lambda,
 // ratios below 1e-6); an unstable eigenvalue (zeta = -0.1) is left out with a
 // note, as the loader refuses its ratio.
 TEST(UffImportTest, KeepsEveryDampingRatioTheJsonLoaderTakes) {
-  const UffMap map = Map(R"({"format": "ringid-uff-map/1", "name": "d",
+  const UffMap map = testing::ParsedUffMap(R"({"format": "ringid-uff-map/1", "name": "d",
       "channels": [{"node": 1, "direction": 3, "dof": "z_b"}],
       "labels": [{"mode": 1, "label": "vertical"}]})");
   const double w = 2 * M_PI * 50;
@@ -223,7 +216,7 @@ TEST(UffImportTest, TheModelLabelsTheModesTheMapDoesNotAsTheTruth) {
   const UffFile file = ReadLabFile(p, &s, &truth);
   LoadError e;
   UffImport in;
-  ASSERT_TRUE(UffToDataset(file, Map(kLabMap), &p, &in, &e)) << e.OneLine();
+  ASSERT_TRUE(UffToDataset(file, testing::ParsedUffMap(kLabMap), &p, &in, &e)) << e.OneLine();
   const Dataset& d = in.dataset;
   ASSERT_EQ(d.modes.size(), truth.size());
   for (size_t i = 0; i < truth.size(); ++i) {
@@ -243,7 +236,7 @@ TEST(UffImportTest, TheModelLabelsTheModesTheMapDoesNotAsTheTruth) {
   const std::string with_label = std::string(kLabMap).insert(
       std::string(kLabMap).size() - 1,
       R"(, "labels": [{"mode": 2, "label": ")" + std::string(LabelName(truth[1])) + "\"}]");
-  ASSERT_TRUE(UffToDataset(file, Map(with_label), &p, &in, &e)) << e.OneLine();
+  ASSERT_TRUE(UffToDataset(file, testing::ParsedUffMap(with_label), &p, &in, &e)) << e.OneLine();
   for (size_t i = 0; i < truth.size(); ++i) EXPECT_EQ(in.dataset.modes[i].label, truth[i]);
 }
 
@@ -273,8 +266,8 @@ TEST(UffImportTest, TheNamesAreTheTruthsFromScatteredGuessesOnceFitted) {
       if (scaled) guess[q] = truth[q] * std::pow(3.0, u(rng));
     }
     UffImport at_guess, fitted;
-    ASSERT_TRUE(UffToDataset(file, Map(kLabMap), &guess, &at_guess, &e)) << e.OneLine();
-    ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(kLabMap), guess, o, &fitted, &e))
+    ASSERT_TRUE(UffToDataset(file, testing::ParsedUffMap(kLabMap), &guess, &at_guess, &e)) << e.OneLine();
+    ASSERT_TRUE(UffToDatasetLabelledByFit(file, testing::ParsedUffMap(kLabMap), guess, o, &fitted, &e))
         << e.OneLine();
     for (size_t i = 0; i < names.size(); ++i) {
       wrong_at_guess += at_guess.dataset.modes[i].label != names[i];
@@ -297,7 +290,7 @@ TEST(UffImportTest, TheShippedLabExampleIsTheCarTiresModesUnderItsMap) {
   if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << text;
   EXPECT_EQ(testing::ReadFile(path), text)
       << "RINGID_REGENERATE=1 build/tests/uff_import_test --gtest_filter=*ShippedLab*";
-  UffMap shipped, here = Map(kLabMap);
+  UffMap shipped, here = testing::ParsedUffMap(kLabMap);
   LoadError e;
   ASSERT_TRUE(LoadUffMap(testing::SourcePath("datasets/examples/car_tire_lab_map.json"), &shipped, &e))
       << e.OneLine();
@@ -340,13 +333,13 @@ TEST_F(UffImportCorpusTest, UnlabelledAndMissingModesOfAPublicFileAreRefusedNami
   const std::string head = R"({"format": "ringid-uff-map/1", "name": "m", )";
   UffFile file;
   LoadError e;
-  ASSERT_TRUE(LoadUff(Corpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
+  ASSERT_TRUE(LoadUff(testing::UffCorpus("uff55_translation.uff"), &file, &e)) << e.OneLine();
   UffImport in;
-  const UffMap map = Map(head + R"("channels": [{"node": 1, "direction": 3, "dof": "z_b"}]})");
+  const UffMap map = testing::ParsedUffMap(head + R"("channels": [{"node": 1, "direction": 3, "dof": "z_b"}]})");
   EXPECT_FALSE(UffToDataset(file, map, nullptr, &in, &e));
   EXPECT_EQ(e.field, "labels");
   EXPECT_NE(e.message.find("3 modes have no label"), std::string::npos) << e.OneLine();
-  const UffMap missing = Map(head + R"("channels": [{"node": 1, "direction": 3, "dof": "z_b"}],
+  const UffMap missing = testing::ParsedUffMap(head + R"("channels": [{"node": 1, "direction": 3, "dof": "z_b"}],
       "labels": [{"mode": 9, "label": "vertical"}]})");
   EXPECT_FALSE(UffToDataset(file, missing, nullptr, &in, &e));
   EXPECT_NE(e.message.find("mode 9 is not in the file"), std::string::npos) << e.OneLine();
@@ -396,7 +389,7 @@ TEST(UffImportTest, AMappedNodeTheFileDoesNotHoldIsRefusedNamingIt) {
   std::string json = kLabMap;
   const std::string extra = R"({"node": 9, "direction": 2, "dof": "y_a"}, )";
   json.insert(json.find("{\"node\": 1"), extra);
-  const UffMap map = Map(json);
+  const UffMap map = testing::ParsedUffMap(json);
   UffImport in;
   LoadError e;
   EXPECT_FALSE(UffToDataset(file, map, &p, &in, &e));
@@ -407,7 +400,7 @@ TEST(UffImportTest, AMappedNodeTheFileDoesNotHoldIsRefusedNamingIt) {
   // A direction the node does not hold (LabFile writes three values a node).
   std::string beyond = kLabMap;
   beyond.replace(beyond.find(R"("direction": 2, "dof": "theta_a")"), 14, R"("direction": 5)");
-  EXPECT_FALSE(UffToDataset(file, Map(beyond), &p, &in, &e));
+  EXPECT_FALSE(UffToDataset(file, testing::ParsedUffMap(beyond), &p, &in, &e));
   EXPECT_NE(e.message.find("node 3 direction 5"), std::string::npos) << e.OneLine();
   // The command: exit 2, one line naming the node and the file, no dataset.
   const std::string uff = Scratch("lab_node.uff"), map_path = Scratch("lab_node_map.json");
@@ -453,9 +446,9 @@ TEST(UffImportTest, LabelsThatRestOnAPoorMatchAreAWarning) {
   o.residuals.derivatives = Derivatives::kAnalytic;
   UffImport good, poor;
   LoadError e;
-  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(kLabMap), p, o, &good, &e)) << e.OneLine();
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, testing::ParsedUffMap(kLabMap), p, o, &good, &e)) << e.OneLine();
   EXPECT_TRUE(good.warnings.empty()) << good.warnings.front();
-  ASSERT_TRUE(UffToDatasetLabelledByFit(file, Map(swapped), p, o, &poor, &e)) << e.OneLine();
+  ASSERT_TRUE(UffToDatasetLabelledByFit(file, testing::ParsedUffMap(swapped), p, o, &poor, &e)) << e.OneLine();
   ASSERT_EQ(poor.warnings.size(), 1u);
   EXPECT_NE(poor.warnings[0].find("poor match"), std::string::npos) << poor.warnings[0];
   // The thresholds: a MAC under 0.8 named with its mode, or p under 1e-3.

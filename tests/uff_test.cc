@@ -25,23 +25,16 @@
 namespace ringid {
 namespace {
 
-std::string Corpus(const std::string& name) { return testing::CorpusPath("uff/" + name); }
 
 using UffCorpusTest = testing::CorpusTest;
 
 UffFile Load(const std::string& name) {
   UffFile f;
   LoadError e;
-  EXPECT_TRUE(LoadUff(Corpus(name), &f, &e)) << e.OneLine();
+  EXPECT_TRUE(LoadUff(testing::UffCorpus(name), &f, &e)) << e.OneLine();
   return f;
 }
 
-UffFile Parse(const std::string& text) {
-  UffFile f;
-  LoadError e;
-  EXPECT_TRUE(ParseUff(text, "t.uff", &f, &e)) << e.OneLine();
-  return f;
-}
 
 std::vector<int> Numbers(const UffFile& f) {
   std::vector<int> out;
@@ -315,7 +308,7 @@ TEST_F(UffCorpusTest, BigEndianCopiesOfThe58bFilesReadTheSameValues) {
                                    {"binary8byte.uff", 8}}) {
     const UffFunction little = Load(name).functions.at(0);
     const UffFunction big =
-        Parse(BigEndianCopy(testing::ReadFile(Corpus(name)), size)).functions.at(0);
+        testing::ParsedUff(BigEndianCopy(testing::ReadFile(testing::UffCorpus(name)), size)).functions.at(0);
     EXPECT_EQ(little.byte_order, 1);
     EXPECT_EQ(big.byte_order, 2);
     ASSERT_EQ(big.y.size(), little.y.size());
@@ -385,7 +378,7 @@ const std::string kUnits164 =
 // appropriate factor". In mm and mN: 1500 mm = 1.5 m, 2500 mN = 2.5 N,
 // 1 mN/mm = 1 N/m, 1 mN/mm^2 = 1000 Pa.
 TEST(UffReaderTest, UnitsConvertToSiByDividingByTheirFactors) {
-  const UffUnits u = Parse(kUnits164).units.at(0);
+  const UffUnits u = testing::ParsedUff(kUnits164).units.at(0);
   EXPECT_EQ(u.code, 5);
   EXPECT_EQ(u.description, "MM (milli newton)");
   EXPECT_EQ(u.temperature_mode, 2);
@@ -404,7 +397,7 @@ TEST(UffReaderTest, ListsAndSkipsDatasetsItDoesNotRead) {
       "    -1\n  2414b     1     2           1           5     0     0           0           0\n"
       "header\nA\nB\x01\x02    -1\n" +
       kModal55;
-  const UffFile f = Parse(text);
+  const UffFile f = testing::ParsedUff(text);
   ASSERT_EQ(Numbers(f), (std::vector<int>{164, 2411, 2414, 55}));
   const bool skipped[] = {false, true, true, false}, binary[] = {false, false, true, false};
   const int lines[] = {1, 7, 12, 17}, index[] = {0, -1, -1, 0};
@@ -419,28 +412,28 @@ TEST(UffReaderTest, ListsAndSkipsDatasetsItDoesNotRead) {
 
 TEST(UffReaderTest, ReadsEachAsciiLayoutOfRecord12) {
   // Complex double, even: 4E20.12.
-  UffFunction f = Parse(Header58(6, 3, 1, 5, 0.5) +
+  UffFunction f = testing::ParsedUff(Header58(6, 3, 1, 5, 0.5) +
                         "  1.000000000000E+00  2.000000000000E+00  3.000000000000E+00  4.000000000000E+00\n"
                         "  5.000000000000E+00 -6.000000000000E+00\n    -1\n")
                       .functions.at(0);
   EXPECT_EQ(f.y, (std::vector<C>{{1, 2}, {3, 4}, {5, -6}}));
   EXPECT_EQ(f.x, (std::vector<double>{5, 5.5, 6}));
   // Complex double, uneven: E13.5,2E20.12.
-  f = Parse(Header58(6, 2, 0, 0, 0) +
+  f = testing::ParsedUff(Header58(6, 2, 0, 0, 0) +
             "  1.00000E+01  1.000000000000E+00 -2.000000000000E+00\n"
             "  2.50000E+01  3.000000000000E+00  4.000000000000E+00\n    -1\n")
           .functions.at(0);
   EXPECT_EQ(f.x, (std::vector<double>{10, 25}));
   EXPECT_EQ(f.y, (std::vector<C>{{1, -2}, {3, 4}}));
   // Real double, uneven: 2(E13.5,E20.12).
-  f = Parse(Header58(4, 3, 0, 0, 0) +
+  f = testing::ParsedUff(Header58(4, 3, 0, 0, 0) +
             "  1.00000E+01  1.000000000000E+00  2.00000E+01  2.000000000000E+00\n"
             "  4.00000E+01 -3.000000000000E+00\n    -1\n")
           .functions.at(0);
   EXPECT_EQ(f.x, (std::vector<double>{10, 20, 40}));
   EXPECT_EQ(f.y, (std::vector<C>{{1, 0}, {2, 0}, {-3, 0}}));
   // Complex single, uneven: 6E13.5.
-  f = Parse(Header58(5, 2, 0, 0, 0) +
+  f = testing::ParsedUff(Header58(5, 2, 0, 0, 0) +
             "  1.00000E+00  2.00000E+00  3.00000E+00  2.00000E+00  4.00000E+00  5.00000E+00\n"
             "    -1\n")
           .functions.at(0);
@@ -457,7 +450,7 @@ TEST(UffReaderTest, ReadsEachAsciiLayoutOfRecord12) {
 // Fortran writes E, or D for double precision, and drops the letter of a
 // three-digit exponent.
 TEST(UffReaderTest, ReadsTheFortranFormsOfAnExponent) {
-  const UffFunction f = Parse(Header58(2, 6, 1, 0, 0.01) +
+  const UffFunction f = testing::ParsedUff(Header58(2, 6, 1, 0, 0.01) +
                               "  1.00000E+00  2.00000e-01  3.00000D+02  4.00000d-03  5.00000-100 -6.00000+101\n"
                               "    -1\n")
                             .functions.at(0);
@@ -467,18 +460,18 @@ TEST(UffReaderTest, ReadsTheFortranFormsOfAnExponent) {
 TEST(UffReaderTest, Reads58bInBothByteOrdersAndAfterALineEnding) {
   for (const bool big : {false, true}) {
     const UffFunction d =
-        Parse(Binary58({1.5, -2.25, 1e-300, 3e300, 0.125, -7}, 6, 1, big)).functions.at(0);
+        testing::ParsedUff(Binary58({1.5, -2.25, 1e-300, 3e300, 0.125, -7}, 6, 1, big)).functions.at(0);
     EXPECT_EQ(d.y, (std::vector<C>{{1.5, -2.25}, {1e-300, 3e300}, {0.125, -7}}));
     EXPECT_EQ(d.x, (std::vector<double>{0, 0.5, 1}));
-    const UffFunction s = Parse(Binary58({1.5, -2.25, 0.125, -7}, 5, 1, big)).functions.at(0);
+    const UffFunction s = testing::ParsedUff(Binary58({1.5, -2.25, 0.125, -7}, 5, 1, big)).functions.at(0);
     EXPECT_EQ(s.y, (std::vector<C>{{1.5, -2.25}, {0.125, -7}}));
   }
-  const UffFunction uneven = Parse(Binary58({1, 2, 3, 4, 5, 6}, 6, 0, true)).functions.at(0);
+  const UffFunction uneven = testing::ParsedUff(Binary58({1, 2, 3, 4, 5, 6}, 6, 0, true)).functions.at(0);
   EXPECT_EQ(uneven.x, (std::vector<double>{1, 4}));
   EXPECT_EQ(uneven.y, (std::vector<C>{{2, 3}, {5, 6}}));
   std::string crlf = Binary58({1, 2}, 4, 1, false);
   crlf.replace(crlf.size() - 7, 7, "\r\n    -1\r\n");
-  EXPECT_EQ(Parse(crlf).functions.at(0).y, (std::vector<C>{{1, 0}, {2, 0}}));
+  EXPECT_EQ(testing::ParsedUff(crlf).functions.at(0).y, (std::vector<C>{{1, 0}, {2, 0}}));
 }
 
 const std::string kHeader151 =
@@ -582,10 +575,10 @@ TEST(UffReaderTest, RefusesMalformedInputNamingTheDatasetAndRecordInOneLine) {
 TEST(UffReaderTest, TheValidInputsTheMalformedOnesComeFromRead) {
   for (const std::string& text : {kModal55, kFunction58, kUnits164, kHeader151, kTrace82,
                                   Binary58({1, 2, 3, 4}, 4, 1, false)}) {
-    EXPECT_EQ(Parse(text).datasets.size(), 1u);
+    EXPECT_EQ(testing::ParsedUff(text).datasets.size(), 1u);
   }
-  EXPECT_EQ(Parse(kTrace82).trace_lines.at(0).nodes, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 1}));
-  const UffHeader h = Parse(kHeader151).headers.at(0);
+  EXPECT_EQ(testing::ParsedUff(kTrace82).trace_lines.at(0).nodes, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 1}));
+  const UffHeader h = testing::ParsedUff(kHeader151).headers.at(0);
   EXPECT_EQ(h.version2, 2);
   EXPECT_EQ(h.file_type, 0);
 }
