@@ -1,6 +1,6 @@
 // Speed of one model evaluation against the bare Eigen eigen-solution of the
 // same blocks, and of LM fits with numeric and analytic derivatives side by
-// side. Targets (README, issue 13): evaluation <= 1.2x the bare solve;
+// side. Targets: evaluation <= 1.2x the bare solve;
 // in-plane fit with analytic derivatives <= 1 ms; the three-condition joint
 // fit <= 4x the standing one.
 #include <cstdio>
@@ -97,18 +97,24 @@ void BM_ModelEvaluationWithDerivatives(benchmark::State& state) {
 }
 BENCHMARK(BM_ModelEvaluationWithDerivatives)->Unit(benchmark::kMicrosecond);
 
-void Fit(benchmark::State& state, bool in_plane_only, Derivatives derivatives) {
-  const Dataset d = Table1(in_plane_only);
+// One start of identify on `d`, from a cold standstill cache each time, and its
+// model evaluations.
+void TimeOneStart(benchmark::State& state, const Dataset& d, Derivatives derivatives) {
   IdentifyOptions o;
   o.starts = 1;
   o.residuals.derivatives = derivatives;
   for (auto _ : state) {
-    const RigidRingModel model;  // a cold standstill cache
+    const RigidRingModel model;
     IdentifyResult s;
     Identify(model, d, o, &s);
     if (!s.status.ok()) state.SkipWithError("fit failed");
+    state.counters["evaluations"] = static_cast<double>(s.evaluations);
     benchmark::DoNotOptimize(s);
   }
+}
+
+void Fit(benchmark::State& state, bool in_plane_only, Derivatives derivatives) {
+  TimeOneStart(state, Table1(in_plane_only), derivatives);
 }
 // Identify with one start: the LM fit and the uncertainty analysis after it.
 BENCHMARK_CAPTURE(Fit, in_plane_numeric, true, Derivatives::kNumeric)
@@ -135,17 +141,7 @@ BENCHMARK(BM_ModelEvaluationRolling)->Unit(benchmark::kMicrosecond);
 // Joint fits: the standing test alone (0), one drum speed alone (6), and
 // standing with two drum speeds (0, 6, 12). Target: the last <= 4x the first.
 void BM_JointFit(benchmark::State& state, std::vector<double> speeds, Derivatives derivatives) {
-  const Dataset d = CarTire(speeds);
-  IdentifyOptions o;
-  o.starts = 1;
-  o.residuals.derivatives = derivatives;
-  for (auto _ : state) {
-    const RigidRingModel model;  // a cold standstill cache
-    IdentifyResult s;
-    Identify(model, d, o, &s);
-    if (!s.status.ok()) state.SkipWithError("fit failed");
-    benchmark::DoNotOptimize(s);
-  }
+  TimeOneStart(state, CarTire(speeds), derivatives);
 }
 BENCHMARK_CAPTURE(BM_JointFit, standing_numeric, std::vector<double>{0}, Derivatives::kNumeric)
     ->Unit(benchmark::kMillisecond);
@@ -268,17 +264,7 @@ BENCHMARK_CAPTURE(BM_FrfJacobian, analytic, Derivatives::kAnalytic)->Unit(benchm
 // Identify with one start from 15 % off: numeric derivatives (the default)
 // and exact.
 void BM_FrfFit(benchmark::State& state, Derivatives derivatives) {
-  const Dataset d = HammerFrfs();
-  IdentifyOptions o;
-  o.starts = 1;
-  o.residuals.derivatives = derivatives;
-  for (auto _ : state) {
-    IdentifyResult s;
-    Identify(RigidRingModel(), d, o, &s);
-    if (!s.status.ok()) state.SkipWithError("fit failed");
-    state.counters["evaluations"] = static_cast<double>(s.evaluations);
-    benchmark::DoNotOptimize(s);
-  }
+  TimeOneStart(state, HammerFrfs(), derivatives);
 }
 BENCHMARK_CAPTURE(BM_FrfFit, numeric, Derivatives::kNumeric)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_FrfFit, analytic, Derivatives::kAnalytic)->Unit(benchmark::kMillisecond);
