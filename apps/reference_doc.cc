@@ -77,7 +77,7 @@ std::string ReferenceMarkdown() {
   o << "\n## Mode labels\n\n"
        "A dataset's `label`; `plane` must agree. The home degree of freedom is where the mode's\n"
        "motion is largest in a typical tire; labels themselves come from strain energy\n"
-       "(README, model.md section 9). The hub labels come from the hub_compliance effect and\n"
+       "(conventions.md §2, model.md section 9). The hub labels come from the hub_compliance effect and\n"
        "appear in model output only; a dataset that names them is refused.\n\n"
        "| label | plane | home degree of freedom |\n| --- | --- | --- |\n";
   for (int l = 0; l < kNumLabels; ++l) {
