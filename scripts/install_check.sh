@@ -40,7 +40,7 @@ module=$(find "$prefix" -name 'ringid.cpython-*.so' -path '*dist-packages*' | he
 if [ -n "$module" ]; then
   PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c \
     "import ringid; ringid.identify('datasets/paper/table1.json', starts=1)"
-  # The module's sources build against the installed headers alone (issue 34):
+  # The module's sources build against the installed headers alone:
   # python/ copied away from the tree, so that no header of the tree is found.
   mkdir -p "$work/module/src"
   cp -r python "$work/module/src/"
@@ -50,6 +50,7 @@ project(module LANGUAGES CXX)
 set(CMAKE_CXX_STANDARD 17)
 set(Python_EXECUTABLE /usr/bin/python3)
 set(PYBIND11_FINDPYTHON ON)
+set(CMAKE_INTERPROCEDURAL_OPTIMIZATION OFF)  # as python/CMakeLists.txt: no minutes of LTO
 find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
 find_package(pybind11 CONFIG REQUIRED)
 find_package(ringid REQUIRED)
