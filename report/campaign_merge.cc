@@ -90,7 +90,7 @@ bool MergeShards(const std::string& dir, CampaignReport* merged, std::string* er
   for (const auto& [index, path] : paths) {
     CampaignReport shard;
     if (!ReadSummary(path, &shard, error)) return false;
-    const auto differs = [&](const std::string& what) {
+    const auto differs = [&, &path = path](const std::string& what) {  // clang: no binding captures
       *error = path + ": its " + what + " differ(s) from " + paths.begin()->second +
                "'s: not a shard of the same campaign";
       return false;

@@ -18,12 +18,12 @@ bash scripts/install_deps.sh clang libclang-rt-14-dev
 # (tests/fuzz/coverage_ignorelist.txt): their inner loops took 55 % of an
 # identify execution. ASan and UBSan still check them.
 flags="-fsanitize=fuzzer-no-link,$sanitizers -fno-sanitize-recover=all -fno-omit-frame-pointer"
-flags+=" -g -O1 -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
+flags+=" -O1 -DNDEBUG -gline-tables-only -DEIGEN_MALLOC_ALREADY_ALIGNED=1"  # file:line in reports
 flags+=" -fsanitize-coverage-ignorelist=$PWD/tests/fuzz/coverage_ignorelist.txt"
 # The Python module is left out: an ASan-built extension cannot load into
 # Debian's uninstrumented python3 (the ASan runtime must come first); its
 # tests run in the optimised suite.
-cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=None \
   -DRINGID_BUILD_BENCHMARKS=OFF -DRINGID_BUILD_PYTHON=OFF -DRINGID_BUILD_FUZZERS=ON \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$sanitizers" > /dev/null
 bash scripts/progress.sh "$build" "$@"

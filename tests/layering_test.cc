@@ -62,7 +62,8 @@ TEST(LayeringTest, EachFolderIncludesOnlyTheFoldersBelowIt) {
   for (const auto& [folder, allowed] : kMayInclude) {
     const fs::path dir = fs::path(RINGID_SOURCE_DIR) / folder;
     ASSERT_TRUE(fs::is_directory(dir)) << dir;
-    ForEachLine(folder, {".h", ".cc"}, [&](const fs::path& path, int n, const std::string& line) {
+    ForEachLine(folder, {".h", ".cc"}, [&, &folder = folder, &allowed = allowed](
+                                           const fs::path& path, int n, const std::string& line) {
       std::smatch m;
       if (!std::regex_search(line, m, include)) return;
       const std::string target = m[1];
