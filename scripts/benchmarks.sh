@@ -13,7 +13,9 @@ cd "$(dirname "$0")/.."
 all=(paper conditioning speed static forces diagnosis synthetic rolling frf extract
      google_benchmark)
 sections=("${@:-${all[@]}}")
-bash scripts/build.sh ringid ringid_benchmarks
+targets=(ringid)
+case " ${sections[*]} " in *" google_benchmark "*) targets+=(ringid_benchmarks) ;; esac
+bash scripts/build.sh "${targets[@]}"
 page=docs/benchmarks.md
 parts=$(mktemp -d)
 trap 'rm -rf "$parts"' EXIT
