@@ -199,7 +199,13 @@ bool SimulateResponses(const RigidRingModel& model, const Parameters& p, int lug
         // A channel the forces leave still (the other plane) gets the noise of
         // a thousandth of the order's largest amplitude: a sigma must be positive.
         const double sigma = relative_noise * std::max(std::abs(y), 1e-3 * largest);
-        if (rng) y += std::complex<double>(sigma * n(*rng), sigma * n(*rng));
+        if (rng) {
+          // Two statements: in one call the order of the draws is the compiler's.
+          // The imaginary part first, as the shipped examples were drawn.
+          const double im = sigma * n(*rng);
+          const double re = sigma * n(*rng);
+          y += std::complex<double>(re, im);
+        }
         o.channels[ch] = {y, sigma};
       }
       c.orders.push_back(o);

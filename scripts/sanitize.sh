@@ -9,11 +9,8 @@ cd "$(dirname "$0")/.."
 bash scripts/sanitized_build.sh build-asan address,undefined
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# Three tests compare files written now with the shipped ones, which the gcc release
-# build wrote, byte for byte; under clang they differ: the lug response's noise is
-# drawn as complex(n(rng), n(rng)), whose order of evaluation the compiler chooses
-# (datasets/response_dataset.cc), and the UFF example's complex shapes likewise differ.
-# The release suite runs them.
-written_by_gcc='TheShippedLabExampleIsTheCarTiresModesUnderItsMap|TheShippedExampleIsTheSimulationItsReadmeDescribes'
-written_by_gcc+='|SimulateOfTheShippedLugForcesWritesTheShippedResponse'
+# One test compares the UFF file written now with the shipped one, which the gcc
+# release build wrote, byte for byte; under clang its complex shapes differ (cause
+# not yet found). The release suite runs it.
+written_by_gcc='TheShippedLabExampleIsTheCarTiresModesUnderItsMap'
 cd build-asan && ctest --output-on-failure -j"$(nproc)" -LE long -E "$written_by_gcc"
