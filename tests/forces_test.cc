@@ -365,7 +365,7 @@ TEST(ResponseDatasetTest, TheShippedLugForcesAreThoseItsReadmeDescribes) {
   const std::string text = LugForcesToJson(ShippedLugForces());
   if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << text;
   EXPECT_EQ(testing::ReadFile(path), text)
-      << "RINGID_REGENERATE=1 build/tests/forces_test --gtest_filter=*Shipped*";
+      << "RINGID_REGENERATE=1 build/tests/estimation_tests --gtest_filter=*ShippedLugForces*";
   LugForceSpectrum back;
   LoadError e;
   ASSERT_TRUE(LoadLugForces(path, &back, &e)) << e.OneLine();
@@ -412,7 +412,7 @@ TEST(ResponseDatasetTest, TheShippedExampleIsTheSimulationItsReadmeDescribes) {
   const std::string path = testing::SourcePath("datasets/examples/car_tire_lug_response.json");
   if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << ResponseDatasetToJson(d);
   EXPECT_EQ(testing::ReadFile(path), ResponseDatasetToJson(d))
-      << "RINGID_REGENERATE=1 build/tests/forces_test --gtest_filter=*ShippedExample*";
+      << "RINGID_REGENERATE=1 build/tests/estimation_tests --gtest_filter=*ShippedExample*";
 }
 
 TEST(ResponseDatasetTest, WritesReadsAndWritesTheSameBytes) {

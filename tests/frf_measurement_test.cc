@@ -272,7 +272,7 @@ TEST(FrfMeasurementTest, TheShippedHammerTestIsTheCarTiresFrfs) {
   const std::string text = DatasetToJson(d);
   if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << text;
   EXPECT_EQ(testing::ReadFile(path), text)
-      << "RINGID_REGENERATE=1 build/tests/frf_measurement_test --gtest_filter=*Shipped*";
+      << "RINGID_REGENERATE=1 build/tests/data_tests --gtest_filter=*ShippedHammerTest*";
 }
 
 // The README's run: identify fits the shipped hammer test within its noise

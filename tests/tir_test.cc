@@ -551,7 +551,7 @@ TEST(TirMappingTest, DocsTirMdHoldsTheMappingTableOfTheCode) {
         << text.substr(0, b + begin.size()) + generated + text.substr(e);
   }
   EXPECT_EQ(text.substr(b + begin.size(), e - b - begin.size()), generated)
-      << "RINGID_REGENERATE=1 build/tests/tir_test --gtest_filter=*DocsTirMd*";
+      << "RINGID_REGENERATE=1 build/tests/data_tests --gtest_filter=*DocsTirMd*";
 }
 
 TEST(TirMappingTest, TirPathsAreKnownByTheirExtension) {

@@ -289,7 +289,7 @@ TEST(UffImportTest, TheShippedLabExampleIsTheCarTiresModesUnderItsMap) {
   const std::string path = testing::SourcePath("datasets/examples/car_tire_lab.uff");
   if (std::getenv("RINGID_REGENERATE")) std::ofstream(path) << text;
   EXPECT_EQ(testing::ReadFile(path), text)
-      << "RINGID_REGENERATE=1 build/tests/uff_import_test --gtest_filter=*ShippedLab*";
+      << "RINGID_REGENERATE=1 build/tests/data_tests --gtest_filter=*ShippedLab*";
   UffMap shipped, here = testing::ParsedUffMap(kLabMap);
   LoadError e;
   ASSERT_TRUE(LoadUffMap(testing::SourcePath("datasets/examples/car_tire_lab_map.json"), &shipped, &e))
