@@ -19,6 +19,9 @@ std::string Help(const std::vector<Command>& commands);
 // names them, the values it takes.
 std::string CommandHelp(const Command& command, const std::vector<Command>& all);
 
+// docs/commands.md: the overview of Help and each command's CommandHelp.
+std::string CommandsMarkdown(const std::vector<Command>& all);
+
 // The commands of `all` whose --parameters reads a .tir (Command::reads_tir),
 // as a sentence.
 std::string TirReaders(const std::vector<Command>& all);

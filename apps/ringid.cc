@@ -303,6 +303,19 @@ int ReferenceCommand(int, char**) {
   return kExitOk;
 }
 
+const std::vector<Command>& Commands();
+
+// As any installation says it: where this one found its data is PREFIX/share/ringid.
+int CommandsCommand(int, char**) {
+  std::string md = CommandsMarkdown(Commands());
+  const std::string here = DataDir();
+  for (size_t at = md.find(here); at != std::string::npos; at = md.find(here, at)) {
+    md.replace(at, here.size(), "PREFIX/share/ringid");
+  }
+  std::fputs(md.c_str(), stdout);
+  return kExitOk;
+}
+
 // Every command: what it needs, what it does, the flags it takes (the one list
 // SetFlags and --help read) and what runs it.
 const std::vector<Command>& Commands() {
@@ -385,6 +398,8 @@ const std::vector<Command>& Commands() {
        "parameters, degrees of freedom, labels and effects with their units, as\n"
        "Markdown (docs/reference.md)",
        {}, ReferenceCommand},
+      {"commands", "", "every command with its flags, as Markdown (docs/commands.md)", {},
+       CommandsCommand},
   };
   return commands;
 }

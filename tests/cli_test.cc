@@ -883,7 +883,7 @@ TEST(CliTest, EveryCommandExplainsItsFlagsOnHelp) {
                     "--shapes[=BOOL]  (default true; --noshapes for false)",
                     "--relative_sigma=X", "--save_parameters=TEXT", "--output_dir=TEXT",
                     "--effects=LIST  (default none)", "LIST is any of"}},
-      {"identifiability", {"--dataset=TEXT", "--derivatives=numeric|analytic  (default 'numeric')"}},
+      {"identifiability", {"--dataset=TEXT", "--derivatives=numeric|analytic|auto  (default 'auto')"}},
       {"compare", {"--starts=N  (default 6)"}},
       {"simulate", {"--set=TEXT", "--shift=X  (default 0)", "--truth=TEXT",
                     "--speeds=TEXT  (default '0')"}},
@@ -1022,7 +1022,17 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
                    "predict, identify, identifiability, compare, simulate, extract, diagnose, bench, "
-                   "report, export, import, merge, forces, schema, inputs or reference); see 'ringid help'\n");
+                   "report, export, import, merge, forces, schema, inputs, reference or commands); see "
+                   "'ringid help'\n");
+}
+
+// docs/commands.md is what the help of every command says.
+TEST(CliTest, TheCommandReferenceIsWhatEachCommandsHelpSays) {
+  const RunResult r = Ringid("commands");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(ReadFile(SourcePath("docs/commands.md")), r.out)
+      << "run: build/ringid commands > docs/commands.md";
+  EXPECT_NE(r.out.find(Ringid("identify --help").out), std::string::npos);
 }
 
 TEST(CliTest, AParameterSetGivenAsADatasetIsNamedAsOne) {
@@ -1176,7 +1186,7 @@ TEST(CliTest, AnInterruptedCampaignNamesTheReportsItKept) {
                                dir + "/data/" + name + ".json");
   }
   const std::string err = Scratch("interrupted_campaign.txt");
-  const pid_t pid = StartRingid("identify --starts=400 --dataset=" + dir + "/data --output_dir=" + dir +
+  const pid_t pid = StartRingid("identify --starts=60 --dataset=" + dir + "/data --output_dir=" + dir +
                               "/out",
                           err);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
