@@ -15,6 +15,7 @@ namespace ringid {
 namespace {
 
 using internal::Fail;  // caught in ReadFrf
+using internal::Captured;
 using internal::Failure;
 
 std::string Text(double v) {
@@ -318,15 +319,9 @@ DofCombination PointCombination(const FrfPoint& point) {
 bool ReadFrf(const FrfFields& fields, double speed_m_s, const std::string& path,
              const std::string& field, Frf* out, LoadError* error) {
   *out = Frf{};
-  try {
-    Check(fields, speed_m_s, field, out);
-  } catch (const Failure& f) {
-    error->file = path;
-    error->field = f.field;
-    error->message = f.message;
-    return false;
-  }
-  return true;
+  if (Captured(error, [&] { Check(fields, speed_m_s, field, out); })) return true;
+  error->file = path;
+  return false;
 }
 
 FrfFields FieldsOf(const Frf& frf) {

@@ -13,6 +13,7 @@ namespace ringid {
 namespace {
 
 using internal::Fail;
+using internal::Captured;
 using internal::Failure;
 
 // A line takes at least 8 bytes of a dataset (its frequency, re, im and
@@ -69,7 +70,7 @@ void Unprefixed(LoadError* error) {
 }
 
 bool Check(const FrfSpecFields& j, FrfSpec* spec, LoadError* error) {
-  try {
+  const bool read = Captured(error, [&] {
     FrfFields& layout = spec->layout;
     layout.inputs = j.inputs;
     layout.outputs = j.outputs;
@@ -91,13 +92,9 @@ bool Check(const FrfSpecFields& j, FrfSpec* spec, LoadError* error) {
                     "0: no noise)");
     }
     spec->noise = j.noise;
-  } catch (const Failure& f) {
-    error->field = f.field;
-    error->message = f.message;
-    return false;
-  }
+  });
   Frf standing;
-  return FrfOfSpec(*spec, 0, &standing, error);
+  return read && FrfOfSpec(*spec, 0, &standing, error);
 }
 
 }  // namespace

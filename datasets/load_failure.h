@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "datasets/dataset.h"
+
 namespace ringid::internal {
 
 struct Failure {
@@ -16,6 +18,20 @@ struct Failure {
 
 [[noreturn]] inline void Fail(const std::string& field, const std::string& message) {
   throw Failure{field, message};
+}
+
+// Runs `read`; a Failure it throws becomes `error`'s field and message, and
+// the answer false.
+template <class Read>
+bool Captured(LoadError* error, Read&& read) {
+  try {
+    read();
+  } catch (const Failure& f) {
+    error->field = f.field;
+    error->message = f.message;
+    return false;
+  }
+  return true;
 }
 
 // `s` as a message may quote it: at most 40 characters, printable ASCII.

@@ -14,6 +14,7 @@ namespace ringid {
 namespace {
 
 using internal::Fail;  // caught in ParseTir
+using internal::Captured;
 using internal::Failure;
 using internal::Quoted;
 
@@ -330,14 +331,7 @@ bool ParseTir(const std::string& text, const std::string& path, TirFile* file,
   error->file = path;
   error->field.clear();
   error->message.clear();
-  try {
-    Parser(text, file, strict_sections).Run();
-  } catch (const Failure& f) {
-    error->field = f.field;
-    error->message = f.message;
-    return false;
-  }
-  return true;
+  return Captured(error, [&] { Parser(text, file, strict_sections).Run(); });
 }
 
 bool LoadTir(const std::string& path, TirFile* file, LoadError* error,

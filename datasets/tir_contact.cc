@@ -8,6 +8,7 @@
 namespace ringid {
 namespace {
 
+using internal::Captured;
 using internal::Failure;  // caught in DeriveTirContact
 
 using P = Param;
@@ -341,14 +342,7 @@ bool DeriveTirContact(const TirFile& file, const Parameters& belt,
   *contact = TirContact{};
   error->file = file.path;
   error->field.clear();
-  try {
-    Derivation(file, belt, given, contact).Run();
-  } catch (const Failure& f) {
-    error->field = f.field;
-    error->message = f.message;
-    return false;
-  }
-  return true;
+  return Captured(error, [&] { Derivation(file, belt, given, contact).Run(); });
 }
 
 }  // namespace ringid

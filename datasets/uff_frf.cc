@@ -18,6 +18,7 @@ namespace ringid {
 namespace {
 
 using internal::Fail;  // caught in AddUffFrfs
+using internal::Captured;
 using internal::Failure;
 using Vec3 = std::array<double, 3>;
 
@@ -570,14 +571,7 @@ bool AddUffFrfs(const UffFile& file, const UffMap& map, UffImport* out, LoadErro
     d.description = map.description.empty() ? "imported by ringid from the UFF file " + file.path
                                              : map.description;
   }
-  try {
-    Add(file, map, out);
-  } catch (const Failure& f) {
-    error->field = f.field;
-    error->message = f.message;
-    return false;
-  }
-  return true;
+  return Captured(error, [&] { Add(file, map, out); });
 }
 
 }  // namespace ringid
