@@ -159,7 +159,7 @@ Provenance ThisRun(int argc, char** argv, std::optional<long> seed,
   Derivatives derivatives = FitSettings().derivatives;
   std::string ignored;
   p.derivatives = ReadFlag("derivatives", &derivatives, &ignored) ? derivatives
-                                                                  : Derivatives::kNumeric;
+                                                                  : FitSettings().derivatives;
   if (!FLAGS_output_dir.empty()) p.options = CampaignOptions();
   return p;
 }

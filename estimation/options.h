@@ -13,7 +13,7 @@ namespace ringid {
 // The measurements' weights and conventions (datasets/measurement_options.h)
 // and how the residuals' Jacobians are made.
 struct ResidualOptions : MeasurementOptions {
-  Derivatives derivatives = Derivatives::kNumeric;
+  Derivatives derivatives = Derivatives::kAuto;
   bool IsValid(std::string* why) const;
 };
 

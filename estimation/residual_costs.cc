@@ -236,15 +236,27 @@ class PriorCost final : public ceres::CostFunction {
 
 ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
   auto* numeric = new NumericResidualCost(residuals);
-  if (residuals.options().derivatives == Derivatives::kNumeric) return numeric;
+  const ParameterSetup& setup = residuals.setup();
+  bool any_exact = false;
+  for (int c = 0; c < setup.num_conditions(); ++c) any_exact |= residuals.ExactJacobian(c);
+  if (!any_exact) return numeric;
 
-  // Every condition's exact rows placed in x's columns, then the priors.
+  // Every condition's rows placed in x's columns (exact, or differenced on
+  // their own where ExactJacobian says so), then the priors.
   class Analytic final : public ceres::CostFunction {
    public:
     Analytic(const ModalResiduals& residuals, ceres::CostFunction* numeric)
         : residuals_(residuals), numeric_(numeric) {
       set_num_residuals(residuals.num_residuals());
       mutable_parameter_block_sizes()->push_back(residuals.num_parameters());
+      const ParameterSetup& setup = residuals.setup();
+      for (int c = 0; c < setup.num_conditions(); ++c) {
+        differenced_.emplace_back(
+            residuals.ExactJacobian(c)
+                ? nullptr
+                : new NumericConditionCost(residuals, c, setup.num_shared(),
+                                           setup.own_begin(c + 1) - setup.own_begin(c)));
+      }
     }
     bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
       if (!jacobians || !jacobians[0]) return residuals_.Evaluate(x[0], r);
@@ -258,13 +270,25 @@ ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
         // Without own coordinates the shared block is whole rows of J.
         const bool direct = size == 0 && ns == n;
         RowMatrix Js(direct ? 0 : rows, ns), Jo(rows, size);
-        bool defined = false;
-        if (!residuals_.EvaluateConditionJacobian(
-                c, x[0], x[0] + own, r + row, direct ? &J(row, 0) : Js.data(),
-                size ? Jo.data() : nullptr, &defined)) {
-          return false;
+        double* js = direct ? &J(row, 0) : Js.data();
+        double* jo = size ? Jo.data() : nullptr;
+        if (const NumericConditionCost* cost = differenced_[c].get()) {
+          std::vector<const double*> blocks;
+          std::vector<double*> made;
+          if (ns > 0) blocks.push_back(x[0]), made.push_back(js);
+          if (size > 0) blocks.push_back(x[0] + own), made.push_back(jo);
+          const bool evaluated =
+              blocks.empty() ? residuals_.EvaluateCondition(c, nullptr, nullptr, r + row)
+                             : cost->Evaluate(blocks.data(), r + row, made.data());
+          if (!evaluated) return false;
+        } else {
+          bool defined = false;
+          if (!residuals_.EvaluateConditionJacobian(c, x[0], x[0] + own, r + row, js, jo,
+                                                    &defined)) {
+            return false;
+          }
+          if (!defined) return numeric_->Evaluate(x, r, jacobians);
         }
-        if (!defined) return numeric_->Evaluate(x, r, jacobians);
         if (!direct) J.block(row, 0, rows, ns) = Js;
         J.block(row, own, rows, size) = Jo;
       }
@@ -282,6 +306,7 @@ ceres::CostFunction* NewResidualCost(const ModalResiduals& residuals) {
     using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     const ModalResiduals& residuals_;
     std::unique_ptr<ceres::CostFunction> numeric_;
+    std::vector<std::unique_ptr<NumericConditionCost>> differenced_;  // null: exact
   };
   return new Analytic(residuals, numeric);
 }
@@ -301,7 +326,7 @@ std::vector<std::pair<int, int>> AddResidualBlocks(const ModalResiduals& residua
     std::vector<double*> parameters;
     if (ns > 0) parameters.push_back(x->data());
     if (size > 0) parameters.push_back(x->data() + begin);
-    if (residuals.options().derivatives == Derivatives::kAnalytic) {
+    if (residuals.ExactJacobian(c)) {
       problem->AddResidualBlock(new AnalyticConditionCost(residuals, c, ns, size), nullptr,
                                 parameters);
       continue;

@@ -71,6 +71,12 @@ class ModalResiduals {
                                  bool* defined) const;
   int row_begin(int c) const { return row_begin_[c]; }
   const ResidualOptions& options() const { return options_; }
+  // Whether condition c's rows are differentiated exactly: options().derivatives
+  // analytic, or auto and the condition measures no mode (types.h).
+  bool ExactJacobian(int c) const {
+    return options_.derivatives == Derivatives::kAnalytic ||
+           (options_.derivatives == Derivatives::kAuto && !modal_[c]);
+  }
 
   // A prior as a residual on one shared coordinate x (docs/conventions.md §7):
   // normal (value(x) - mean) / sigma, lognormal (x - log median) / s with

@@ -40,11 +40,14 @@ enum class Derivatives {
   kNumeric,   // central differences through the eigen-solution
   kAnalytic,  // eigenvalue and eigenvector derivatives (docs/model.md §15),
               // central differences where two eigenvalues coincide
+  kAuto,      // per condition: analytic where it measures no modes (FRFs
+              // and static stiffnesses, dH = -H dZ H: exact and cheaper),
+              // numeric where it measures modes (the design's default)
 };
 
 template <>
 struct EnumNames<Derivatives> {
-  static constexpr std::array<const char*, 2> kNames = {"numeric", "analytic"};
+  static constexpr std::array<const char*, 3> kNames = {"numeric", "analytic", "auto"};
 };
 
 // Where a start of an identification came from.

@@ -110,8 +110,10 @@ struct FitSettings {
              "how the measured real shapes were made: as the contract says, or as the paper's "
              "Tables 4-5");
     a->Visit("derivatives", &derivatives,
-             "Jacobians by central differences (numeric) or from eigenvalue and eigenvector "
-             "derivatives (analytic)");
+             "Jacobians by central differences (numeric), from eigenvalue and eigenvector "
+             "derivatives and dH = -H dZ H (analytic), or per condition (auto): analytic "
+             "where it measures FRFs or static stiffnesses and no modes, numeric where it "
+             "measures modes");
     a->Visit("band", &band,
              "LO,HI: fit the lines of measured FRFs from LO to HI Hz only (all by default; "
              "docs/conventions.md §9: the rigid ring does not hold far above its modes)");

@@ -91,7 +91,7 @@ std::string OptionsDoc(const std::vector<OptionInfo>& options);
 // derivatives.
 Provenance RunOf(const std::vector<std::string>& argv,
                  const std::vector<std::pair<std::string, std::string>>& inputs,
-                 std::optional<long> seed, Derivatives derivatives = Derivatives::kNumeric);
+                 std::optional<long> seed, Derivatives derivatives = ResidualOptions().derivatives);
 
 // Inputs: a path (str or os.PathLike) or a dict; `source` is the path, ""
 // for a dict (messages name it "<dict>").

@@ -25,7 +25,7 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 12;
+inline constexpr int kReportSchemaVersion = 13;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
@@ -61,7 +61,7 @@ struct Provenance {
   std::vector<std::string> command_line;
   std::vector<InputFile> inputs;
   std::optional<long> seed;          // of random starts or noise, where used
-  Derivatives derivatives = Derivatives::kNumeric;  // how Jacobians were taken
+  Derivatives derivatives = ResidualOptions().derivatives;  // how Jacobians were taken
   // A campaign's: the flags that decide its results, NAME=VALUE; a report
   // is resumed only under the same.
   std::optional<std::vector<std::string>> options;

@@ -113,7 +113,9 @@ TEST(FrfMeasurementTest, ANumericJacobianIsMadeOncePerPointAndSolvesNoModes) {
   std::mt19937_64 rng(10);
   const Dataset d = Hammer(0.02, 0.15, 10.0, &rng);
   Status status;
-  const auto problem = Problem::Create(RigidRingModel(), d, ResidualOptions{}, &status);
+  ResidualOptions numeric;
+  numeric.derivatives = Derivatives::kNumeric;
+  const auto problem = Problem::Create(RigidRingModel(), d, numeric, &status);
   ASSERT_TRUE(problem) << status.message;
   Eigen::VectorXd x = problem->start();
   ceres::Problem fit;
@@ -148,6 +150,34 @@ TEST(FrfMeasurementTest, ANumericJacobianIsMadeOncePerPointAndSolvesNoModes) {
     ASSERT_TRUE(exact_fit.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &r, nullptr, &J));
   }
   EXPECT_EQ(exact->evaluations(), 1);
+}
+
+// The default derivatives (auto) are exact for a condition of FRFs, one
+// evaluation a Jacobian, the same as analytic's to the bit; for a condition
+// of measured modes they are the central differences of numeric.
+TEST(FrfMeasurementTest, DefaultDerivativesAreExactForFrfsAndDifferencesForModes) {
+  std::mt19937_64 rng(10);
+  const Dataset frfs = Hammer(0.02, 0.15, 10.0, &rng);
+  Dataset modes;
+  LoadError error;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &modes, &error))
+      << error.OneLine();
+  ASSERT_EQ(ResidualOptions{}.derivatives, Derivatives::kAuto);
+  for (const auto& [d, same] : {std::pair<const Dataset*, Derivatives>{&frfs, Derivatives::kAnalytic},
+                                std::pair<const Dataset*, Derivatives>{&modes, Derivatives::kNumeric}}) {
+    Status status;
+    const auto given = Problem::Create(RigidRingModel(), *d, ResidualOptions{}, &status);
+    ASSERT_TRUE(given) << status.message;
+    ResidualOptions o;
+    o.derivatives = same;
+    const auto other = Problem::Create(RigidRingModel(), *d, o, &status);
+    ASSERT_TRUE(other) << status.message;
+    Eigen::MatrixXd J, J_same;
+    ASSERT_TRUE(internal::EvaluateJacobian(given->residuals(), given->start(), &J));
+    ASSERT_TRUE(internal::EvaluateJacobian(other->residuals(), other->start(), &J_same));
+    EXPECT_EQ(J, J_same) << ToString(same);
+    if (same == Derivatives::kAnalytic) EXPECT_EQ(given->evaluations(), 1);
+  }
 }
 
 // From the truth with 2 % noise: the chi-square per degree of freedom near 1

@@ -274,7 +274,7 @@ class InputsAndResults(ReportTestCase):
 
     def test_every_keyword_is_a_flag_with_its_default_in_the_docstring(self):
         for flag, default in [("starts", "starts=6"), ("method", "method='lm'"),
-                              ("derivatives", "derivatives='numeric'"), ("shapes", "shapes=")]:
+                              ("derivatives", "derivatives='auto'"), ("shapes", "shapes=")]:
             self.assertIn(default, ringid.identify.__doc__, flag)
         self.assertIn("level=", ringid.diagnose.__doc__)
         self.assertIn("lugs_per_revolution=0", ringid.predict.__doc__)
