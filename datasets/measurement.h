@@ -162,8 +162,8 @@ class Measurement {
                                            int item) const {
     return std::nullopt;
   }
-  // (model - measured) / sigma into r[0, Rows). With `params`, dr(row, p) =
-  // d r / d (catalogue parameter p) for each p listed. False where the model
+  // (model - measured) / sigma into r[0, Rows). With `params`, dr(row, k) =
+  // d r / d (catalogue parameter (*params)[k]): a column per parameter listed. False where the model
   // has no counterpart (no paired mode, a singular static solve).
   virtual bool Evaluate(const Dataset& d, int item, const ModelAt& at,
                         const MeasurementOptions& o, double* r, const std::vector<int>* params,

@@ -22,7 +22,9 @@ class Damping : public ModeQuantity {
     const double sigma = Sigma(m, o);
     r[0] = (mode.damping_ratio - *m.damping_ratio) / sigma;
     if (!params) return;
-    for (int p : *params) dr(0, p) = mode.derivatives->DampingRatio(mode.eigenvalue, p) / sigma;
+    for (size_t k = 0; k < params->size(); ++k) {
+      dr(0, k) = mode.derivatives->DampingRatio(mode.eigenvalue, (*params)[k]) / sigma;
+    }
   }
   void AddMisfit(const MeasuredMode&, int, double r, ModeMisfit* w) const override {
     w->damping_sigma = r;

@@ -17,7 +17,9 @@ class Frequency : public ModeQuantity {
     const double sigma = FrequencySigma(m, o);
     r[0] = (mode.frequency_hz - m.frequency_hz) / sigma;
     if (!params) return;
-    for (int p : *params) dr(0, p) = mode.derivatives->Frequency(p) / sigma;
+    for (size_t k = 0; k < params->size(); ++k) {
+      dr(0, k) = mode.derivatives->Frequency((*params)[k]) / sigma;
+    }
   }
   void AddMisfit(const MeasuredMode&, int, double r, ModeMisfit* w) const override {
     w->frequency_sigma = r;

@@ -44,8 +44,9 @@ class Shape : public ModeQuantity {
       r[j++] = (alpha * u[static_cast<int>(dof)] - v / largest) / sigma;
     }
     if (!params) return;
-    for (int p : *params) {
-      const RealShapeVector du = ComparableShapeDerivative(mode, o.shape_convention, m.shape, p);
+    for (size_t k = 0; k < params->size(); ++k) {
+      const RealShapeVector du =
+          ComparableShapeDerivative(mode, o.shape_convention, m.shape, (*params)[k]);
       double duu = 0, dum = 0;
       for (const auto& [dof, v] : m.shape) {
         const int i = static_cast<int>(dof);
@@ -56,7 +57,7 @@ class Shape : public ModeQuantity {
       j = 0;
       for (const auto& [dof, v] : m.shape) {
         const int i = static_cast<int>(dof);
-        dr(j++, p) = (dalpha * u[i] + alpha * du[i]) / sigma;
+        dr(j++, k) = (dalpha * u[i] + alpha * du[i]) / sigma;
       }
     }
   }

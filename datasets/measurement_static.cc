@@ -60,7 +60,7 @@ class Static final : public Measurement {
     const double sigma = Sigma(m);
     r[0] = (k.value - m.value) / sigma;
     if (params) {
-      for (int p : *params) dr(0, p) = k.derivative[p] / sigma;
+      for (size_t j = 0; j < params->size(); ++j) dr(0, j) = k.derivative[(*params)[j]] / sigma;
     }
     return true;
   }

@@ -142,7 +142,9 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;
+  so.linear_solver_type = residuals.num_residuals() >= kNormalEquationsRows
+                             ? ceres::DENSE_NORMAL_CHOLESKY
+                             : ceres::DENSE_QR;
   so.max_num_iterations = max_iterations;
   so.function_tolerance = kCeresTolerance;
   so.gradient_tolerance = kCeresTolerance;

@@ -48,6 +48,11 @@ inline constexpr int kShrinkingGains = 3;
 inline constexpr double kGainShrink = 0.8;
 inline constexpr double kSlowestShrink = 0.5;
 inline constexpr double kCeresTolerance = 1e-14;
+// From this many residuals (FRFs: lines x functions x 2) each step solves
+// the normal equations (J'J, blocked and vectorised) in place of a
+// Householder QR of J, several times its cost for tens of thousands of rows
+// and a score of columns; modal data keep the QR.
+inline constexpr int kNormalEquationsRows = 2000;
 
 // 1/2 |r(x)|^2, or +inf where the model cannot be solved.
 double CostAt(const ModalResiduals& residuals, const Eigen::VectorXd& x);

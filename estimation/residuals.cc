@@ -284,7 +284,9 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
       modal_[c] ? model_.Solve(p, dataset_.conditions[c].speed_m_s, true) : ModalSolution{};
   const ModalSolution* modes = modal_[c] ? &solution : nullptr;
   const int rows = row_begin_[c + 1] - row_begin_[c];
-  RowMatrix dr = RowMatrix::Zero(rows, kNumParams);
+  // A column per parameter a coordinate moves (derived_), as Rows fills them.
+  thread_local RowMatrix dr;  // reused: an FRF's are megabytes
+  dr.setZero(rows, static_cast<int>(derived_.size()));
   if (!solution.derivatives_undefined.empty()) {
     RowMatrix none;
     return Rows(c, p, modes, r, none);
@@ -298,12 +300,17 @@ bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, cons
     if (!out) return;
     const int n = end - begin;
     std::vector<double> scale(n);
-    std::vector<std::vector<int>> from(n);  // free()[i], then the parameters tied to it
+    // dr's columns of free()[i], then of the parameters tied to it.
+    const auto column = [&](Param q) {
+      return static_cast<int>(std::find(derived_.begin(), derived_.end(), static_cast<int>(q)) -
+                              derived_.begin());
+    };
+    std::vector<std::vector<int>> from(n);
     for (int i = begin; i < end; ++i) {
       scale[i - begin] = setup_.PhysicalStd(i, x[i - begin], 1.0);
-      from[i - begin].push_back(static_cast<int>(setup_.free()[i]));
+      from[i - begin].push_back(column(setup_.free()[i]));
       for (const auto& [tied, to] : setup_.ties()) {
-        if (to == setup_.free()[i]) from[i - begin].push_back(static_cast<int>(tied));
+        if (to == setup_.free()[i]) from[i - begin].push_back(column(tied));
       }
     }
     for (int row = 0; row < rows; ++row) {

@@ -542,35 +542,35 @@ class Lines {
   Complex A_[kNumDofs][kNumDofs], v_[kNumDofs];
 };
 
-ResponseResult Respond(const MechanicalSystem& s, const Parameters& p,
-                       const ResponseRequest& request, const Slopes* slopes) {
-  ResponseResult r;
+void Respond(const MechanicalSystem& s, const Parameters& p, const ResponseRequest& request,
+             const Slopes* slopes, ResponseResult* out) {
+  ResponseResult& r = *out;
   const int lines = static_cast<int>(request.frequencies_hz.size());
   const int functions = static_cast<int>(request.pairs.size());
   r.H.resize(lines, functions);
-  if (slopes) r.dH.assign(slopes->params.size(), Eigen::MatrixXcd(lines, functions));
+  r.dH.resize(slopes ? slopes->params.size() : 0);
+  for (Eigen::MatrixXcd& d : r.dH) d.resize(lines, functions);
   Lines solver(s, p, request, slopes != nullptr);
   for (int l = 0; l < lines; ++l) {
     const double w = 2 * M_PI * request.frequencies_hz[l];
     if (!solver.At(w, l, &r)) {
       r.error = "the dynamic stiffness is singular at " +
                 std::to_string(request.frequencies_hz[l]) + " Hz (an undamped resonance)";
-      return r;
+      return;
     }
     if (slopes) solver.Derive(w, l, *slopes, request, &r);
   }
   if (!r.H.allFinite()) {
     r.error = "the response is not finite";
-    return r;
+    return;
   }
   for (const Eigen::MatrixXcd& d : r.dH) {
     if (!d.allFinite()) {
       r.error = "the response's derivatives are not finite";
-      return r;
+      return;
     }
   }
   r.ok = true;
-  return r;
 }
 
 bool Hub(Dof d) { return d == Dof::kXa || d == Dof::kZa || d == Dof::kYa; }
@@ -596,39 +596,49 @@ ResponseResult FrequencyResponse(const ModalModel& model, const Parameters& p, d
                                  const ResponseRequest& request,
                                  const std::vector<int>* params) {
   ResponseResult r;
+  FrequencyResponse(model, p, speed_m_s, request, params, &r);
+  return r;
+}
+
+void FrequencyResponse(const ModalModel& model, const Parameters& p, double speed_m_s,
+                       const ResponseRequest& request, const std::vector<int>* params,
+                       ResponseResult* out) {
+  ResponseResult& r = *out;
+  r.ok = false;
+  r.error.clear();
   if (!(speed_m_s >= 0) || !std::isfinite(speed_m_s)) {
     r.error = "the speed must be finite and not negative";
-    return r;
+    return;
   }
   for (double hz : request.frequencies_hz) {
     if (!(hz > 0) || !std::isfinite(hz)) {
       r.error = "every frequency must be positive";
-      return r;
+      return;
     }
   }
   for (Param q : model.parameters()) {
     if (!std::isfinite(p[q])) {
       r.error = std::string("parameter ") + ParamName(q) + " is not finite";
-      return r;
+      return;
     }
   }
   const MechanicalSystem s = model.Assemble(p, speed_m_s);
   for (const ResponseInput& in : request.inputs) {
     if (auto d = Missing(s, in.coordinates, in.on_rim)) {
       r.error = std::string("an input acts on ") + DofName(*d) + ", which the model lacks";
-      return r;
+      return;
     }
   }
   for (const ResponseOutput& out : request.outputs) {
     if (auto d = Missing(s, out.coordinates, out.on_rim)) {
       r.error = std::string("an output reads ") + DofName(*d) + ", which the model lacks";
-      return r;
+      return;
     }
   }
-  if (!params) return Respond(s, p, request, nullptr);
+  if (!params) return Respond(s, p, request, nullptr, &r);
   const ParameterArray<ParameterJet> jets = Seeded(p);
   const Slopes slopes(model.Assemble(jets, speed_m_s), jets, request, Active(s), *params);
-  return Respond(s, p, request, &slopes);
+  Respond(s, p, request, &slopes, &r);
 }
 
 }  // namespace ringid

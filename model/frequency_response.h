@@ -71,6 +71,11 @@ struct ResponseResult {
 ResponseResult FrequencyResponse(const ModalModel& model, const Parameters& p, double speed_m_s,
                                  const ResponseRequest& request,
                                  const std::vector<int>* params = nullptr);
+// The same into `out`, whose storage is reused where it has the size: a
+// fit's Jacobian of a hammer test holds megabytes of dH.
+void FrequencyResponse(const ModalModel& model, const Parameters& p, double speed_m_s,
+                       const ResponseRequest& request, const std::vector<int>* params,
+                       ResponseResult* out);
 
 // The coordinate of `c` the model lacks at any size of its effects, if any
 // (the hub's translations without hub_compliance); on the rim the hub's are
