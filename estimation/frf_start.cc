@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -114,6 +115,15 @@ Eigen::VectorXd InSetup(const ParameterSetup& setup, const std::vector<Parameter
     x[i] = setup.ToCoordinate(i, at[std::max(setup.condition_of(i), 0)][setup.free()[i]]);
   }
   return x;
+}
+
+// The modal stage's fits: `starts` starts on one thread, the fit alone.
+IdentifyOptions StageOptions(int starts) {
+  IdentifyOptions o;
+  o.starts = starts;
+  o.threads = 1;
+  o.analysis = false;
+  return o;
 }
 
 }  // namespace
@@ -284,17 +294,13 @@ std::vector<std::vector<FrfMode>> StageModes(const Dataset& d) {
 std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Dataset& d,
                                              const ParameterSetup& setup,
                                              const std::vector<std::vector<FrfMode>>& found,
-                                             const Eigen::VectorXd& from,
-                                             const std::function<double(const Eigen::VectorXd&)>& frf_cost,
-                                             Dataset* stage) {
+                                             const Eigen::VectorXd& from, Dataset* stage) {
   if (found.empty()) return std::nullopt;
   Dataset start = d;  // the FRF dataset's initial values at `from`
   std::vector<Parameters> at;
   for (int c = 0; c < static_cast<int>(d.conditions.size()); ++c) at.push_back(setup.Decode(from.data(), c));
   for (auto& [q, v] : start.initial) v = at[0][q];
-  IdentifyOptions o;
-  o.starts = kModalStageStarts;
-  o.threads = 1;
+  const IdentifyOptions o = StageOptions(kModalStageStarts);
   // Labelled by the model at `from`, fitted, and labelled again at the fit
   // until no label changes (at most kLabelRounds rounds).
   Dataset modal;
@@ -316,38 +322,42 @@ std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Data
     for (size_t c = 0; c < at.size(); ++c) at[c] = fitted.Decode(r.x.data(), static_cast<int>(c));
   }
   if (!fitted_once) return std::nullopt;
-  Eigen::VectorXd best = InSetup(setup, at, from);
-  if (stage) *stage = modal;
-  if (!frf_cost) return best;
-  // Modes without a shape keep the labels of their output MAC, which may not
-  // separate them: each other order of their labels is fitted too, and the
-  // start is the fit whose FRFs fit best.
+  if (stage) *stage = std::move(modal);
+  return InSetup(setup, at, from);
+}
+
+std::optional<Eigen::VectorXd> OtherLabelOrderStart(
+    const ModalModel& model, const ParameterSetup& setup, const Dataset& stage,
+    const Eigen::VectorXd& from, const std::function<double(const Eigen::VectorXd&)>& frf_cost) {
   std::vector<size_t> shapeless;
-  for (size_t k = 0; k < modal.modes.size(); ++k) {
-    if (modal.modes[k].shape.empty()) shapeless.push_back(k);
+  for (size_t k = 0; k < stage.modes.size(); ++k) {
+    if (stage.modes[k].shape.empty()) shapeless.push_back(k);
   }
-  if (shapeless.size() < 2 || shapeless.size() > kMaxPermutedLabels) return best;
-  double best_cost = frf_cost(best);
+  if (shapeless.size() < 2 || shapeless.size() > kMaxPermutedLabels) return std::nullopt;
   std::vector<ModeLabel> labels;
-  for (size_t k : shapeless) labels.push_back(modal.modes[k].label);
+  for (size_t k : shapeless) labels.push_back(stage.modes[k].label);
   const std::vector<ModeLabel> first = labels;
   std::sort(labels.begin(), labels.end());
-  o.starts = 1;  // from `from`: the labels, not the start, are on trial
+  const IdentifyOptions o = StageOptions(1);  // from `from`: the labels, not the start, are on trial
+  std::optional<Eigen::VectorXd> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::string why;
   do {
     if (labels == first) continue;
-    Dataset other = modal;
+    Dataset other = stage;
     for (size_t k = 0; k < shapeless.size(); ++k) other.modes[shapeless[k]].label = labels[k];
+    IdentifyResult r;
     Identify(model, other, o, &r);
     ParameterSetup fitted;
     if (!r.status.ok() || !ParameterSetup::Build(model, other, &fitted, &why)) continue;
     std::vector<Parameters> there;
-    for (size_t c = 0; c < at.size(); ++c) there.push_back(fitted.Decode(r.x.data(), static_cast<int>(c)));
+    for (int c = 0; c < static_cast<int>(stage.conditions.size()); ++c) {
+      there.push_back(fitted.Decode(r.x.data(), c));
+    }
     const Eigen::VectorXd x = InSetup(setup, there, from);
-    const double cost = frf_cost(x);
-    if (cost < best_cost) {
+    if (const double cost = frf_cost(x); cost < best_cost) {
       best_cost = cost;
       best = x;
-      if (stage) *stage = std::move(other);
     }
   } while (std::next_permutation(labels.begin(), labels.end()));
   return best;

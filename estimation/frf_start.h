@@ -98,25 +98,29 @@ std::vector<std::vector<FrfMode>> ModesInFrfs(const Dataset& d, const PlscfOptio
 std::vector<std::vector<FrfMode>> StageModes(const Dataset& d);
 
 // A start for `setup` (of `d`, a dataset with FRFs) from the point `from`:
-// `found` (ModesInFrfs) labelled by the model at `from`, fitted as modal
-// data from there (kModalStageStarts starts: `from` and the point matching
-// its frequencies), labelled again at the fit and refitted until the labels
-// hold (kLabelRounds); the fitted values in `setup`'s coordinates, the mass
-// it held at `from`'s value. None where there are no modes or the modal
-// stage fails.
-// With `frf_cost` (the FRFs' cost at a point in `setup`'s coordinates), the
-// modes the stage fitted without a shape (at most kMaxPermutedLabels) have
-// their labels tried in every order, each fitted, and the start is the fit
-// of the least FRF cost: two lateral sensors do not tell the three
-// out-of-plane modes apart, and their output MAC can label them wrongly.
-// `stage`, where given, gets the modal dataset of the fit returned.
+// `found` (StageModes) labelled by the model at `from`, fitted as modal data
+// from there (kModalStageStarts starts: `from` and the point matching its
+// frequencies), labelled again at the fit and refitted until the labels hold
+// (kLabelRounds); the fitted values in `setup`'s coordinates, the mass it
+// held at `from`'s value. None where there are no modes or the modal stage
+// fails. `stage`, where given, gets the modal dataset of the fit returned.
 inline constexpr int kModalStageStarts = 2;
+std::optional<Eigen::VectorXd> FrfModalStart(const ModalModel& model, const Dataset& d,
+                                             const ParameterSetup& setup,
+                                             const std::vector<std::vector<FrfMode>>& found,
+                                             const Eigen::VectorXd& from,
+                                             Dataset* stage = nullptr);
+
+// Where the fit from FrfModalStart's start ends poor: the modes its `stage`
+// fitted without a shape (2 to kMaxPermutedLabels of them) with their labels
+// in each other order, each fitted as modal data from `from`; the start of
+// the least `frf_cost` (the FRFs' cost at a point in `setup`'s coordinates).
+// Two lateral sensors do not tell the three out-of-plane modes apart, and
+// their output MAC can label them wrongly. None where no other order fits.
 inline constexpr size_t kMaxPermutedLabels = 3;
-std::optional<Eigen::VectorXd> FrfModalStart(
-    const ModalModel& model, const Dataset& d, const ParameterSetup& setup,
-    const std::vector<std::vector<FrfMode>>& found, const Eigen::VectorXd& from,
-    const std::function<double(const Eigen::VectorXd&)>& frf_cost = nullptr,
-    Dataset* stage = nullptr);
+std::optional<Eigen::VectorXd> OtherLabelOrderStart(
+    const ModalModel& model, const ParameterSetup& setup, const Dataset& stage,
+    const Eigen::VectorXd& from, const std::function<double(const Eigen::VectorXd&)>& frf_cost);
 
 }  // namespace internal
 }  // namespace ringid

@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -202,6 +203,22 @@ const char* DecidedByWords(DecidedBy d) {
   return "";
 }
 
+int internal::ShapeScales(const ModalResiduals& residuals) {
+  int scales = 0;
+  const Dataset& d = residuals.dataset();
+  for (const Measurement* unit : Measurements()) {
+    for (int i = 0; i < unit->records().Items(d); ++i) scales += unit->Scales(d, i, residuals.options());
+  }
+  return scales;
+}
+
+bool internal::FitsWithinNoise(const ModalResiduals& residuals, double cost) {
+  if (!std::isfinite(cost)) return false;
+  const FitQuality q = AssessFit(cost, residuals.num_residuals(), residuals.setup().size(),
+                                 ShapeScales(residuals));
+  return q.p_value && !q.poor;
+}
+
 StartAgreement internal::AssessStarts(const ParameterSetup& setup, const std::vector<double>& costs,
                             const std::vector<Eigen::VectorXd>& ends) {
   StartAgreement a;
@@ -369,9 +386,18 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   };
   const std::vector<internal::Start> plan =
       PlanStarts(residuals, x0, box, starts, o.start_factor, o.seed, usable);
-  // Measured FRFs: each start first goes through the modal stage, so that
-  // the model's peaks lie on the measured ones (estimation/frf_start.h).
-  const auto found = internal::StageModes(dataset);
+  // Measured FRFs: a start whose fit does not pass the chi-square test goes
+  // through the modal stage, so that the model's peaks lie on the measured
+  // ones (estimation/frf_start.h), and is fitted again from there.
+  // The modes in the FRFs, extracted once, when a start first needs them.
+  std::once_flag extracted;
+  std::vector<std::vector<internal::FrfMode>> found;
+  const auto modes_in_frfs = [&]() -> const std::vector<std::vector<internal::FrfMode>>& {
+    std::call_once(extracted, [&] { found = internal::StageModes(dataset); });
+    return found;
+  };
+  const bool frfs = std::any_of(dataset.conditions.begin(), dataset.conditions.end(),
+                                [](const Condition& c) { return c.frf.has_value(); });
   const int n = static_cast<int>(plan.size());
   // On several threads each start has its own copy of the problem, made here
   // one after another; on one, the problem itself, whose kept solutions the
@@ -390,17 +416,48 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
   s->evaluations = residuals.evaluations();
   std::vector<LocalFit> fits(n);
   internal::ParallelFor(n, copies.empty() ? 1 : o.threads, [&](int k) {
-    Eigen::VectorXd from = plan[k].x;
     const ModalResiduals& mine = copies.empty() ? residuals : copies[k]->residuals();
-    const auto frf_cost = [&](const Eigen::VectorXd& x) {
-      return internal::CostAt(mine, x.cwiseMax(box.lower).cwiseMin(box.upper));
+    const auto inside = [&](const Eigen::VectorXd& x) {
+      return Eigen::VectorXd(x.cwiseMax(box.lower).cwiseMin(box.upper));
     };
-    if (const auto modal =
-            internal::FrfModalStart(model, dataset, problem.setup(), found, from, frf_cost)) {
-      from = modal->cwiseMax(box.lower).cwiseMin(box.upper);
+    // Fits from `from` (at most `iterations`), keeping the lower cost and
+    // counting every evaluation; a fit stopped at a lower limit than the
+    // options' is a trial, kept only where it converged.
+    const auto fit_from = [&](const Eigen::VectorXd& from, int iterations) {
+      LocalFit f = FitLocally(mine, o.method, inside(from), box, iterations, o.simplex, -1,
+                              o.stop_chi_square);
+      const long used = fits[k].evaluations + f.evaluations;
+      const bool usable = iterations == o.max_iterations || !f.at_limit;
+      if (usable && f.cost < fits[k].cost) fits[k] = std::move(f);
+      fits[k].evaluations = used;
+    };
+    // The dataset's initial values are fitted directly first; FRFs give the
+    // other starts, and an initial one whose fit does not pass the
+    // chi-square test within kDirectIterations, the modal stage.
+    const bool direct = !frfs || plan[k].origin == StartOrigin::kInitial;
+    const int trial = frfs ? std::min(o.max_iterations, internal::kDirectIterations)
+                           : o.max_iterations;
+    if (direct) {
+      fit_from(plan[k].x, trial);
+      if (!frfs || internal::FitsWithinNoise(mine, fits[k].cost)) return;
     }
-    fits[k] = FitLocally(mine, o.method, from,
-                         box, o.max_iterations, o.simplex, -1, o.stop_chi_square);
+    Dataset stage;
+    const auto& found = modes_in_frfs();
+    const auto modal =
+        found.empty() ? std::nullopt
+                      : internal::FrfModalStart(model, dataset, problem.setup(), found,
+                                                plan[k].x, &stage);
+    if (!modal) {  // no stage: the start itself, wholly
+      if (!direct || trial < o.max_iterations) fit_from(plan[k].x, o.max_iterations);
+      return;
+    }
+    fit_from(*modal, o.max_iterations);
+    if (internal::FitsWithinNoise(mine, fits[k].cost)) return;
+    const auto frf_cost = [&](const Eigen::VectorXd& x) { return internal::CostAt(mine, inside(x)); };
+    if (const auto other =
+            internal::OtherLabelOrderStart(model, problem.setup(), stage, plan[k].x, frf_cost)) {
+      fit_from(*other, o.max_iterations);
+    }
   });
   LocalFit best;
   for (size_t k = 0; k < plan.size(); ++k) {
@@ -420,11 +477,7 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
 // says the start may be to blame, not the model.
 FitQuality JudgeFit(const ModalResiduals& residuals, double cost, const Uncertainty& u,
                     const StartAgreement& agreement) {
-  int scales = 0;
-  const Dataset& d = residuals.dataset();
-  for (const Measurement* unit : Measurements()) {
-    for (int i = 0; i < unit->records().Items(d); ++i) scales += unit->Scales(d, i, residuals.options());
-  }
+  const int scales = internal::ShapeScales(residuals);
   FitQuality fit = u.ok ? AssessFit(cost, static_cast<int>(u.jacobian.rows()), u.rank, scales)
                         : AssessFit(cost, residuals.num_residuals(), residuals.setup().size(),
                                     scales);
@@ -601,6 +654,10 @@ void Identify(const Problem& problem, const IdentifyOptions& options, IdentifyRe
   s->cost = best.cost;
   s->parameters = setup.Decode(best.x.data());
   s->x = best.x;
+  if (!o.analysis) {
+    s->seconds = Seconds(t0);
+    return;
+  }
   s->uncertainty = AnalyzeUncertainty(residuals, setup, best.x, o.uncertainty);
   AddPracticalDependence(model, dataset, o, setup, best.x, &s->uncertainty);
   s->fit = JudgeFit(residuals, best.cost, s->uncertainty, s->start_agreement);

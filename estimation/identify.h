@@ -45,6 +45,10 @@ struct IdentifyOptions {
   // kMaxThreads; 0: one thread per core. Results are the same on any number.
   int threads = 0;
   static constexpr int kMaxThreads = 256;
+  // False: the fit alone (status, x, parameters, cost, the starts), without
+  // the uncertainty, estimates and mode fits after it: for a fit whose point
+  // is all its caller uses (the modal stage of an FRF start).
+  bool analysis = true;
 
   bool IsValid(std::string* why) const;
 };

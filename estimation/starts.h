@@ -23,6 +23,20 @@ StartAgreement AssessStarts(const ParameterSetup& setup,
                             const std::vector<double>& costs,
                             const std::vector<Eigen::VectorXd>& ends);
 
+// How many shapes the residuals fit a scale for (Measurement::Scales): each
+// takes a degree of freedom from AssessFit.
+int ShapeScales(const ModalResiduals& residuals);
+
+// Whether a fit of `cost` passes AssessFit's chi-square test (p >= kPoorFitP
+// on the residuals less the free coordinates and the shape scales): a start
+// whose fit does, needs no other route to the optimum.
+bool FitsWithinNoise(const ModalResiduals& residuals, double cost);
+
+// Levenberg-Marquardt iterations the FRF fit from a dataset's initial values
+// has to pass FitsWithinNoise before the modal stage is asked for a start
+// (estimation/frf_start.h); from values 15 % off the hammer test's takes 10.
+inline constexpr int kDirectIterations = 30;
+
 
 // MatchFrequencies' figures (docs/development.md, which a test keeps saying
 // them): a parameter moves with a label's misfit when a factor 2 in it moves
