@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Issue 36: ringid's FRF fit against SciPy's least_squares (trf) on a vectorised
-NumPy model of the same FRFs, in one run.
+"""ringid's FRF fit against SciPy's least_squares (trf) on a vectorised NumPy
+model of the same FRFs, in one run.
 
 The test: the standing hammer test of datasets/examples/hammer_spec.json
 (datasets/synthetic.h HammerTest: 4 point forces on the tread, 7
@@ -8,8 +8,8 @@ accelerometers on tread and rim, 28 FRFs x 491 lines, 5-250 Hz, 2 % noise,
 masses and inertias free), simulated by `ringid simulate --frf` from the
 example car tire, one dataset per seed. The start: every free parameter 15 %
 off the truth, up or down at random (the seed's), the same for both. One start
-each, each tool with its default derivatives: ringid's numeric (central
-differences), SciPy's '2-point'.
+each, each tool with its default derivatives: ringid's auto (exact for FRFs,
+dH = -H dZ H), SciPy's '2-point'.
 
 The NumPy model is independent of ringid's C++: the 7-dof M, C, K of the
 paper's eqs. (12) and (15) (with ERRATA.md; q = [x_b, z_b, theta_a, theta_b,
@@ -278,7 +278,7 @@ def main():
                  r["ringid_command"], r["scipy_seconds"], r["scipy_evaluations"],
                  r["scipy_chi2_dof"], r["scipy_status"], 1e3 * r["scipy_per_evaluation"],
                  r["scipy_seconds"] / r["ringid_seconds"]))
-    print("ringid s: identify's own seconds (one start, numeric derivatives: the fit and the "
+    print("ringid s: identify's own seconds (one start, default derivatives: the fit and the "
           "analysis after it);\n  module s: ringid.identify in this process; command s: the "
           "whole `ringid identify` process.")
     print("SciPy s: least_squares(method='trf'), '2-point' differences, on the NumPy model; "
