@@ -395,6 +395,9 @@ TEST(ReportTest, DocsDevelopmentMdStatesTheCodesFigures) {
       "bounds of a factor " + Figure(identify.bound_factor) + " around the start "
           "(`IdentifyOptions::bound_factor`",
       "(within " + Figure(kSameOptimumChiSquare) + ", `kSameOptimumChiSquare`)",
+      "for at most " + std::to_string(internal::kDirectIterations) +
+          " iterations (`kDirectIterations`",
+      "(p ≥ " + Figure(kPoorFitP) + " on the residuals less the free coordinates",
       "more than " + Figure(100 * kStartsDisagree) + " % (`kStartsDisagree`",
       "is above " + Figure(uncertainty.practical_relative_std) +
           " (`UncertaintyOptions::practical_relative_std`)",
