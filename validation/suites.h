@@ -31,7 +31,7 @@ struct SuiteOptions {
   // rolling: the conditions measured, m/s (0: standing; the others on a drum).
   std::vector<double> speeds = {0, 6, 12};
   // How every fit of the suite makes its Jacobians (speed: both, always).
-  Derivatives derivatives = Derivatives::kNumeric;
+  Derivatives derivatives = ResidualOptions().derivatives;
   // speed: each case and mode is timed in `speed_batches` batches (the median
   // per call is reported), together at least `speed_seconds_per_case` long.
   int speed_batches = 7;
