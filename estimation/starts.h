@@ -35,7 +35,7 @@ bool FitsWithinNoise(const ModalResiduals& residuals, double cost);
 // Levenberg-Marquardt iterations the FRF fit from a dataset's initial values
 // has to pass FitsWithinNoise before the modal stage is asked for a start
 // (estimation/frf_start.h); from values 15 % off the hammer test's takes 10.
-inline constexpr int kDirectIterations = 30;
+inline constexpr int kDirectIterations = 15;
 
 
 // MatchFrequencies' figures (docs/development.md, which a test keeps saying
