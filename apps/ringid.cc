@@ -305,12 +305,14 @@ int ReferenceCommand(int, char**) {
 
 const std::vector<Command>& Commands();
 
-// As any installation says it: where this one found its data is PREFIX/share/ringid.
+// As any installation says it: where this one found the paper's data (bench's
+// summary) is PREFIX/share/ringid/datasets/paper.
 int CommandsCommand(int, char**) {
   std::string md = CommandsMarkdown(Commands());
-  const std::string here = DataDir();
-  for (size_t at = md.find(here); at != std::string::npos; at = md.find(here, at)) {
-    md.replace(at, here.size(), "PREFIX/share/ringid");
+  const std::string here = DataDir() + "/datasets/paper";
+  const std::string any = "PREFIX/share/ringid/datasets/paper";
+  for (size_t at = md.find(here); at != std::string::npos; at = md.find(here, at + any.size())) {
+    md.replace(at, here.size(), any);
   }
   std::fputs(md.c_str(), stdout);
   return kExitOk;

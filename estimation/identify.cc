@@ -435,8 +435,10 @@ LocalFit FitFromStarts(const ModalModel& model, const Dataset& dataset, const Id
     // other starts, and an initial one whose fit does not pass the
     // chi-square test within kDirectIterations, the modal stage.
     const bool direct = !frfs || plan[k].origin == StartOrigin::kInitial;
-    const int trial = frfs ? std::min(o.max_iterations, internal::kDirectIterations)
-                           : o.max_iterations;
+    // The trial's limit is Levenberg-Marquardt's; the simplex has its own.
+    const int trial = frfs && o.method == Method::kLevenbergMarquardt
+                          ? std::min(o.max_iterations, internal::kDirectIterations)
+                          : o.max_iterations;
     if (direct) {
       fit_from(plan[k].x, trial);
       if (!frfs || internal::FitsWithinNoise(mine, fits[k].cost)) return;
