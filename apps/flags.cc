@@ -179,9 +179,14 @@ int SeedFlag() {
 
 bool ParseSet(ParameterValues* set, std::string* error) { return ReadFlag("set", set, error); }
 
+const std::vector<std::string>& DiagnoseFlags() {
+  static const std::vector<std::string> flags = {"level", "screen"};
+  return flags;
+}
+
 std::vector<std::string> CampaignOptions() {
   std::vector<std::string> options;
-  for (const std::string& name : Joined(ResultFlags(), {"level"})) {
+  for (const std::string& name : Joined(ResultFlags(), DiagnoseFlags())) {
     options.push_back(name + "=" + FlagText(name));
   }
   return options;

@@ -112,7 +112,10 @@ bool ReadFitDataset(const FitSettings& s, Dataset* d, std::string* error,
 // The flags that decide a fitting command's results (the options of
 // FitSettings less --threads).
 const std::vector<std::string>& ResultFlags();
-// Their values, NAME=VALUE, with --level: what a campaign's reports record.
+// diagnose's own flags, beyond FitFlags.
+const std::vector<std::string>& DiagnoseFlags();
+// Their values, NAME=VALUE, with DiagnoseFlags: what a campaign's reports
+// record.
 std::vector<std::string> CampaignOptions();
 
 // --output_dir: a campaign of `command` over --dataset (apps/campaign.h),

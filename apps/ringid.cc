@@ -362,7 +362,7 @@ const std::vector<Command>& Commands() {
        "which effect explains it, how far it shrinks; --effects puts effects in\n"
        "the baseline and the others are tried on top; with --output_dir, a\n"
        "campaign as for identify",
-       Joined(Joined(FitFlags(), {"level"}), kCampaignFlags), DiagnoseCommand},
+       Joined(Joined(FitFlags(), DiagnoseFlags()), kCampaignFlags), DiagnoseCommand},
       {"bench", "--suite=NAME",
        "the accuracy, conditioning and speed suites, on the paper's data installed\n"
        "with ringid, here in " + DataDir() + "/datasets/paper; speed times numeric\n"

@@ -13,6 +13,7 @@
 #include "estimation/problem.h"
 #include "estimation/residuals.h"
 #include "estimation/setup.h"
+#include "estimation/structure.h"
 #include "estimation/uncertainty.h"
 #include "model/effects.h"
 
@@ -144,13 +145,6 @@ std::map<std::string, double> MinimalDetectable(const RigidRingModel& baseline,
 
 namespace {
 
-// The coordinate of `fit` named `name` (-1 where none: `name` is not free).
-int CoordinateNamed(const IdentifyResult& fit, const std::string& name) {
-  const auto& names = fit.coordinate_names;
-  const auto at = std::find(names.begin(), names.end(), name);
-  return at == names.end() ? -1 : static_cast<int>(at - names.begin());
-}
-
 // A component of a structural invariance counts where it is above rounding
 // (as estimation/structure.cc reads them).
 constexpr double kInvariancePart = 1e-8;
@@ -167,8 +161,8 @@ bool InEffect(const Effect& effect, const std::string& name) {
   return false;
 }
 
-// A sizing parameter of the effect (coordinate k of its fit) moving with free
-// baseline parameters `by` along `direction`, which the data do not see.
+// A sizing parameter of the effect (coordinate k) moving with free baseline
+// parameters `by` along `direction`, which the data do not see.
 struct Absorption {
   int k;
   Eigen::VectorXd direction;
@@ -176,21 +170,25 @@ struct Absorption {
 };
 
 // Each sizing parameter of `effect` that takes part, with free baseline
-// parameters, in a structural invariance of `fit` that `dataset`'s exact
-// Jacobian at the fit confirms.
-std::vector<Absorption> Absorptions(const RigidRingModel& model, const Dataset& dataset,
-                                    const Effect& effect, const IdentifyResult& fit,
-                                    const ResidualOptions& options) {
+// parameters, in a structural invariance (`readable`, in `problem`'s
+// coordinates) that the problem's exact Jacobian at its start confirms.
+std::vector<Absorption> Absorptions(const Problem& problem, const Effect& effect,
+                                    const std::vector<Eigen::VectorXd>& readable) {
   std::vector<Absorption> out;
+  const int n = problem.num_coordinates();
   for (Param p : effect.parameters()) {
-    const int k = CoordinateNamed(fit, ParamName(p));
+    int k = -1;
+    for (int i = 0; i < n; ++i) {
+      if (problem.coordinate_name(i) == ParamName(p)) k = i;
+    }
     if (k < 0 || Info(p).domain == Domain::kPositive) continue;  // m_a sizes nothing
-    for (const Eigen::VectorXd& v : fit.uncertainty.structural_readable) {
+    for (const Eigen::VectorXd& v : readable) {
+      if (v.size() != n) continue;
       const double big = v.cwiseAbs().maxCoeff();
       if (!(std::abs(v[k]) > kInvariancePart * big)) continue;
       Absorption a{k, v, {}};
-      for (int i = 0; i < v.size(); ++i) {
-        const std::string& name = fit.coordinate_names[i];
+      for (int i = 0; i < n; ++i) {
+        const std::string name = problem.coordinate_name(i);
         if (std::abs(v[i]) > kInvariancePart * big && !InEffect(effect, name)) a.by.push_back(name);
       }
       if (!a.by.empty()) {
@@ -200,24 +198,29 @@ std::vector<Absorption> Absorptions(const RigidRingModel& model, const Dataset& 
     }
   }
   if (out.empty()) return out;
-  Dataset at = dataset;
-  for (const ParameterEstimate& e : fit.estimates) {
-    if (e.free) at.initial[e.param()] = e.value;
-  }
-  Status status;
-  const auto problem = Problem::Create(model, at, options, &status);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  if (!problem || problem->setup().size() != fit.x.size() ||
-      !problem->Evaluate(fit.x, &r, &J)) {
-    return {};
-  }
+  if (!problem.Evaluate(problem.start(), &r, &J)) return {};
   std::vector<Absorption> confirmed;
   for (Absorption& a : out) {
     const double own = (J.col(a.k) * a.direction[a.k]).norm();
     if ((J * a.direction).norm() <= kUnseenAlong * own) confirmed.push_back(std::move(a));
   }
   return confirmed;
+}
+
+// Absorptions at `fit`, a fit of `model` (the baseline with `effect`).
+std::vector<Absorption> Absorptions(const RigidRingModel& model, const Dataset& dataset,
+                                    const Effect& effect, const IdentifyResult& fit,
+                                    const ResidualOptions& options) {
+  Dataset at = dataset;
+  for (const ParameterEstimate& e : fit.estimates) {
+    if (e.free) at.initial[e.param()] = e.value;
+  }
+  Status status;
+  const auto problem = Problem::Create(model, at, options, &status);
+  if (!problem || problem->num_coordinates() != fit.x.size()) return {};
+  return Absorptions(*problem, effect, fit.uncertainty.structural_readable);
 }
 
 }  // namespace
@@ -230,6 +233,21 @@ std::map<std::string, std::vector<std::string>> AbsorbedBy(const RigidRingModel&
   std::map<std::string, std::vector<std::string>> out;
   for (const Absorption& a : Absorptions(model, dataset, effect, fit, options)) {
     out[fit.coordinate_names[a.k]] = a.by;
+  }
+  return out;
+}
+
+std::map<std::string, std::vector<std::string>> AbsorbedAt(const RigidRingModel& model,
+                                                           const Dataset& at,
+                                                           const Effect& effect,
+                                                           const ResidualOptions& options) {
+  std::map<std::string, std::vector<std::string>> out;
+  Status status;
+  const auto problem = Problem::Create(model, at, options, &status);
+  if (!problem) return out;
+  const StructuralFreedom freedom = FindStructuralFreedom(problem->residuals(), problem->start());
+  for (const Absorption& a : Absorptions(*problem, effect, freedom.readable)) {
+    out[problem->coordinate_name(a.k)] = a.by;
   }
   return out;
 }

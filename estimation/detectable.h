@@ -40,6 +40,13 @@ std::map<std::string, std::vector<std::string>> AbsorbedBy(const RigidRingModel&
                                                            const IdentifyResult& fit,
                                                            const ResidualOptions& options);
 
+// AbsorbedBy at the start of `at` (the baseline with `effect` seeded there),
+// without a fit: the invariances found there (estimation/structure.h).
+std::map<std::string, std::vector<std::string>> AbsorbedAt(const RigidRingModel& model,
+                                                           const Dataset& at,
+                                                           const Effect& effect,
+                                                           const ResidualOptions& options);
+
 // The baseline's initial values of `dataset` from `fit` (as AbsorbedBy): the
 // effect's absorbed parameters moved to 0 along their invariances, which the
 // baseline's parameters take up (the same model to first order), then the

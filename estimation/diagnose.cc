@@ -5,6 +5,7 @@
 #include "estimation/fit.h"
 #include "estimation/parallel.h"
 #include "estimation/problem.h"
+#include "estimation/score.h"
 #include "estimation/statistics.h"
 #include "estimation/uncertainty.h"
 
@@ -232,6 +233,10 @@ bool DiagnoseOptions::IsValid(std::string* why) const {
     *why = "detectable_likelihood_ratio must be finite and positive";
     return false;
   }
+  if (!(screen_significance > 0 && screen_significance <= 1)) {
+    *why = "screen_significance must lie in (0, 1]";
+    return false;
+  }
   if (!(absorbed_factor > 1)) {
     *why = "absorbed_factor must exceed 1";
     return false;
@@ -349,6 +354,51 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   return f;
 }
 
+// An effect the score test leaves out (Refitted): its score, what free
+// parameters absorb of it and its detectable sizes, without a fit.
+EffectFit ScreenedCandidate(const RigidRingModel& baseline, const Effect& effect,
+                            const Dataset& warm, const internal::EffectScore& score,
+                            const DiagnosisResult& r, const DiagnoseOptions& o) {
+  EffectFit f;
+  f.effect = &effect;
+  char b[320];
+  if (score.dof == 0) {
+    std::snprintf(b, sizeof b, "not refitted: the free parameters take up its whole first-order "
+                               "signature at the baseline's optimum");
+  } else {
+    std::snprintf(b, sizeof b,
+                  "not refitted: its score test at the baseline's optimum, %.3g on %d "
+                  "parameter(s), p = %.3g, is above the screen's %.3g, and no refitted effect's "
+                  "signature overlaps it",
+                  score.statistic, score.dof, score.p, o.screen_significance);
+  }
+  f.note = b;
+  const RigidRingModel model = baseline.With(&effect);
+  f.absorbed_by =
+      internal::AbsorbedAt(model, internal::EffectAtZero(effect, warm), effect, o.fit.residuals);
+  f.minimal_detectable =
+      internal::MinimalDetectable(baseline, effect, warm, r.baseline.uncertainty.jacobian,
+                                  r.baseline.uncertainty.rank, o, o.detectable_likelihood_ratio);
+  for (const auto& [name, by] : f.absorbed_by) f.minimal_detectable.erase(name);
+  return f;
+}
+
+// Which candidates to refit: those whose score test passes the screen, those
+// it cannot judge, and their rivals (SignatureOverlap above kRivalOverlap).
+std::vector<char> Refitted(const std::vector<internal::EffectScore>& scores, double level) {
+  const size_t n = scores.size();
+  std::vector<char> kept(n);
+  for (size_t k = 0; k < n; ++k) kept[k] = level >= 1 || !scores[k].ok || scores[k].p < level;
+  std::vector<char> refit = kept;
+  for (size_t k = 0; k < n; ++k) {
+    for (size_t j = 0; j < n && !refit[k]; ++j) {
+      refit[k] = kept[j] && scores[j].ok &&
+                 internal::SignatureOverlap(scores[k], scores[j]) >= kRivalOverlap;
+    }
+  }
+  return refit;
+}
+
 // The group of the verdict `best`: every fitted effect whose chi-square
 // differs from best's by less than the chi-square significant at o's level on
 // max(|difference in parameters|, 1) degrees of freedom (a likelihood-ratio
@@ -448,9 +498,9 @@ bool EffectFit::AbsorbedWhole() const {
   if (!effect || absorbed_by.empty()) return false;
   for (Param p : effect->parameters()) {
     const std::string name = ParamName(p);
-    if (Info(p).domain != Domain::kPositive && values.count(name) && !absorbed_by.count(name)) {
-      return false;
-    }
+    // A fit's values are its free parameters; unfitted, every one counts.
+    const bool sizes = Info(p).domain != Domain::kPositive && (!ok || values.count(name));
+    if (sizes && !absorbed_by.count(name)) return false;
   }
   return true;
 }
@@ -500,12 +550,25 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     const int n = static_cast<int>(candidates.size());
     r->ranking.assign(n, EffectFit{});
     fits.assign(n, IdentifyResult{});
-    // Candidates on o.fit.threads, each fit within one.
+    // Each candidate's score test, then the fits of those it keeps; on
+    // o.fit.threads, each within one.
+    std::vector<internal::EffectScore> scores(n);
+    internal::ParallelFor(n, o.fit.threads, [&](int k) {
+      scores[k] = internal::ScoreEffect(baseline, *candidates[k], warm, o.fit.residuals,
+                                        o.fit.uncertainty.rank_tolerance);
+    });
+    const std::vector<char> refit = Refitted(scores, o.screen_significance);
     DiagnoseOptions one_thread = o;
     one_thread.fit.threads = 1;
     internal::ParallelFor(n, o.fit.threads, [&](int k) {
       r->ranking[k] =
-          FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k]);
+          refit[k] ? FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k])
+                   : ScreenedCandidate(baseline, *candidates[k], warm, scores[k], *r, o);
+      if (scores[k].ok) {
+        r->ranking[k].score_statistic = scores[k].statistic;
+        r->ranking[k].score_dof = scores[k].dof;
+        r->ranking[k].score_p = scores[k].p;
+      }
       steps.Done();
     });
     int better = -1;
@@ -563,7 +626,8 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     const EffectFit& x = r->ranking[a];
     const EffectFit& y = r->ranking[b];
     if (x.ok != y.ok) return x.ok;
-    return x.aic < y.aic;
+    if (x.ok) return x.aic < y.aic;
+    return x.score_p < y.score_p;  // the unfitted by their score
   });
   std::vector<EffectFit> ranking;
   std::vector<IdentifyResult> ranked_fits;
@@ -588,7 +652,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
 
 std::string DiagnosisResult::FullReport() const {
   std::ostringstream o;
-  char line[256];
+  char line[512];
   if (!status.ok()) return "ringid diagnose: FAILED: " + status.message + "\n";
   o << "ringid diagnose: verdict " << EffectName(verdict);
   if (!indistinguishable.empty()) {
@@ -627,10 +691,6 @@ std::string DiagnosisResult::FullReport() const {
   for (const std::string& a : absorbed) o << "  absorbed: " << a << "\n";
   o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2  vs verdict (threshold)\n";
   for (const EffectFit& f : ranking) {
-    if (!f.ok) {
-      o << "  " << EffectName(f.effect) << ": not fitted: " << f.note << "\n";
-      continue;
-    }
     char versus[48] = "-";
     if (std::isfinite(f.chi2_above_verdict)) {
       std::snprintf(versus, sizeof versus, "%+.2f (%.2f)", f.chi2_above_verdict, f.group_threshold);
@@ -639,6 +699,7 @@ std::string DiagnosisResult::FullReport() const {
                   f.chi2, f.lrt_p, f.aic, 100 * f.shrink,
                   f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-", versus,
                   f.supported ? "  supported" : "");
+    if (!f.ok) std::snprintf(line, sizeof line, "  %s: %s\n", EffectName(f.effect), f.note.c_str());
     o << line;
     for (const auto& [name, by] : f.absorbed_by) {
       o << "    " << name << ": absorbed whatever its size by the free";

@@ -27,6 +27,12 @@ struct DiagnoseOptions {
   // their numbers of parameters differ (at least one), cannot be told apart
   // from it on these data.
   double effect_significance = 1e-3;
+  // Only the effects whose score test at the baseline's optimum (the pull of
+  // the data on their size at 0, estimation/score.h) has a p-value below
+  // this are refitted, with their rivals: the effects whose signatures
+  // overlap theirs (canonical correlation above kRivalOverlap). The others
+  // keep their score and detectable sizes. 1 refits every effect.
+  double screen_significance = 0.05;
   // An effect too small to name is stated with the smallest size whose
   // signature a re-calibration of the baseline cannot absorb: the size at
   // which the likelihood ratio against the re-calibrated baseline reaches this.
@@ -49,11 +55,20 @@ struct DiagnoseOptions {
 
 inline constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN();
 
+// Two effects whose score signatures share a direction this closely (the
+// largest canonical correlation of their parts outside the baseline's span)
+// are rivals: one may fit what the other's score shows.
+inline constexpr double kRivalOverlap = 0.5;
+
 struct EffectFit {
   const Effect* effect = nullptr;
   bool ok = false;
   std::string note;                      // why not, when !ok
   int extra_parameters = 0;
+  // The score test at the baseline's optimum (estimation/score.h); NaN
+  // where the effect's model could not be evaluated there.
+  double score_statistic = kNotAvailable, score_p = kNotAvailable;
+  int score_dof = 0;
   // NaN (null in reports) for an effect that was not fitted.
   double chi2 = kNotAvailable;                         // 2 x cost
   double lrt_statistic = kNotAvailable, lrt_p = kNotAvailable;  // against the baseline
@@ -100,6 +115,9 @@ struct EffectFit {
     a->Visit("absorbed_by", &absorbed_by);
     a->Visit("where", &where);
     a->Group("evidence", [&](auto* g) {
+      g->Visit("score_statistic", &score_statistic);
+      g->Visit("score_dof", &score_dof);
+      g->Visit("score_p_value", &score_p);
       g->Visit("chi2", &chi2);
       g->Visit("likelihood_ratio", &lrt_statistic);
       g->Visit("extra_parameters", &extra_parameters);

@@ -51,8 +51,13 @@ bool DiagnoseOptionsOf(const DiagnoseSettings& s, int jobs, DiagnoseOptions* o,
     *error = "--level: must lie in (0, 1)";
     return false;
   }
+  if (!(s.screen > 0 && s.screen <= 1)) {
+    *error = "--screen: must lie in (0, 1]";
+    return false;
+  }
   *o = DiagnoseOptions{};
   o->effect_significance = s.level;
+  o->screen_significance = s.screen;
   return FitOptionsOf(s.fit, jobs, &o->fit, error);
 }
 

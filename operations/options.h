@@ -131,6 +131,7 @@ struct FitSettings {
 struct DiagnoseSettings {
   FitSettings fit;
   double level = DiagnoseOptions().effect_significance;
+  double screen = DiagnoseOptions().screen_significance;
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -138,6 +139,10 @@ struct DiagnoseSettings {
     a->Visit("level", &level,
              "significance level of each effect's likelihood-ratio test and of the verdict's "
              "group (the default is Bonferroni-safe for six candidates)");
+    a->Visit("screen", &screen,
+             "refit only the effects whose score test at the baseline's optimum has a p-value "
+             "below this, and the effects whose signatures overlap theirs; 1 refits every "
+             "effect");
   }
 };
 

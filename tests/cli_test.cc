@@ -1463,7 +1463,7 @@ TEST(CliTest, ALongSingleRunShowsProgressOnATerminal) {
         "--threads=1" + rolling}},
       {"diagnose",
        {"--derivatives=analytic --threads=1 --starts=1" + tire, "--threads=1" + tire,
-        "--threads=1" + rolling}}};
+        "--threads=1" + rolling, "--threads=1 --screen=1" + rolling}}};
   for (const auto& [command, runs] : commands) {
     bool long_run = false;
     for (size_t k = 0; k < runs.size() && !long_run; ++k) {

@@ -834,12 +834,12 @@ TEST(HtmlReportTest, IdentifyDrawsTheBandOfClassYesFromTheClassifiersThreshold) 
 }
 
 // diagnose --level sets the level of every likelihood-ratio test; each
-// ranking row carries its threshold, the chi-square quantile at that level
+// ranking row (every effect refitted: --screen=1) carries its threshold, the chi-square quantile at that level
 // (tables: 6.635, 9.210, 11.345 for 1-3 degrees of freedom at 0.01), and the
 // page says the level it was drawn at. Out of (0, 1) it is refused.
 TEST(HtmlReportTest, DiagnoseThresholdsAreTheReportsAtItsLevel) {
   RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
-  const Made m = Make("diagnose_level", "diagnose --level=0.01 --derivatives=analytic --dataset=" +
+  const Made m = Make("diagnose_level", "diagnose --level=0.01 --screen=1 --derivatives=analytic --dataset=" +
                                             Simulate("lug", "--effects=lug_coupling --shift=0.05"));
   EXPECT_EQ(m.report["verdict"]["level"].get<double>(), 0.01);
   const std::map<int, double> table = {{1, 6.635}, {2, 9.210}, {3, 11.345}};
