@@ -1,14 +1,17 @@
 // The frf suite (validation/suites.h): synthetic tires struck standing, and
 // on a drum, fitted to their FRFs with the masses free from initial values
 // scattered within a factor of the truth (issue 36).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <random>
 #include <sstream>
 
 #include "datasets/synthetic.h"
 #include "estimation/identify.h"
+#include "estimation/parallel.h"
 #include "validation/suites.h"
 
 namespace ringid {
@@ -47,47 +50,74 @@ bool ClassedYes(const IdentifyResult& r, Param p) {
   return false;
 }
 
+// One tire's fits: from the scattered initial values, and from the truth.
+struct TireFits {
+  Parameters truth;
+  Dataset d;
+  IdentifyResult f;
+  bool truth_ok = false;  // the truth-started fit, its chi-square
+  double truth_chi2 = 0;
+};
+
+// Tires fitted at once: each fit on one thread, kTireBatch tires drawn
+// (in order: the suite is the same on any number of threads) and held at a time.
+constexpr int kTireBatch = 8;
+
 Status RunVariant(const SuiteOptions& o, const std::vector<double>& speeds, FrfSuite* suite,
                   FrfVariant* v, std::mt19937_64* rng, int* done, int total) {
+  IdentifyOptions io;
+  io.residuals.derivatives = o.derivatives;
+  io.threads = 1;
+  io.starts = o.starts;
   std::map<Param, CoverageTally> tallies;
   double fit_seconds = 0;
-  for (int k = 0; k < o.replicates; ++k) {
-    Parameters truth;
-    Dataset d;
-    std::string why;
-    for (int draw = 0;; ++draw) {
-      truth = ScatteredTire(rng);
-      if (FrfTire(truth, speeds, suite->frf_noise, o.start_factor, rng, &d, &why)) break;
-      if (draw == 100) return Status::Failed("no plausible tire in 100 draws: " + why);
+  std::mutex mutex;
+  for (int begin = 0; begin < o.replicates; begin += kTireBatch) {
+    std::vector<TireFits> tires(std::min(kTireBatch, o.replicates - begin));
+    for (size_t k = 0; k < tires.size(); ++k) {
+      std::string why;
+      for (int draw = 0;; ++draw) {
+        tires[k].truth = ScatteredTire(rng);
+        if (FrfTire(tires[k].truth, speeds, suite->frf_noise, o.start_factor, rng, &tires[k].d,
+                    &why)) {
+          break;
+        }
+        if (draw == 100) return Status::Failed("no plausible tire in 100 draws: " + why);
+      }
+      tires[k].d.name = v->name + "_" + std::to_string(begin + k);
     }
-    d.name = v->name + "_" + std::to_string(k);
-    IdentifyOptions io;
-    io.residuals.derivatives = o.derivatives;
-    io.threads = 1;
-    io.starts = o.starts;
-    IdentifyResult f, at_truth;
-    Identify(RigidRingModel(), d, io, &f);
-    if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);
-    Dataset t = d;
-    for (auto& [q, value] : t.initial) value = truth[q];
-    IdentifyOptions one = io;
-    one.starts = 1;
-    Identify(RigidRingModel(), t, one, &at_truth);
-    ++v->tires;
-    if (!f.status.ok()) {
-      ++v->failed_fits;
-    } else {
+    internal::ParallelFor(static_cast<int>(tires.size()), 0, [&](int k) {
+      TireFits& t = tires[k];
+      Identify(RigidRingModel(), t.d, io, &t.f);
+      Dataset at = t.d;
+      for (auto& [q, value] : at.initial) value = t.truth[q];
+      IdentifyOptions one = io;
+      one.starts = 1;
+      IdentifyResult at_truth;
+      Identify(RigidRingModel(), at, one, &at_truth);
+      t.truth_ok = at_truth.status.ok();
+      t.truth_chi2 = at_truth.fit.chi_square;
+      std::lock_guard<std::mutex> lock(mutex);
+      if (o.on_case) o.on_case(++*done, total);
+    });
+    for (const TireFits& t : tires) {
+      const IdentifyResult& f = t.f;
+      if (f.status.invalid_input()) return Status::Failed("identify: " + f.status.message);
+      ++v->tires;
+      if (!f.status.ok()) {
+        ++v->failed_fits;
+        continue;
+      }
       fit_seconds += f.seconds;
       // A truth-started fit that fails gives no reference: not counted as found.
-      v->best_found += at_truth.status.ok() && f.fit.chi_square <= at_truth.fit.chi_square + 1;
-      v->masses_within += Relative(f, Param::m_b, truth) <= suite->mass_tolerance &&
-                          Relative(f, Param::I_by, truth) <= suite->mass_tolerance;
+      v->best_found += t.truth_ok && f.fit.chi_square <= t.truth_chi2 + 1;
+      v->masses_within += Relative(f, Param::m_b, t.truth) <= suite->mass_tolerance &&
+                          Relative(f, Param::I_by, t.truth) <= suite->mass_tolerance;
       v->contact_separated += ClassedYes(f, Param::K_cx) && ClassedYes(f, Param::sigma_cx);
       for (const ParameterEstimate& e : f.estimates) {
-        if (e.free) tallies[e.param()].Add(e, truth[e.param()], true);
+        if (e.free) tallies[e.param()].Add(e, t.truth[e.param()], true);
       }
     }
-    if (o.on_case) o.on_case(++*done, total);
   }
   long inside = 0;
   for (const auto& [p, t] : tallies) {
