@@ -304,13 +304,13 @@ EffectFit FitCandidate(const RigidRingModel& baseline, const Effect& effect, con
   const IdentifyResult s = FitEffect(model, effect, warm, dataset, r.baseline.cost, o);
   *fitted = s;
   if (!s.status.ok()) {
-    f.note = s.status.message;
+    f.note = "not fitted: " + s.status.message;
     return f;
   }
   if (s.cost > r.baseline.cost + kEffectFitSlack) {
     char b[240];
     std::snprintf(b, sizeof b,
-                  "a failed fit, not evidence: from every seed it ended above the baseline's "
+                  "not fitted: a failed fit, not evidence: from every seed it ended above the baseline's "
                   "chi-square (%.6g against %.6g), which the effect at 0 reproduces",
                   2 * s.cost, r.chi2_before);
     f.note = b;
@@ -363,8 +363,8 @@ EffectFit ScreenedCandidate(const RigidRingModel& baseline, const Effect& effect
   f.effect = &effect;
   char b[320];
   if (score.dof == 0) {
-    std::snprintf(b, sizeof b, "not refitted: the free parameters take up its whole first-order "
-                               "signature at the baseline's optimum");
+    std::snprintf(b, sizeof b, "not refitted: at the baseline's optimum it has no first-order "
+                               "signature beyond what the free parameters already do");
   } else {
     std::snprintf(b, sizeof b,
                   "not refitted: its score test at the baseline's optimum, %.3g on %d "
@@ -374,8 +374,11 @@ EffectFit ScreenedCandidate(const RigidRingModel& baseline, const Effect& effect
   }
   f.note = b;
   const RigidRingModel model = baseline.With(&effect);
-  f.absorbed_by =
-      internal::AbsorbedAt(model, internal::EffectAtZero(effect, warm), effect, o.fit.residuals);
+  Dataset at = warm;  // away from a kink at 0 (a hub released at s_h = 0), as MinimalDetectable
+  for (Param p : effect.parameters()) {
+    if (!at.known.count(p)) at.initial[p] = TypicalScale(p);
+  }
+  f.absorbed_by = internal::AbsorbedAt(model, at, effect, o.fit.residuals);
   f.minimal_detectable =
       internal::MinimalDetectable(baseline, effect, warm, r.baseline.uncertainty.jacobian,
                                   r.baseline.uncertainty.rank, o, o.detectable_likelihood_ratio);
@@ -557,20 +560,48 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
       scores[k] = internal::ScoreEffect(baseline, *candidates[k], warm, o.fit.residuals,
                                         o.fit.uncertainty.rank_tolerance);
     });
-    const std::vector<char> refit = Refitted(scores, o.screen_significance);
+    // A first-order test reads a gap an effect could close near size 0; a
+    // baseline that misses by far more than the noise (chi-square per degree
+    // of freedom above kScreenReducedChiSquare) is no such place, and every
+    // effect is refitted.
+    const bool local = r->chi2_before <= kScreenReducedChiSquare * std::max(r->dof, 1);
+    const std::vector<char> refit = Refitted(scores, local ? o.screen_significance : 1.0);
     DiagnoseOptions one_thread = o;
     one_thread.fit.threads = 1;
+    const auto fit = [&](int k) {
+      r->ranking[k] = FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k]);
+    };
     internal::ParallelFor(n, o.fit.threads, [&](int k) {
-      r->ranking[k] =
-          refit[k] ? FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k])
-                   : ScreenedCandidate(baseline, *candidates[k], warm, scores[k], *r, o);
-      if (scores[k].ok) {
-        r->ranking[k].score_statistic = scores[k].statistic;
-        r->ranking[k].score_dof = scores[k].dof;
-        r->ranking[k].score_p = scores[k].p;
+      if (refit[k]) {
+        fit(k);
+      } else {
+        r->ranking[k] = ScreenedCandidate(baseline, *candidates[k], warm, scores[k], *r, one_thread);
       }
       steps.Done();
     });
+    // The screen must not shrink the verdict's group (Group): a screened
+    // effect whose score, its likelihood ratio to first order, comes within
+    // the group's threshold of the best supported effect's is fitted too.
+    const EffectFit* best = nullptr;  // as Verdict picks it
+    for (const EffectFit& f : r->ranking) {
+      if (f.supported && (!best || f.aic < best->aic)) best = &f;
+    }
+    std::vector<int> near;
+    for (int k = 0; best && k < n; ++k) {
+      if (refit[k] || !scores[k].ok || scores[k].dof == 0) continue;
+      const int dof = std::max(std::abs(scores[k].dof - best->extra_parameters), 1);
+      if (scores[k].statistic > best->lrt_statistic - ChiSquareCritical(o.effect_significance, dof)) {
+        near.push_back(k);
+      }
+    }
+    internal::ParallelFor(static_cast<int>(near.size()), o.fit.threads,
+                          [&](int i) { fit(near[i]); });
+    for (int k = 0; k < n; ++k) {
+      if (!scores[k].ok) continue;
+      r->ranking[k].score_statistic = scores[k].statistic;
+      r->ranking[k].score_dof = scores[k].dof;
+      r->ranking[k].score_p = scores[k].p;
+    }
     int better = -1;
     for (int k = 0; k < n; ++k) {
       const IdentifyResult& s = fits[k];
@@ -619,7 +650,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   r->where = std::move(table.modes);
   if (!table.others.empty()) r->where_else = std::move(table.others);
 
-  // Which effect: ranked by AIC.
+  // Which effect: the fitted ranked by AIC, then the screened by their score.
   std::vector<int> order(r->ranking.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -627,7 +658,9 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     const EffectFit& y = r->ranking[b];
     if (x.ok != y.ok) return x.ok;
     if (x.ok) return x.aic < y.aic;
-    return x.score_p < y.score_p;  // the unfitted by their score
+    // The unfitted by their score's p-value, those without one last.
+    if (std::isnan(x.score_p) != std::isnan(y.score_p)) return std::isnan(y.score_p);
+    return x.score_p < y.score_p;
   });
   std::vector<EffectFit> ranking;
   std::vector<IdentifyResult> ranked_fits;

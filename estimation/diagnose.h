@@ -30,8 +30,10 @@ struct DiagnoseOptions {
   // Only the effects whose score test at the baseline's optimum (the pull of
   // the data on their size at 0, estimation/score.h) has a p-value below
   // this are refitted, with their rivals: the effects whose signatures
-  // overlap theirs (canonical correlation above kRivalOverlap). The others
-  // keep their score and detectable sizes. 1 refits every effect.
+  // overlap theirs (canonical correlation above kRivalOverlap) and any whose
+  // score comes within the verdict's group threshold. The others keep their
+  // score and detectable sizes. 1 refits every effect, as does a baseline
+  // that misses by far more than the noise (kScreenReducedChiSquare).
   double screen_significance = 0.05;
   // An effect too small to name is stated with the smallest size whose
   // signature a re-calibration of the baseline cannot absorb: the size at
@@ -59,6 +61,12 @@ inline constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN()
 // largest canonical correlation of their parts outside the baseline's span)
 // are rivals: one may fit what the other's score shows.
 inline constexpr double kRivalOverlap = 0.5;
+// The screen applies where the calibrated baseline's chi-square per degree of
+// freedom is at most this: where it misses by more, an effect's pull at size
+// 0 says little of what it does at its size (seen: a lug coupling that closes
+// a chi-square of 2892 on 63 degrees of freedom, and an axle torsion whose
+// mode crosses the band's first lines, each scored 0 at the baseline).
+inline constexpr double kScreenReducedChiSquare = 2.0;
 
 struct EffectFit {
   const Effect* effect = nullptr;
@@ -87,7 +95,8 @@ struct EffectFit {
   // re-calibration of the baseline cannot absorb (likelihood ratio 20).
   std::map<std::string, double> minimal_detectable;
   // Per effect parameter that free baseline parameters absorb whatever its
-  // size (a structural invariance of the effect's fit that the data's
+  // size (a structural invariance, at the effect's fit or for a screened
+  // effect at its typical sizes, that the data's
   // Jacobian confirms: a sensor mass on FRFs and free m_b, I_by, I_bx,
   // I_bz), those parameters (internal::AbsorbedBy); such a parameter has no
   // minimal_detectable. An effect whose every sizing parameter is absorbed
@@ -150,7 +159,8 @@ struct DiagnosisResult {
   // declared prior where there is no verdict.
   std::vector<std::string> absorbed;
   std::optional<double> held_out_before;
-  // Which effect, ranked by AIC.
+  // Which effect: the fitted ranked by AIC, then those the score test
+  // screened out (fitted false) by its p-value.
   std::vector<EffectFit> ranking;
   const Effect* verdict = nullptr;  // none
   std::vector<const Effect*> indistinguishable;
@@ -191,10 +201,12 @@ struct DiagnosisResult {
 
 // `baseline`: the model calibrated first (usually RigidRingModel(), the
 // standing model) by the multistart of Identify, with no prior but the
-// dataset's own; each effect of the catalogue it lacks is then fitted on top,
-// from the baseline's optimum with the effect at 0 and at the best of a scan
-// of sizes. Nothing depends on the dataset's initial values beyond the
-// baseline's starts.
+// dataset's own; each effect of the catalogue it lacks is then scored at the
+// baseline's optimum (estimation/score.h), and those the score keeps
+// (screen_significance) and their rivals are fitted on top, from the
+// baseline's optimum with the effect at 0 and at the best of a scan of sizes.
+// Nothing depends on the dataset's initial values beyond the baseline's
+// starts.
 void Diagnose(const RigidRingModel& baseline, const Dataset& dataset,
               const DiagnoseOptions& options, DiagnosisResult* report);
 

@@ -81,8 +81,8 @@ EffectScore ScoreEffect(const RigidRingModel& baseline, const Effect& effect, co
   for (int j = 0; j < S.cols(); ++j) {
     if (outside.col(j).norm() > kAbsorbedPart * S.col(j).norm()) seen.push_back(j);
   }
-  Eigen::MatrixXd kept(S.rows(), seen.size());
-  for (size_t j = 0; j < seen.size(); ++j) kept.col(j) = outside.col(seen[j]);
+  Eigen::MatrixXd kept(S.rows(), seen.size());  // each column scaled to 1 for the rank
+  for (size_t j = 0; j < seen.size(); ++j) kept.col(j) = outside.col(seen[j]).normalized();
   out.signature = Span(kept, rank_tolerance);
   out.dof = static_cast<int>(out.signature.cols());
   out.ok = true;

@@ -6,12 +6,12 @@
 # commit they were measured on.
 # Usage: bash scripts/benchmarks.sh [SECTION...]   (default: every section)
 #   sections: paper synthetic conditioning diagnosis rolling speed forces static
-#             frf extract google_benchmark frf_vs_scipy
+#             frf extract google_benchmark frf_vs_scipy diagnose_hammer
 #   e.g. bash scripts/benchmarks.sh paper conditioning   (a minute)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 all=(paper conditioning speed static forces diagnosis synthetic rolling frf extract
-     google_benchmark frf_vs_scipy)
+     google_benchmark frf_vs_scipy diagnose_hammer)
 sections=("${@:-${all[@]}}")
 targets=(ringid)
 case " ${sections[*]} " in *" google_benchmark "*) targets+=(ringid_benchmarks) ;; esac
@@ -34,8 +34,8 @@ for section in "${sections[@]}"; do
     start=$SECONDS
     $command --benchmark_format=console 2> /dev/null | sed -n '/^---/,$p' > "$body.txt"
     { echo '```'; cat "$body.txt"; echo '```'; } > "$body"
-  elif [ "$section" = frf_vs_scipy ]; then
-    command="/usr/bin/python3 benchmarks/frf_vs_scipy.py"
+  elif [ -f "benchmarks/$section.py" ]; then  # frf_vs_scipy, diagnose_hammer
+    command="/usr/bin/python3 benchmarks/$section.py"
     start=$SECONDS
     { echo '```'; $command; echo '```'; } > "$body"
   else

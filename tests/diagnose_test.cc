@@ -395,56 +395,95 @@ TEST(DiagnoseTest, OnFrfsALugCouplingIsNamedAboveItsStatedDetectableSizeAndNotBe
 }
 
 // The score test reads, from derivatives at the baseline's optimum, what a
-// refit of each effect then finds: on a hammer test with a lug coupling
-// withheld at twice its stated size and every effect refitted (screen 1),
-// each effect's score statistic is its likelihood ratio to first order
-// (Rao 1948; both chi-square on the same degrees of freedom under size 0).
+// refit of each effect then finds: on a hammer test with a lug coupling (two-
+// sided) or a contact yaw stiffness (k_cpsi >= 0: one-sided) withheld at
+// twice its stated size and every effect refitted (screen 1), each effect's
+// score statistic is its likelihood ratio to first order (Rao 1948), and the
+// withheld one's is decisive. A one-sided score pulled the wrong way is 0, and
+// a refit then finds nothing either.
 TEST(DiagnoseTest, TheScoreTestIsTheLikelihoodRatioAFitFinds) {
-  const Dataset clean = HammerWithheld(nullptr, Param::k_xy, 0, true, 4);
-  const DiagnosisResult none = DiagnoseHammer(clean);
-  const double detectable = FitOf(none, "lug_coupling")->minimal_detectable.at("k_xy");
-  DiagnoseOptions o;
-  o.held_out = false;
-  o.fit.starts = 1;
-  o.screen_significance = 1;
-  DiagnosisResult r;
-  Diagnose(RigidRingModel(),
-           HammerWithheld("lug_coupling", Param::k_xy, 2 * detectable, true, 4), o, &r);
-  ASSERT_TRUE(r.status.ok()) << r.status.message;
-  ASSERT_STREQ(EffectName(r.verdict), "lug_coupling") << r.explanation;
-  int compared = 0;
-  for (const EffectFit& f : r.ranking) {
-    ASSERT_TRUE(f.ok) << EffectName(f.effect) << ": " << f.note;
-    if (f.AbsorbedWhole()) continue;
-    EXPECT_NEAR(f.score_statistic, f.lrt_statistic, 0.1 * f.lrt_statistic + 1)
-        << EffectName(f.effect);
-    ++compared;
-  }
-  EXPECT_GE(compared, 4);
-}
-
-// Screening changes what is refitted, not what is concluded: on the paper's
-// tire with a withheld lug coupling (modes) and with a withheld soft hub, the
-// default screen names the effect of refitting every one, with the same
-// chi-square, and refits fewer.
-TEST(DiagnoseTest, TheScreenKeepsTheVerdictOfRefittingEveryEffect) {
-  for (const auto& [effect, p, value] :
-       {std::tuple{"lug_coupling", Param::k_xy, 1.5e5}, std::tuple{"hub_compliance", Param::s_h, 2e-7}}) {
-    const Dataset d = Withheld(effect, p, value, 3);
+  const DiagnosisResult none = DiagnoseHammer(HammerWithheld(nullptr, Param::k_xy, 0, true, 4));
+  for (const auto& [effect, p] : {std::pair{"lug_coupling", Param::k_xy},
+                                  std::pair{"contact_yaw_stiffness", Param::k_cpsi}}) {
+    const double detectable = FitOf(none, effect)->minimal_detectable.at(ParamName(p));
     DiagnoseOptions o;
     o.held_out = false;
+    o.fit.starts = 1;
+    o.screen_significance = 1;
+    DiagnosisResult r;
+    Diagnose(RigidRingModel(), HammerWithheld(effect, p, 2 * detectable, true, 4), o, &r);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    const auto& group = r.indistinguishable;  // empty where the verdict stands alone
+    EXPECT_TRUE(r.verdict == FindEffect(effect) ||
+                std::find(group.begin(), group.end(), FindEffect(effect)) != group.end())
+        << r.explanation;
+    EXPECT_LT(FitOf(r, effect)->score_p, 1e-3) << effect;
+    int compared = 0;
+    for (const EffectFit& f : r.ranking) {
+      ASSERT_TRUE(f.ok) << EffectName(f.effect) << ": " << f.note;
+      if (f.AbsorbedWhole()) continue;
+      EXPECT_NEAR(f.score_statistic, f.lrt_statistic, 0.1 * f.lrt_statistic + 1)
+          << effect << ": " << EffectName(f.effect);
+      if (f.score_statistic == 0) EXPECT_LT(f.lrt_statistic, 1) << EffectName(f.effect);
+      ++compared;
+    }
+    EXPECT_GE(compared, 4) << effect;
+  }
+}
+
+// Screening changes what is refitted, not what is concluded: on the hammer
+// tests above (two effects, each at twice its stated size, and none), the
+// default screen refits fewer effects and names the same verdict, group and
+// supported effects as refitting every one. A baseline that misses by far
+// more than the noise (the paper's tire with a lug coupling of 1.5e5 N/m:
+// chi-square 2892 on 63 degrees of freedom) has every effect refitted.
+TEST(DiagnoseTest, TheScreenKeepsTheVerdictOfRefittingEveryEffect) {
+  const auto supported = [](const DiagnosisResult& r) {
+    std::vector<const Effect*> out;
+    for (const EffectFit& f : r.ranking) {
+      if (f.supported) out.push_back(f.effect);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto screened_out = [](const DiagnosisResult& r) {
+    int n = 0;
+    for (const EffectFit& f : r.ranking) n += f.note.rfind("not refitted", 0) == 0;
+    return n;
+  };
+  const DiagnosisResult none = DiagnoseHammer(HammerWithheld(nullptr, Param::k_xy, 0, true, 4));
+  std::vector<Dataset> tests = {HammerWithheld(nullptr, Param::k_xy, 0, true, 4)};
+  for (const auto& [effect, p] : {std::pair{"lug_coupling", Param::k_xy},
+                                  std::pair{"contact_yaw_stiffness", Param::k_cpsi}}) {
+    const double detectable = FitOf(none, effect)->minimal_detectable.at(ParamName(p));
+    tests.push_back(HammerWithheld(effect, p, 2 * detectable, true, 4));
+  }
+  for (const Dataset& d : tests) {
+    DiagnoseOptions o;
+    o.held_out = false;
+    o.fit.starts = 1;
     DiagnosisResult screened, every;
     Diagnose(RigidRingModel(), d, o, &screened);
     o.screen_significance = 1;
     Diagnose(RigidRingModel(), d, o, &every);
-    ASSERT_TRUE(screened.status.ok() && every.status.ok()) << effect;
-    ASSERT_STREQ(EffectName(every.verdict), effect) << every.explanation;
+    ASSERT_TRUE(screened.status.ok() && every.status.ok());
     EXPECT_EQ(screened.verdict, every.verdict) << screened.explanation;
-    EXPECT_NEAR(FitOf(screened, effect)->chi2, FitOf(every, effect)->chi2, 1e-3 * FitOf(every, effect)->chi2);
-    int refitted = 0;
-    for (const EffectFit& f : screened.ranking) refitted += f.ok;
-    EXPECT_LT(refitted, static_cast<int>(every.ranking.size())) << effect;
+    EXPECT_EQ(screened.indistinguishable, every.indistinguishable) << screened.explanation;
+    EXPECT_EQ(supported(screened), supported(every)) << screened.explanation;
+    EXPECT_GT(screened_out(screened), 0) << screened.FullReport();
+    EXPECT_EQ(screened_out(every), 0);
+    for (const EffectFit& f : screened.ranking) {
+      EXPECT_FALSE(std::isnan(f.score_p)) << EffectName(f.effect);
+    }
   }
+  DiagnoseOptions o;
+  o.held_out = false;
+  DiagnosisResult gross;
+  Diagnose(RigidRingModel(), Withheld("lug_coupling", Param::k_xy, 1.5e5, 3), o, &gross);
+  ASSERT_TRUE(gross.status.ok()) << gross.status.message;
+  ASSERT_GT(gross.chi2_before, kScreenReducedChiSquare * gross.dof);
+  EXPECT_EQ(screened_out(gross), 0) << gross.FullReport();
+  EXPECT_STREQ(EffectName(gross.verdict), "lug_coupling") << gross.explanation;
 }
 
 // A sensor mass fitted with the masses free sits anywhere along m_b + dm,
