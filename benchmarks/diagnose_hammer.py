@@ -112,15 +112,15 @@ def main():
           "initial values within a factor %g, 6 starts; %d cores, load average %s; "
           "median of %d runs" % (a.seed, START_FACTOR, os.cpu_count(),
                                  " ".join("%.2f" % x for x in os.getloadavg()), a.runs))
-    print("%-22s %-24s | %-34s %8s %8s | %-34s %8s | %6s" %
+    print("%-22s %-24s | %-50s %8s %8s | %-50s %8s | %6s" %
           ("withheld", "size", "verdict (screened)", "refitted", "s", "verdict (--screen=1)",
            "s", "ratio"))
-    print("-" * 160)
+    print("-" * 192)
     for name, size, path in cases:
         fast, screened = diagnose(a.ringid, path, a.runs, [])
         slow, every = diagnose(a.ringid, path, a.runs, ["--screen=1"])
         refitted = sum(1 for r in screened["ranking"] if r["fitted"])
-        print("%-22s %-24s | %-34s %5d/%d %8.2f | %-34s %8.2f | %6.1f" %
+        print("%-22s %-24s | %-50s %6d/%d %8.2f | %-50s %8.2f | %6.1f" %
               (name, size, verdict(screened), refitted, len(screened["ranking"]), fast,
                verdict(every), slow, slow / fast))
     print("s: wall time of the whole `ringid diagnose` command (process start and the 0.9 MB "

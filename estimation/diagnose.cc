@@ -387,11 +387,14 @@ EffectFit ScreenedCandidate(const RigidRingModel& baseline, const Effect& effect
 }
 
 // Which candidates to refit: those whose score test passes the screen, those
-// it cannot judge, and their rivals (SignatureOverlap above kRivalOverlap).
+// it cannot judge (no score, or no derivative at 0 to base one on), and their
+// rivals (SignatureOverlap above kRivalOverlap).
 std::vector<char> Refitted(const std::vector<internal::EffectScore>& scores, double level) {
   const size_t n = scores.size();
   std::vector<char> kept(n);
-  for (size_t k = 0; k < n; ++k) kept[k] = level >= 1 || !scores[k].ok || scores[k].p < level;
+  for (size_t k = 0; k < n; ++k) {
+    kept[k] = level >= 1 || !scores[k].ok || !scores[k].smooth || scores[k].p < level;
+  }
   std::vector<char> refit = kept;
   for (size_t k = 0; k < n; ++k) {
     for (size_t j = 0; j < n && !refit[k]; ++j) {

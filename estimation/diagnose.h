@@ -32,7 +32,8 @@ struct DiagnoseOptions {
   // this are refitted, with their rivals: the effects whose signatures
   // overlap theirs (canonical correlation above kRivalOverlap) and any whose
   // score comes within the verdict's group threshold. The others keep their
-  // score and detectable sizes. 1 refits every effect, as does a baseline
+  // score and detectable sizes. An effect without a derivative at size 0 (the
+  // hub) is always refitted. 1 refits every effect, as does a baseline
   // that misses by far more than the noise (kScreenReducedChiSquare).
   double screen_significance = 0.05;
   // An effect too small to name is stated with the smallest size whose

@@ -69,6 +69,7 @@ EffectScore ScoreEffect(const RigidRingModel& baseline, const Effect& effect, co
   for (size_t j = 0; j < size.size(); ++j) {
     S.col(j) = J.col(size[j]);
     if (S.col(j).norm() > 0) continue;
+    out.smooth = false;
     const double h = kScoreStep;  // the coordinate is the value in typical scales
     Eigen::VectorXd x = x0, r;
     x[size[j]] += h;

@@ -24,6 +24,10 @@ struct EffectScore {
   double statistic = 0;
   int dof = 0;  // sizing parameters whose signature leaves the span
   double p = 1;
+  // False where a sizing parameter has no derivative at 0 (the forward
+  // difference stood in): the test's theory needs one, so its p-value is a
+  // guide only (a hub released at s_h = 0).
+  bool smooth = true;
   // Orthonormal columns spanning the projected signature (residuals x dof):
   // two effects whose spans nearly share a direction are rivals.
   Eigen::MatrixXd signature;
