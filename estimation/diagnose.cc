@@ -107,8 +107,8 @@ std::optional<double> HeldOut(const ModalModel& model, const Dataset& warm,
   return total;
 }
 
-// An effect fit may end this much (in cost) above the baseline's optimum and
-// still count as having reached it: the stopping rule's own resolution.
+// An effect fit may end this much (in cost) above the baseline's optimum and still
+// count as having reached it: the stopping rule's own resolution.
 constexpr double kEffectFitSlack = 0.05;
 
 // Cost of `dataset` under `model` at its initial values (+inf if unsolvable).
@@ -523,6 +523,64 @@ bool EffectOff(const Effect& effect, const IdentifyResult& s) {
   return true;
 }
 
+namespace {
+
+// Each candidate's score test, then the fits of those it keeps (Refitted), into
+// r->ranking and `fits` (one per candidate); on o.fit.threads, each within one.
+void ScoreAndFit(const RigidRingModel& baseline, const std::vector<const Effect*>& candidates,
+                 const Dataset& warm, const Dataset& dataset, const DiagnoseOptions& o,
+                 Steps* steps, DiagnosisResult* r, std::vector<IdentifyResult>* fits) {
+  const int n = static_cast<int>(candidates.size());
+  std::vector<internal::EffectScore> scores(n);
+  internal::ParallelFor(n, o.fit.threads, [&](int k) {
+    scores[k] = internal::ScoreEffect(baseline, *candidates[k], warm, o.fit.residuals,
+                                      o.fit.uncertainty.rank_tolerance);
+  });
+  // A first-order test reads a gap an effect closes near size 0; a baseline that misses
+  // by far more than the noise (kScreenReducedChiSquare) is no such place: all refitted.
+  const bool local = r->chi2_before <= kScreenReducedChiSquare * std::max(r->dof, 1);
+  const std::vector<char> refit = Refitted(scores, local ? o.screen_significance : 1.0);
+  DiagnoseOptions one_thread = o;
+  one_thread.fit.threads = 1;
+  const auto fit = [&](int k) {
+    r->ranking[k] =
+        FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &(*fits)[k]);
+  };
+  internal::ParallelFor(n, o.fit.threads, [&](int k) {
+    if (refit[k]) {
+      fit(k);
+    } else {
+      r->ranking[k] = ScreenedCandidate(baseline, *candidates[k], warm, scores[k], *r, one_thread);
+    }
+    steps->Done();
+  });
+  // The screen must not shrink the verdict's group (Group): a screened
+  // effect whose score, its likelihood ratio to first order, comes within
+  // the group's threshold of the best supported effect's is fitted too.
+  const EffectFit* best = nullptr;  // as Verdict picks it
+  for (const EffectFit& f : r->ranking) {
+    if (f.supported && (!best || f.aic < best->aic)) best = &f;
+  }
+  std::vector<int> near;
+  for (int k = 0; best && k < n; ++k) {
+    if (refit[k] || !scores[k].ok || scores[k].dof == 0) continue;
+    const int dof = std::max(std::abs(scores[k].dof - best->extra_parameters), 1);
+    if (scores[k].statistic > best->lrt_statistic - ChiSquareCritical(o.effect_significance, dof)) {
+      near.push_back(k);
+    }
+  }
+  internal::ParallelFor(static_cast<int>(near.size()), o.fit.threads,
+                        [&](int i) { fit(near[i]); });
+  for (int k = 0; k < n; ++k) {
+    if (!scores[k].ok) continue;
+    r->ranking[k].score_statistic = scores[k].statistic;
+    r->ranking[k].score_dof = scores[k].dof;
+    r->ranking[k].score_p = scores[k].p;
+  }
+}
+
+}  // namespace
+
 void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
                          const DiagnoseOptions& o, DiagnosisResult* r, std::chrono::steady_clock::time_point t0) {
   // The gap: calibrate the baseline by the multistart of Identify, on the one
@@ -556,55 +614,7 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
     const int n = static_cast<int>(candidates.size());
     r->ranking.assign(n, EffectFit{});
     fits.assign(n, IdentifyResult{});
-    // Each candidate's score test, then the fits of those it keeps; on
-    // o.fit.threads, each within one.
-    std::vector<internal::EffectScore> scores(n);
-    internal::ParallelFor(n, o.fit.threads, [&](int k) {
-      scores[k] = internal::ScoreEffect(baseline, *candidates[k], warm, o.fit.residuals,
-                                        o.fit.uncertainty.rank_tolerance);
-    });
-    // A first-order test reads a gap an effect could close near size 0; a
-    // baseline that misses by far more than the noise (chi-square per degree
-    // of freedom above kScreenReducedChiSquare) is no such place, and every
-    // effect is refitted.
-    const bool local = r->chi2_before <= kScreenReducedChiSquare * std::max(r->dof, 1);
-    const std::vector<char> refit = Refitted(scores, local ? o.screen_significance : 1.0);
-    DiagnoseOptions one_thread = o;
-    one_thread.fit.threads = 1;
-    const auto fit = [&](int k) {
-      r->ranking[k] = FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &fits[k]);
-    };
-    internal::ParallelFor(n, o.fit.threads, [&](int k) {
-      if (refit[k]) {
-        fit(k);
-      } else {
-        r->ranking[k] = ScreenedCandidate(baseline, *candidates[k], warm, scores[k], *r, one_thread);
-      }
-      steps.Done();
-    });
-    // The screen must not shrink the verdict's group (Group): a screened
-    // effect whose score, its likelihood ratio to first order, comes within
-    // the group's threshold of the best supported effect's is fitted too.
-    const EffectFit* best = nullptr;  // as Verdict picks it
-    for (const EffectFit& f : r->ranking) {
-      if (f.supported && (!best || f.aic < best->aic)) best = &f;
-    }
-    std::vector<int> near;
-    for (int k = 0; best && k < n; ++k) {
-      if (refit[k] || !scores[k].ok || scores[k].dof == 0) continue;
-      const int dof = std::max(std::abs(scores[k].dof - best->extra_parameters), 1);
-      if (scores[k].statistic > best->lrt_statistic - ChiSquareCritical(o.effect_significance, dof)) {
-        near.push_back(k);
-      }
-    }
-    internal::ParallelFor(static_cast<int>(near.size()), o.fit.threads,
-                          [&](int i) { fit(near[i]); });
-    for (int k = 0; k < n; ++k) {
-      if (!scores[k].ok) continue;
-      r->ranking[k].score_statistic = scores[k].statistic;
-      r->ranking[k].score_dof = scores[k].dof;
-      r->ranking[k].score_p = scores[k].p;
-    }
+    ScoreAndFit(baseline, candidates, warm, dataset, o, &steps, r, &fits);
     int better = -1;
     for (int k = 0; k < n; ++k) {
       const IdentifyResult& s = fits[k];
@@ -684,70 +694,6 @@ void DiagnoseWithOptions(const RigidRingModel& baseline, const Dataset& dataset,
   steps.Done();
   r->status = Status::Success();
   r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::string DiagnosisResult::FullReport() const {
-  std::ostringstream o;
-  char line[512];
-  if (!status.ok()) return "ringid diagnose: FAILED: " + status.message + "\n";
-  o << "ringid diagnose: verdict " << EffectName(verdict);
-  if (!indistinguishable.empty()) {
-    o << " (indistinguishable:";
-    for (const Effect* e : indistinguishable) o << " " << EffectName(e);
-    o << ")";
-  }
-  o << "\n  " << explanation << "\n\n";
-  std::snprintf(line, sizeof line, "  the gap: chi-square %.4g on %d dof", chi2_before, dof);
-  o << line;
-  if (p_value) {
-    std::snprintf(line, sizeof line, ", p = %.3g (%s)", *p_value, significant ? "significant" : "not significant");
-    o << line;
-  }
-  int width = 20;
-  for (const ModeMisfit& w : where) width = std::max<int>(width, w.Name().size());
-  for (const ItemMisfit& w : where_else.value_or(std::vector<ItemMisfit>{})) {
-    width = std::max<int>(width, (w.condition ? w.condition->size() + 1 : 0) + w.name.size());
-  }
-  o << "\n\n  where it lies (baseline misfit, in sigma):\n  mode" << std::string(width - 4, ' ')
-    << "  chi2     freq    damping  shape chi2  worst component\n";
-  for (size_t i = 0; i < where.size(); ++i) {
-    const ModeMisfit& w = where[i];
-    std::snprintf(line, sizeof line, "  %-*s %7.1f  %+7.2f  %7s  %9.1f   %s %+.1f%s\n", width, w.Name().c_str(), w.chi2,
-                  w.frequency_sigma, w.damping_sigma ? std::to_string(*w.damping_sigma).substr(0, 6).c_str() : "-",
-                  w.shape_chi2, w.worst_component.c_str(), w.worst_component_sigma,
-                  i < mode_shrink.size() ? ("   shrink " + std::to_string(static_cast<int>(std::round(100 * mode_shrink[i]))) + " %").c_str() : "");
-    o << line;
-  }
-  for (const ItemMisfit& w : where_else.value_or(std::vector<ItemMisfit>{})) {
-    std::snprintf(line, sizeof line, "  %-*s %7.1f  (%+.2f sigma)\n", width,
-                  ((w.condition ? *w.condition + " " : "") + w.name).c_str(), w.sigma * w.sigma,
-                  w.sigma);
-    o << line;
-  }
-  for (const std::string& a : absorbed) o << "  absorbed: " << a << "\n";
-  o << "\n  effect                  chi2      LRT p      AIC      shrink  held-out chi2  vs verdict (threshold)\n";
-  for (const EffectFit& f : ranking) {
-    char versus[48] = "-";
-    if (std::isfinite(f.chi2_above_verdict)) {
-      std::snprintf(versus, sizeof versus, "%+.2f (%.2f)", f.chi2_above_verdict, f.group_threshold);
-    }
-    std::snprintf(line, sizeof line, "  %-22s %8.1f  %9.2e  %8.1f  %5.0f %%  %-13s  %-22s%s\n", EffectName(f.effect),
-                  f.chi2, f.lrt_p, f.aic, 100 * f.shrink,
-                  f.held_out_chi2 ? std::to_string(*f.held_out_chi2).substr(0, 8).c_str() : "-", versus,
-                  f.supported ? "  supported" : "");
-    if (!f.ok) std::snprintf(line, sizeof line, "  %s: %s\n", EffectName(f.effect), f.note.c_str());
-    o << line;
-    for (const auto& [name, by] : f.absorbed_by) {
-      o << "    " << name << ": absorbed whatever its size by the free";
-      for (size_t i = 0; i < by.size(); ++i) o << (i ? ", " : " ") << by[i];
-      o << "\n";
-    }
-  }
-  if (held_out_before) {
-    std::snprintf(line, sizeof line, "  baseline held-out chi2 %.1f\n", *held_out_before);
-    o << line;
-  }
-  return o.str();
 }
 
 }  // namespace ringid
