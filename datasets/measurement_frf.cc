@@ -148,19 +148,25 @@ class FrfKind final : public Measurement {
                      [&](double hz) { return InBand(hz, o); }) -
         frf.frequencies_hz.begin());
     const int lines = static_cast<int>(model.H.rows());
-    int row = 0;
     for (int f = 0; f < static_cast<int>(frf.functions.size()); ++f) {
       const FrfFunction& fn = frf.functions[f];
       const Complex* H = model.H.col(f).data();
-      for (int l = 0; l < lines; ++l, row += 2) {
+      const int row = 2 * lines * f;
+      for (int l = 0; l < lines; ++l) {
+        const Complex z = (H[l] - fn.h[first + l]) * (1 / fn.sigma[first + l]);
+        r[row + 2 * l] = z.real();
+        r[row + 2 * l + 1] = z.imag();
+      }
+      const int n = params ? static_cast<int>(params->size()) : 0;
+      for (int l = 0; n > 0 && l < lines; ++l) {
+        const Complex* dH = &model.dH(static_cast<Eigen::Index>(f) * lines + l, 0);
         const double inverse = 1 / fn.sigma[first + l];
-        const Complex z = H[l] - fn.h[first + l];
-        r[row] = z.real() * inverse;
-        r[row + 1] = z.imag() * inverse;
-        for (size_t k = 0; params && k < params->size(); ++k) {
-          const Complex dz = model.dH[k](l, f) * inverse;
-          dr(row, k) = dz.real();
-          dr(row + 1, k) = dz.imag();
+        double* re = &dr(row + 2 * l, 0);
+        double* im = &dr(row + 2 * l + 1, 0);
+        for (int k = 0; k < n; ++k) {
+          const Complex dz = dH[k] * inverse;
+          re[k] = dz.real();
+          im[k] = dz.imag();
         }
       }
     }

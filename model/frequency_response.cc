@@ -235,12 +235,13 @@ class Lines {
     return true;
   }
 
-  // Row l of each r->dH at w, after At there: dH = dG X + Y dB - Y dD X,
+  // Line l's rows of r->dH at w, after At there: dH = dG X + Y dB - Y dD X,
   // Y = G D^-1 from the blocks' LU (their transposes), dD's entries as the
   // parameter moves them (static, and at speed the lags' terms).
   void Derive(double w, int l, const Slopes& d, const ResponseRequest& request,
               ResponseResult* r) {
     const int k = on_.size(), inputs = static_cast<int>(X_.size()) / std::max(k, 1);
+    const Eigen::Index lines = r->H.rows();
     for (size_t o = 0; o < outputs_.size(); ++o) OutputRow(static_cast<int>(o), w);
     std::vector<std::array<ParameterJet, 4>> lag;  // on f d^T (re, im), on f e^T (re, im)
     for (const Slopes::Lag& L : d.lags) {
@@ -280,7 +281,7 @@ class Lines {
         for (const Slopes::Force& b : d.B[j]) {
           if (b.input == i) h += y[b.a] * b.value;
         }
-        r->dH[j](l, static_cast<int>(f)) = h;
+        r->dH(static_cast<Eigen::Index>(f) * lines + l, static_cast<Eigen::Index>(j)) = h;
       }
     }
   }
@@ -548,8 +549,8 @@ void Respond(const MechanicalSystem& s, const Parameters& p, const ResponseReque
   const int lines = static_cast<int>(request.frequencies_hz.size());
   const int functions = static_cast<int>(request.pairs.size());
   r.H.resize(lines, functions);
-  r.dH.resize(slopes ? slopes->params.size() : 0);
-  for (Eigen::MatrixXcd& d : r.dH) d.resize(lines, functions);
+  r.dH.resize(slopes ? static_cast<Eigen::Index>(functions) * lines : 0,
+              slopes ? static_cast<Eigen::Index>(slopes->params.size()) : 0);
   Lines solver(s, p, request, slopes != nullptr);
   for (int l = 0; l < lines; ++l) {
     const double w = 2 * M_PI * request.frequencies_hz[l];
@@ -564,11 +565,9 @@ void Respond(const MechanicalSystem& s, const Parameters& p, const ResponseReque
     r.error = "the response is not finite";
     return;
   }
-  for (const Eigen::MatrixXcd& d : r.dH) {
-    if (!d.allFinite()) {
-      r.error = "the response's derivatives are not finite";
-      return;
-    }
+  if (!r.dH.allFinite()) {
+    r.error = "the response's derivatives are not finite";
+    return;
   }
   r.ok = true;
 }

@@ -58,9 +58,10 @@ struct ResponseResult {
   // H(line, function): the output's phasor per unit input phasor (§8's
   // convention q(t) = Re(Q e^{iωt})).
   Eigen::MatrixXcd H;
-  // With derivatives, dH[k](line, function) = dH / d(catalogue parameter
-  // params[k]).
-  std::vector<Eigen::MatrixXcd> dH;
+  // With derivatives, dH(function * lines + line, k) = dH / d(catalogue
+  // parameter params[k]): a row per value, function-major as a fit's
+  // residuals, its parameters side by side.
+  Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dH;
 };
 
 // At parameters p (every one the model reads set), rolling at speed_m_s (0:

@@ -181,12 +181,12 @@ void ExpectRidders(const RigidRingModel& model, const Parameters& p, double spee
   for (Param q : functor.read) params.push_back(static_cast<int>(q));
   const ResponseResult r = FrequencyResponse(model, p, speed, request, &params);
   ASSERT_TRUE(r.ok) << what << ": " << r.error;
-  ASSERT_EQ(r.dH.size(), params.size());
+  ASSERT_EQ(r.dH.cols(), static_cast<Eigen::Index>(params.size()));
   double worst = 0;
   for (int k = 0; k < n; ++k) {
     for (int e = 0; e < entries; ++e) {
       const int l = e % lines, f = e / lines;
-      const cd exact = r.dH[k](l, f) * p[functor.read[k]];
+      const cd exact = r.dH(e, k) * p[functor.read[k]];  // e = f * lines + l
       const cd numeric(J(2 * e, k), J(2 * e + 1, k));
       // Relative to the largest entry of the line's function: the elasticity
       // of a near-zero entry is what it is compared with.
