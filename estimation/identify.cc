@@ -104,7 +104,20 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
     if (dataset.known.count(q) && !setup.ties().count(q)) known.push_back(q);
   }
   if (known.empty()) return;
+  // Only the known ones free, the rest held at the fit: their columns are
+  // those of the whole problem freed, at a fraction of its cost.
+  const Parameters p = setup.Decode(x.data(), 0);
   Dataset freed = dataset;
+  for (int i = 0; i < setup.size(); ++i) {
+    const Param q = setup.free()[i];
+    const int c = setup.condition_of(i);
+    if (c < 0) {
+      freed.known[q] = p[q];
+      freed.initial.erase(q);
+    } else {
+      freed.conditions[c].known[q] = setup.Decode(x.data(), c)[q];
+    }
+  }
   for (Param q : known) {
     freed.initial[q] = freed.known.at(q);
     freed.known.erase(q);
@@ -117,15 +130,14 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
   const ParameterSetup& fs = problem->setup();
   const ModalResiduals& r = problem->residuals();
   const Eigen::MatrixXd& J = u->jacobian;
-  if (r.num_residuals() != J.rows()) return;
-  Eigen::VectorXd xf = fs.StartCoordinates();
-  for (int i = 0; i < fs.size(); ++i) {
-    const int at = setup.CoordinateOf(fs.free()[i], std::max(fs.condition_of(i), 0));
-    if (at >= 0) xf[i] = x[at];
-  }
+  // The rows of J past the conditions' are the free parameters' priors, in
+  // which a known one's column is 0; a prior on a known one leaves it out.
+  const int data_rows = r.row_begin(fs.num_conditions());
+  if (r.num_residuals() != data_rows || data_rows > J.rows()) return;
   Eigen::MatrixXd freed_jacobian;
-  if (!internal::EvaluateJacobian(r, xf, &freed_jacobian)) return;
-  const Parameters p = setup.Decode(x.data(), 0);
+  if (!internal::EvaluateJacobian(r, fs.StartCoordinates(), &freed_jacobian)) return;
+  freed_jacobian.conservativeResize(J.rows(), Eigen::NoChange);
+  freed_jacobian.bottomRows(J.rows() - data_rows).setZero();
   for (Param q : known) {
     const int k = fs.CoordinateOf(q, 0);
     if (k < 0 || fs.condition_of(k) >= 0) continue;
