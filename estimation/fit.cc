@@ -162,6 +162,7 @@ LocalFit FitLevenbergMarquardt(const ModalResiduals& residuals,
                       : "the model cannot be solved at this start: " + why;
     return fit;
   }
+  residuals.ForgetKept();
   HistoryCallback history(residuals, &fit);
   so.callbacks.push_back(&history);
   StatisticalStop stop(residuals, fit.x, box, fixed, stop_chi_square);

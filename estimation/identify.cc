@@ -130,8 +130,7 @@ void AddPracticalDependence(const ModalModel& model, const Dataset& dataset,
   const ParameterSetup& fs = problem->setup();
   const ModalResiduals& r = problem->residuals();
   const Eigen::MatrixXd& J = u->jacobian;
-  // The rows of J past the conditions' are the free parameters' priors, in
-  // which a known one's column is 0; a prior on a known one leaves it out.
+  // J's rows past the conditions' are priors, 0 in a known one's column.
   const int data_rows = r.row_begin(fs.num_conditions());
   if (r.num_residuals() != data_rows || data_rows > J.rows()) return;
   Eigen::MatrixXd freed_jacobian;

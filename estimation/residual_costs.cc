@@ -181,20 +181,19 @@ class AnalyticConditionCost final : public ceres::CostFunction {
     *mutable_parameter_block_sizes() = numeric_.parameter_block_sizes();
     set_num_residuals(numeric_.num_residuals());
   }
+  // The residuals keep the last point (ModalResiduals::EvaluateConditionJacobian).
   bool Evaluate(double const* const* x, double* r, double** jacobians) const override {
-    if (last_.Recall(*this, x, r, jacobians)) return true;
     const double* s = shared_ ? x[0] : nullptr;
     const double* o = own_ ? x[shared_ ? 1 : 0] : nullptr;
-    if (!jacobians) return residuals_.EvaluateCondition(condition_, s, o, r);
-    return last_.Make(*this, x, r, jacobians, [&](double* rows, double** made) {
-      double* js = shared_ ? made[0] : nullptr;
-      double* jo = own_ ? made[shared_ ? 1 : 0] : nullptr;
-      bool defined = false;
-      if (!residuals_.EvaluateConditionJacobian(condition_, s, o, rows, js, jo, &defined)) {
-        return false;
-      }
-      return defined || numeric_.Evaluate(x, rows, made);
-    });
+    if (!jacobians) {
+      return residuals_.KeptRows(condition_, s, o, r) ||
+             residuals_.EvaluateCondition(condition_, s, o, r);
+    }
+    double* js = shared_ ? jacobians[0] : nullptr;
+    double* jo = own_ ? jacobians[shared_ ? 1 : 0] : nullptr;
+    bool defined = false;
+    if (!residuals_.EvaluateConditionJacobian(condition_, s, o, r, js, jo, &defined)) return false;
+    return defined || numeric_.Evaluate(x, r, jacobians);
   }
 
  private:
@@ -202,7 +201,6 @@ class AnalyticConditionCost final : public ceres::CostFunction {
   int condition_;
   bool shared_, own_;
   NumericConditionCost numeric_;
-  LastJacobian last_;
 };
 
 // The priors, with their exact derivatives, on the shared block.

@@ -28,7 +28,7 @@ namespace internal {
 ModalResiduals::ModalResiduals(const ModalModel& model, const Dataset& dataset,
                                const ParameterSetup& setup,
                                const ResidualOptions& options)
-    : model_(model), dataset_(dataset), setup_(setup), options_(options) {
+    : model_(model), dataset_(dataset), setup_(setup), options_(options), id_(NextId()) {
   // Condition by condition, record by record (a measured mode, a static
   // stiffness), each record's measurements in registry order.
   for (int c = 0; c < static_cast<int>(dataset.conditions.size()); ++c) {
@@ -274,9 +274,83 @@ bool ModalResiduals::EvaluateCondition(int c, const double* shared, const double
   return Rows(c, p, &solution, r, none);
 }
 
+namespace {
+
+// What a thread last differentiated of each condition of one problem.
+struct Kept {
+  std::vector<double> at;  // the shared then own coordinates; empty: nothing
+  std::vector<double> r, shared, own;  // shared, own empty where not made
+  bool defined = false;
+};
+struct KeptHere {
+  uint64_t owner = 0;  // ModalResiduals::id_
+  std::vector<Kept> conditions;
+};
+thread_local KeptHere kept_here;
+
+// Whether `at` holds shared[0, ns) then own[0, no).
+bool SamePoint(const std::vector<double>& at, const double* shared, int ns, const double* own,
+               int no) {
+  return !at.empty() && static_cast<int>(at.size()) == ns + no &&
+         std::equal(at.begin(), at.begin() + ns, shared) &&
+         std::equal(at.begin() + ns, at.end(), own);
+}
+
+}  // namespace
+
+uint64_t ModalResiduals::NextId() {
+  static std::atomic<uint64_t> next{1};
+  return next++;
+}
+
+void ModalResiduals::ForgetKept() const {
+  if (kept_here.owner != id_) return;
+  for (Kept& kept : kept_here.conditions) kept.at.clear();  // the storage stays
+}
+
+bool ModalResiduals::Recall(int c, const double* shared, const double* own, double* r,
+                            double* jacobian_shared, double* jacobian_own, bool* defined) const {
+  if (kept_here.owner != id_ || c >= static_cast<int>(kept_here.conditions.size())) return false;
+  const Kept& kept = kept_here.conditions[c];
+  const int ns = setup_.num_shared(), no = setup_.own_begin(c + 1) - setup_.own_begin(c);
+  if (!SamePoint(kept.at, shared, ns, own, no)) return false;
+  const bool made_all = !kept.defined || ((!jacobian_shared || !kept.shared.empty()) &&
+                                          (!jacobian_own || !kept.own.empty()));
+  if (!made_all) return false;
+  std::copy(kept.r.begin(), kept.r.end(), r);
+  *defined = kept.defined;
+  if (kept.defined && jacobian_shared) std::copy(kept.shared.begin(), kept.shared.end(), jacobian_shared);
+  if (kept.defined && jacobian_own) std::copy(kept.own.begin(), kept.own.end(), jacobian_own);
+  return true;
+}
+
 bool ModalResiduals::EvaluateConditionJacobian(int c, const double* shared, const double* own,
                                                double* r, double* jacobian_shared,
                                                double* jacobian_own, bool* defined) const {
+  if (Recall(c, shared, own, r, jacobian_shared, jacobian_own, defined)) return true;
+  const bool made = MakeConditionJacobian(c, shared, own, r, jacobian_shared, jacobian_own, defined);
+  if (!made) return false;
+  if (kept_here.owner != id_) {
+    kept_here.owner = id_;
+    for (Kept& kept : kept_here.conditions) kept.at.clear();
+  }
+  kept_here.conditions.resize(setup_.num_conditions());
+  Kept& kept = kept_here.conditions[c];
+  const int ns = setup_.num_shared(), no = setup_.own_begin(c + 1) - setup_.own_begin(c);
+  const size_t rows = static_cast<size_t>(row_begin_[c + 1] - row_begin_[c]);
+  kept.at.assign(shared, shared + ns);
+  kept.at.insert(kept.at.end(), own, own + no);
+  kept.r.assign(r, r + rows);
+  kept.defined = *defined;
+  const bool js = *defined && jacobian_shared, jo = *defined && jacobian_own;
+  kept.shared.assign(jacobian_shared, jacobian_shared + (js ? rows * ns : 0));
+  kept.own.assign(jacobian_own, jacobian_own + (jo ? rows * no : 0));
+  return true;
+}
+
+bool ModalResiduals::MakeConditionJacobian(int c, const double* shared, const double* own,
+                                           double* r, double* jacobian_shared,
+                                           double* jacobian_own, bool* defined) const {
   ++evaluations_;
   *defined = false;
   const Parameters p = setup_.Decode(shared, own, c);

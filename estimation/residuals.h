@@ -4,6 +4,7 @@
 #define RINGID_ESTIMATION_RESIDUALS_H_
 
 #include <atomic>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -65,10 +66,22 @@ class ModalResiduals {
   // The same rows and their exact derivatives with respect to the shared and
   // own coordinates (row-major; either may be null). False as
   // EvaluateCondition; *defined false where the derivatives do not exist
-  // (two eigenvalues coincide), the rows still set.
+  // (two eigenvalues coincide), the rows still set. Each thread keeps the last
+  // point of each condition: asked again there (the fit's bounded line
+  // search, its stopping rule, the analysis at the optimum), they are copied,
+  // not made (nor counted in evaluations()).
   bool EvaluateConditionJacobian(int c, const double* shared, const double* own, double* r,
                                  double* jacobian_shared, double* jacobian_own,
                                  bool* defined) const;
+  // The rows this thread kept of condition c at (shared, own), as
+  // EvaluateConditionJacobian made them; false where it kept none there.
+  bool KeptRows(int c, const double* shared, const double* own, double* r) const {
+    bool defined;
+    return Recall(c, shared, own, r, nullptr, nullptr, &defined);
+  }
+  // Forgets what this thread kept, so that what a fit evaluates does not
+  // depend on what the thread did before it (one start after another).
+  void ForgetKept() const;
   int row_begin(int c) const { return row_begin_[c]; }
   const ResidualOptions& options() const { return options_; }
   // Whether condition c's rows are differentiated exactly: options().derivatives
@@ -144,6 +157,17 @@ class ModalResiduals {
   std::vector<int> derived_;    // catalogue parameters some coordinate moves
   int num_residuals_ = 0;
   mutable std::atomic<long> evaluations_{0};
+  // Tells this problem's kept points (EvaluateConditionJacobian) from any
+  // other's on the same thread.
+  const uint64_t id_;
+  static uint64_t NextId();
+  // EvaluateConditionJacobian without what is kept.
+  bool MakeConditionJacobian(int c, const double* shared, const double* own, double* r,
+                             double* jacobian_shared, double* jacobian_own, bool* defined) const;
+  // Copies what this thread kept of condition c at (shared, own) into the
+  // outputs asked for; false where it kept nothing there or not every output.
+  bool Recall(int c, const double* shared, const double* own, double* r, double* jacobian_shared,
+              double* jacobian_own, bool* defined) const;
 };
 
 // Whether v[0, n) are all finite, without a branch per value (a residual
