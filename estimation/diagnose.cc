@@ -10,7 +10,6 @@
 #include "estimation/uncertainty.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -126,6 +125,7 @@ double InitialCost(const ModalModel& model, const Dataset& dataset, const Residu
 // cost has failed: the next seed of the scan is tried, up to kEffectSeeds.
 constexpr int kEffectSeeds = 4;
 constexpr int kEffectStarts = 3;
+constexpr int kEffectColdIterations = 50;
 IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, const Dataset& warm,
                           const Dataset& dataset, double baseline_cost,
                           const DiagnoseOptions& o) {
@@ -163,7 +163,9 @@ IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, cons
   }
   // The baseline may have bent itself to absorb part of the effect, a basin
   // LM does not leave: the effect's model also gets identify's own starts
-  // (kEffectStarts of them), its parameters at the scan's best size.
+  // (kEffectStarts of them), its parameters at the scan's best size, each
+  // at most kEffectColdIterations: one still crawling there is far above the
+  // warm fit (a hub from a cold start: chi-square 22 times the baseline's).
   Dataset cold = dataset;
   if (starts.size() > 1) {
     for (Param p : effect.parameters()) {
@@ -176,6 +178,7 @@ IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, cons
   }
   IdentifyOptions multi = o.fit;
   multi.starts = std::min(o.fit.starts, kEffectStarts);
+  multi.max_iterations = std::min(o.fit.max_iterations, kEffectColdIterations);
   IdentifyResult s;
   Identify(model, cold, multi, &s);
   if (s.status.ok() && (!best.status.ok() || s.cost < best.cost)) best = s;
@@ -544,7 +547,7 @@ void ScoreAndFit(const RigidRingModel& baseline, const std::vector<const Effect*
   one_thread.fit.threads = 1;
   const auto fit = [&](int k) {
     r->ranking[k] =
-        FitCandidate(baseline, *candidates[k], warm, dataset, *r, one_thread, &(*fits)[k]);
+        FitCandidate(baseline, *candidates[k], warm, dataset, *r, o, &(*fits)[k]);
   };
   internal::ParallelFor(n, o.fit.threads, [&](int k) {
     if (refit[k]) {
