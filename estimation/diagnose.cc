@@ -163,9 +163,8 @@ IdentifyResult FitEffect(const RigidRingModel& model, const Effect& effect, cons
   }
   // The baseline may have bent itself to absorb part of the effect, a basin
   // LM does not leave: the effect's model also gets identify's own starts
-  // (kEffectStarts of them), its parameters at the scan's best size, each
-  // at most kEffectColdIterations: one still crawling there is far above the
-  // warm fit (a hub from a cold start: chi-square 22 times the baseline's).
+  // (kEffectStarts of them, each at most kEffectColdIterations: a hub's cold
+  // starts crawl at 22 times the baseline's chi-square), its parameters at the scan's best size.
   Dataset cold = dataset;
   if (starts.size() > 1) {
     for (Param p : effect.parameters()) {
@@ -546,8 +545,7 @@ void ScoreAndFit(const RigidRingModel& baseline, const std::vector<const Effect*
   DiagnoseOptions one_thread = o;
   one_thread.fit.threads = 1;
   const auto fit = [&](int k) {
-    r->ranking[k] =
-        FitCandidate(baseline, *candidates[k], warm, dataset, *r, o, &(*fits)[k]);
+    r->ranking[k] = FitCandidate(baseline, *candidates[k], warm, dataset, *r, o, &(*fits)[k]);
   };
   internal::ParallelFor(n, o.fit.threads, [&](int k) {
     if (refit[k]) {
