@@ -394,5 +394,63 @@ TEST(DerivativesTest, CoincidingEigenvaluesInOneBlockGiveNoDerivativesAndSaySo) 
   }
 }
 
+// Each thread keeps the last point a problem differentiated exactly: asked
+// there again it gives what it made, without making it; another problem at
+// the same coordinates (other data) is not given it; and once forgotten (a
+// fit's start) the point is made again, to the same bits.
+TEST(DerivativesTest, AKeptJacobianIsTheOneMadeThereAndOnlyThatProblems) {
+  Dataset a;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &a, &e));
+  Dataset b = a;
+  for (MeasuredMode& m : b.modes) m.frequency_hz *= 1.01;
+  ResidualOptions o;
+  o.derivatives = Derivatives::kAnalytic;
+  Status status;
+  const auto pa = Problem::Create(RigidRingModel(), a, o, &status);
+  const auto pb = Problem::Create(RigidRingModel(), b, o, &status);
+  ASSERT_TRUE(pa && pb) << status.message;
+  const internal::ModalResiduals& ra = pa->residuals();
+  const internal::ModalResiduals& rb = pb->residuals();
+  ASSERT_EQ(ra.setup().num_conditions(), 1);
+  const int rows = ra.row_begin(1), n = ra.setup().num_shared();
+  const Eigen::VectorXd x = pa->start();
+  struct Made {
+    std::vector<double> r, J;
+  };
+  const auto make = [&](const internal::ModalResiduals& res, const Eigen::VectorXd& at) {
+    Made m{std::vector<double>(rows), std::vector<double>(static_cast<size_t>(rows) * n)};
+    bool defined = false;
+    EXPECT_TRUE(res.EvaluateConditionJacobian(0, at.data(), nullptr, m.r.data(), m.J.data(),
+                                              nullptr, &defined));
+    EXPECT_TRUE(defined);
+    return m;
+  };
+  const Made first = make(ra, x);
+  const long made = ra.evaluations();
+  const Made again = make(ra, x);
+  EXPECT_EQ(ra.evaluations(), made);
+  EXPECT_EQ(again.r, first.r);
+  EXPECT_EQ(again.J, first.J);
+
+  ra.ForgetKept();
+  const Made remade = make(ra, x);
+  EXPECT_EQ(ra.evaluations(), made + 1);
+  EXPECT_EQ(remade.r, first.r);
+  EXPECT_EQ(remade.J, first.J);
+
+  const long made_b = rb.evaluations();
+  const Made other = make(rb, x);
+  EXPECT_EQ(rb.evaluations(), made_b + 1);
+  EXPECT_NE(other.r, first.r);
+  make(ra, x);  // the thread now keeps rb's point
+  EXPECT_EQ(ra.evaluations(), made + 2);
+  Eigen::VectorXd moved = x;
+  moved[0] += 1e-3;
+  const Made elsewhere = make(ra, moved);
+  EXPECT_EQ(ra.evaluations(), made + 3);
+  EXPECT_NE(elsewhere.J, first.J);
+}
+
 }  // namespace
 }  // namespace ringid
