@@ -528,7 +528,7 @@ bool EffectOff(const Effect& effect, const IdentifyResult& s) {
 namespace {
 
 // Each candidate's score test, then the fits of those it keeps (Refitted), into
-// r->ranking and `fits` (one per candidate); on o.fit.threads, each within one.
+// r->ranking and `fits` (one per candidate); on o.fit.threads, shared as they free.
 void ScoreAndFit(const RigidRingModel& baseline, const std::vector<const Effect*>& candidates,
                  const Dataset& warm, const Dataset& dataset, const DiagnoseOptions& o,
                  Steps* steps, DiagnosisResult* r, std::vector<IdentifyResult>* fits) {
