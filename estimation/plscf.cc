@@ -15,7 +15,7 @@
 
 #include <Eigen/Dense>
 
-#include "estimation/statistics.h"
+#include "estimation/plscf_internal.h"
 
 namespace ringid {
 namespace {
@@ -286,13 +286,18 @@ void MarkStable(const PlscfOptions& o, const PlscfOrder& below, PlscfOrder* orde
   }
 }
 
+}  // namespace
+
+namespace plscf_internal {
+
 // The physical poles: repeatedly, the stable pole (positive damping, in
 // [low_hz, high_hz]) whose window (the stability tolerances around it) holds
 // stable poles of the most orders; its cluster is the nearest of each order
 // in the window, and its pole that of the highest order.
+
 std::vector<ExtractedMode> ChoosePoles(const PlscfOptions& o,
                                        const std::vector<PlscfOrder>& diagram, double low_hz,
-                                       double high_hz, bool settled_damping = true) {
+                                       double high_hz, bool settled_damping) {
   struct Candidate {
     int order;  // index into diagram
     const PlscfPole* pole;
@@ -481,107 +486,11 @@ void Refine(const Frf& frf, bool weigh_by_sigma, PlscfResult* r) {
   }
 }
 
-// The physical poles whose damping has not settled across orders (a
-// lightly damped mode's climbs slowly with the order): clusters of poles
-// stable in frequency and vector, damping within kLooseDamping of the
-// centre, none within stable_frequency of a pole in `modes`.
-constexpr double kLooseDamping = 0.5;
-std::vector<ExtractedMode> UnsettledPoles(const Frf& frf, const PlscfOptions& o, const PlscfResult& r) {
-  PlscfOptions loose = o;
-  loose.stable_damping = kLooseDamping;
-  std::vector<ExtractedMode> out;
-  for (const PlscfBlock& b : r.blocks) {
-    for (ExtractedMode& m : ChoosePoles(loose, b.diagram, frf.frequencies_hz[r.lines.front()],
-                                        frf.frequencies_hz[r.lines.back()], false)) {
-      if (std::any_of(r.modes.begin(), r.modes.end(), [&](const ExtractedMode& q) {
-            return std::abs(q.frequency_hz - m.frequency_hz) <= o.stable_frequency * q.frequency_hz;
-          })) {
-        continue;
-      }
-      OnAllInputs(frf, b, &m);
-      out.push_back(std::move(m));
-    }
-  }
-  return out;
-}
+}  // namespace plscf_internal
 
-// The real poles a misfit may lack (a slip lag's root with noise is seldom
-// stable across orders, and below the band it leaves a 1 / s term): each
-// block's negative real poles of the highest order with |σ| / 2π at most
-// high_hz, and one at the band's lower edge; none within stable_frequency of
-// one in `r`.
-std::vector<double> RealPoleTrials(const Frf& frf, const PlscfOptions& o, const PlscfResult& r) {
-  std::vector<double> out = {-2 * M_PI * frf.frequencies_hz[r.lines.front()]};
-  for (const PlscfBlock& b : r.blocks) {
-    if (b.diagram.empty()) continue;
-    for (const PlscfPole& p : b.diagram.back().real_poles) {
-      const double sigma = p.eigenvalue.real();
-      if (sigma < 0 && -sigma / (2 * M_PI) <= frf.frequencies_hz[r.lines.back()]) out.push_back(sigma);
-    }
-  }
-  out.erase(std::remove_if(out.begin(), out.end(), [&](double sigma) {
-              return std::any_of(r.real_poles.begin(), r.real_poles.end(),
-                                 [&](double q) { return SameRealPole(o, sigma, q); });
-            }),
-            out.end());
-  return out;
-}
+namespace {
 
-// `r`'s poles with `mode` or `real_pole` added, fitted by LSFD and refined.
-PlscfResult WithPole(const Frf& frf, const PlscfOptions& o, const PlscfResult& r,
-                     const ExtractedMode* mode, std::optional<double> real_pole) {
-  PlscfResult trial;
-  trial.lines = r.lines;
-  trial.modes = r.modes;
-  if (mode) trial.modes.push_back(*mode);
-  trial.real_poles = r.real_poles;
-  if (real_pole) trial.real_poles.push_back(*real_pole);
-  std::vector<Complex> poles;
-  for (const ExtractedMode& m : trial.modes) poles.push_back(m.eigenvalue);
-  trial.functions = Lsfd(frf, trial.lines, poles, o.weigh_by_sigma, trial.real_poles);
-  Refine(frf, o.weigh_by_sigma, &trial);
-  return trial;
-}
-
-// Where the refined model misses the FRFs (weighted chi-square more than
-// kMisfitSd of its sd, sqrt(2 dof), above its degrees of freedom), the
-// unsettled pole or real pole that lowers chi-square most is added and all
-// refined again, if it lowers chi-square by more than the 1e-3 critical
-// value of its coordinates (a pole's 2 and 2 per function, a real pole's 1
-// and 1 per function): a likelihood-ratio test. At most kMaxAddedPoles rounds.
-constexpr double kMisfitSd = 5;
-constexpr int kMaxAddedPoles = 2;
-void AddMissedPoles(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
-  const double functions = static_cast<double>(frf.functions.size());
-  for (int round = 0; round < kMaxAddedPoles; ++round) {
-    const RefinementFit& fit = r->refinement;
-    if (!fit.status.ok() || !fit.weighted ||
-        fit.chi_square <= fit.degrees_of_freedom + kMisfitSd * std::sqrt(2.0 * fit.degrees_of_freedom)) {
-      return;
-    }
-    PlscfResult best;
-    double best_gain = 0;  // chi-square's drop beyond its critical value
-    const auto consider = [&](PlscfResult trial, double coordinates) {
-      if (!trial.refinement.status.ok()) return;
-      const double gain = fit.chi_square - trial.refinement.chi_square - ChiSquareCritical(1e-3, coordinates);
-      if (gain > best_gain) {
-        best_gain = gain;
-        best = std::move(trial);
-      }
-    };
-    for (const ExtractedMode& candidate : UnsettledPoles(frf, o, *r)) {
-      consider(WithPole(frf, o, *r, &candidate, std::nullopt), 2 + 2 * functions);
-    }
-    for (const double sigma : RealPoleTrials(frf, o, *r)) {
-      consider(WithPole(frf, o, *r, nullptr, sigma), 1 + functions);
-    }
-    if (best_gain <= 0) return;
-    r->modes = std::move(best.modes);
-    r->functions = std::move(best.functions);
-    r->real_poles = std::move(best.real_poles);
-    r->refinement = best.refinement;
-  }
-}
+using namespace plscf_internal;  // NOLINT: this file's own
 
 // One block's diagram, physical poles (their participation on all the
 // Frf's inputs, 0 on those outside the block) and real poles.
@@ -602,6 +511,9 @@ Status FitBlock(const Frf& frf, const PlscfOptions& o, const std::vector<int>& l
     const int m = (n + 1) * ni;
     PlscfOrder order;
     if (!PolesOfOrder(normal.t.topLeftCorner(m, m) - k.topLeftCorner(m, m), n, ni, dt, &order)) {
+      // Noise-free data are singular above their exact order: the diagram
+      // ends there where it holds enough orders to call a pole physical.
+      if (static_cast<int>(b->diagram.size()) > o.min_stable_orders) break;
       return Status::Failed("pLSCF: the normal equations of order " + std::to_string(n) +
                             " are singular");
     }
@@ -688,6 +600,7 @@ void ExtractModes(const Frf& frf, const PlscfOptions& o, PlscfResult* r) {
   if (o.refine && !r->modes.empty()) {
     Refine(frf, o.weigh_by_sigma, r);
     AddMissedPoles(frf, o, r);
+    DropInsignificantPoles(frf, o, r);
   }
   AddResidues(frf, r->functions, &r->modes);
   r->status = Status::Success(std::to_string(r->modes.size()) + " physical poles" +

@@ -66,6 +66,10 @@ struct PlscfOptions {
   // (estimation/modal_refine.h), with standard errors; else pLSCF's poles
   // and LSFD's residues, without.
   bool refine = true;
+  // After the refinement, the poles whose part of the synthesis is below the
+  // 1e-3 critical value of chi-square over their coordinates dropped
+  // (estimation/plscf_poles.cc); weighted fits only.
+  bool drop_insignificant = false;
 
   bool IsValid(std::string* why) const;
 };
