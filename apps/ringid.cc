@@ -20,6 +20,7 @@
 #include "apps/data_dir.h"
 #include "apps/flags.h"
 #include "apps/forces_command.h"
+#include "apps/poles_command.h"
 #include "apps/import_command.h"
 #include "apps/merge_command.h"
 #include "apps/predict_command.h"
@@ -357,6 +358,13 @@ const std::vector<Command>& Commands() {
        "by side. --report=FILE: the diagram, the poles and each FRF against its\n"
        "LSFD synthesis with its FRAC (ringid report draws it)",
        ExtractFlags(), ExtractCommand, ""},
+      {"poles", "--uff=FILE|--dataset=FILE --output=POLES.json",
+       "the physical poles of a test's FRFs alone, without a tire model or labels:\n"
+       "frequency, damping ratio and their standard errors, residues and shape per\n"
+       "pole (pLSCF's stabilisation diagram at the order the data need, refined by\n"
+       "maximum likelihood). --map: units and averages of a UFF file. --report=FILE:\n"
+       "the diagram and each FRF against its synthesis (ringid report draws it)",
+       PolesFlags(), PolesCommand, ""},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"

@@ -9,6 +9,7 @@
 #include "datasets/synthetic.h"
 #include "datasets/uff_dataset.h"
 #include "report/extract_report.h"
+#include "report/poles_report.h"
 #include "report/report.h"
 #include "report/schema.h"
 #include "validation/suites.h"
@@ -55,6 +56,14 @@ std::string ReportsMarkdown() {
              "(`frac`) and `chi2` with the measured `sigma`. `poles` are the physical poles;\n"
              "`frequency_sigma_hz` and `damping_sigma` are absent where the estimator gives\n"
              "no standard error (pLSCF gives none).") +
+         Section<PolesReport>(
+             "ringid poles --uff=FILE --output=POLES.json --report=FILE",
+             "`poles` is POLES.json as written: per set of lines (`conditions`: its units, and\n"
+             "`noise` \"given\" where every function has sigma or coherence with averages, else\n"
+             "\"from the residuals\"), the physical poles with their standard errors (null where\n"
+             "the refinement does not give one), each function's residue by the file's response\n"
+             "and reference names, and the shape over the side with several coordinates. Per\n"
+             "condition, the diagram and the synthesis as extract's.") +
          Section<BenchPaperReport>("ringid bench --suite=paper --output=FILE") +
          Section<BenchSyntheticReport>("ringid bench --suite=synthetic --output=FILE") +
          Section<BenchConditioningReport>("ringid bench --suite=conditioning --output=FILE") +

@@ -561,6 +561,18 @@ std::string UffUnitProblem(const std::string& name, bool force) {
   return UnknownName(force ? "force unit" : "motion unit", name, names);
 }
 
+bool UffFrfUnits(const UffFile& file, size_t k, const UffMap& map, double* si,
+                 FrfQuantity* quantity, std::string* said, LoadError* why) {
+  why->file = file.path;
+  const UffUnits* units = file.units.empty() ? nullptr : &file.units.front();
+  return Captured(why, [&] {
+    const FunctionUnits u = Units(file.functions[k], units, map, Where(file, k));
+    *si = u.si;
+    *quantity = u.quantity;
+    *said = u.said;
+  });
+}
+
 bool AddUffFrfs(const UffFile& file, const UffMap& map, UffImport* out, LoadError* error) {
   error->file = file.path;
   error->field.clear();

@@ -51,6 +51,12 @@ std::string UffUnitProblem(const std::string& name, bool force);
 // is placed.
 bool AddUffFrfs(const UffFile& file, const UffMap& map, UffImport* out, LoadError* error);
 
+// The factor that takes FRF `k` of `file` (function type 4) to SI and what
+// its response measures, by the map's units or the file's, as AddUffFrfs
+// reads them; false with `why` naming the record where they do not say.
+bool UffFrfUnits(const UffFile& file, size_t k, const UffMap& map, double* si,
+                 FrfQuantity* quantity, std::string* said, LoadError* why);
+
 }  // namespace ringid
 
 #endif  // RINGID_DATASETS_UFF_FRF_H_

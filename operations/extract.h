@@ -28,6 +28,9 @@ bool ExtractDataset(const Dataset& d, const std::string& source, const ExtractSe
 // function's LSFD synthesis on the lines pLSCF used
 // (operations/extract_report.cc).
 ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source);
+// One condition's part of it: its diagram, and each function against its
+// synthesis.
+ExtractCondition ExtractConditionOf(const ExtractedCondition& c, std::optional<std::string> name);
 
 }  // namespace ringid
 

@@ -41,6 +41,30 @@ std::vector<FrfFit> Synthesised(const ExtractedCondition& c) {
 
 }  // namespace
 
+ExtractCondition ExtractConditionOf(const ExtractedCondition& c, std::optional<std::string> name) {
+  ExtractCondition e;
+  e.condition = c.condition;
+  e.name = std::move(name);
+  e.status = c.plscf.status;
+  for (const PlscfBlock& b : c.plscf.blocks) {
+    ExtractBlock block;
+    for (int i : b.inputs) block.inputs.push_back(c.frf.inputs[i].name);
+    for (int o : b.outputs) block.outputs.push_back(c.frf.outputs[o].name);
+    for (const PlscfOrder& o : b.diagram) {
+      DiagramOrder order{o.order, {}};
+      for (const PlscfPole& p : o.poles) {
+        order.poles.push_back({p.frequency_hz, p.damping_ratio, p.stable_frequency,
+                               p.stable_damping, p.stable_vector});
+      }
+      block.diagram.push_back(std::move(order));
+    }
+    e.blocks.push_back(std::move(block));
+  }
+  e.real_poles_per_s = c.plscf.real_poles;
+  e.functions = Synthesised(c);
+  return e;
+}
+
 ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source) {
   ExtractBody b;
   b.dataset = source;
@@ -50,27 +74,9 @@ ExtractBody ExtractBodyOf(const ExtractResult& x, const std::string& source) {
   b.notes = x.notes;
   b.routes = x.routes;
   for (const ExtractedCondition& c : x.conditions) {
-    ExtractCondition e;
-    e.condition = c.condition;
-    if (x.dataset.NamesConditions()) e.name = x.dataset.conditions[c.condition].name;
-    e.status = c.plscf.status;
-    for (const PlscfBlock& b : c.plscf.blocks) {
-      ExtractBlock block;
-      for (int i : b.inputs) block.inputs.push_back(c.frf.inputs[i].name);
-      for (int o : b.outputs) block.outputs.push_back(c.frf.outputs[o].name);
-      for (const PlscfOrder& o : b.diagram) {
-        DiagramOrder order{o.order, {}};
-        for (const PlscfPole& p : o.poles) {
-          order.poles.push_back({p.frequency_hz, p.damping_ratio, p.stable_frequency,
-                                 p.stable_damping, p.stable_vector});
-        }
-        block.diagram.push_back(std::move(order));
-      }
-      e.blocks.push_back(std::move(block));
-    }
-    e.real_poles_per_s = c.plscf.real_poles;
-    e.functions = Synthesised(c);
-    b.conditions.push_back(std::move(e));
+    b.conditions.push_back(ExtractConditionOf(
+        c, x.dataset.NamesConditions() ? std::optional<std::string>(x.dataset.conditions[c.condition].name)
+                                       : std::nullopt));
   }
   return b;
 }

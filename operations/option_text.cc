@@ -265,7 +265,8 @@ const std::vector<OptionInfo>& EveryOption() {
     std::vector<OptionInfo> all;
     for (const auto& list : {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(),
                              OptionsOf<PredictSettings>(), OptionsOf<SimulateSettings>(),
-                             OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>()}) {
+                             OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>(),
+                             OptionsOf<PolesSettings>()}) {
       for (const OptionInfo& o : list) {
         if (!FindIn(all, o.name)) all.push_back(o);
       }

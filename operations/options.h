@@ -158,6 +158,17 @@ struct ExtractSettings {
   }
 };
 
+// poles (operations/poles.h).
+struct PolesSettings {
+  std::string band;  // "LO,HI" in Hz; empty: every line
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("band", &band,
+             "poles: the lines used, LO,HI in Hz (both ends included); default every line above 0 Hz");
+  }
+};
+
 // predict.
 struct PredictSettings {
   ParameterValues set;

@@ -25,20 +25,21 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 14;
+inline constexpr int kReportSchemaVersion = 15;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
   kExtract,  // operations/extract_report.h
+  kPoles,    // report/poles_report.h
   // validation/
   kBenchPaper, kBenchSynthetic, kBenchConditioning, kBenchDiagnosis, kBenchRolling, kBenchSpeed,
   kBenchForces, kBenchStatic, kBenchFrf, kBenchExtract,
 };
 template <>
 struct EnumNames<ReportKind> {
-  static constexpr std::array<const char*, 18> kNames = {
+  static constexpr std::array<const char*, 19> kNames = {
       "identify", "predict", "identifiability", "compare", "diagnose", "campaign", "forces",
-      "extract", "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis",
+      "extract", "poles", "bench_paper", "bench_synthetic", "bench_conditioning", "bench_diagnosis",
       "bench_rolling", "bench_speed", "bench_forces", "bench_static", "bench_frf", "bench_extract"};
 };
 

@@ -301,4 +301,39 @@ void ExtractPage(const ExtractReport& report, Page* page) {
   for (const ExtractCondition& c : b.conditions) ConditionSection(b, c, page);
 }
 
+// `ringid poles --report`: the poles with their standard errors, then each
+// condition's diagram and synthesis as extract's.
+void PolesPage(const PolesReport& report, Page* page) {
+  const PolesBody& b = report.body;
+  page->Summary({{"file", TextCell(b.dataset)},
+                 {"status", TextCell(ToString(b.status.outcome))},
+                 {"message", TextCell(b.status.message)},
+                 {"physical poles", NumberCell(b.poles.poles.size(), "%.0f")}});
+  for (const std::string& note : b.poles.notes) page->Note("Note: " + note);
+  std::vector<Row> rows;
+  ExtractBody lines;  // the poles as the diagrams mark them
+  for (const FoundPole& p : b.poles.poles) {
+    const PolesCondition& c = b.poles.conditions[p.condition];
+    rows.push_back({TextCell(c.name), NumberCell(p.frequency_hz, "%.4f"),
+                    NumberCell(p.frequency_sigma_hz, "%.3g"), NumberCell(p.damping_ratio, "%.5f"),
+                    NumberCell(p.damping_sigma, "%.3g"), NumberCell(p.stable_orders, "%.0f")});
+    ExtractedPole marked;
+    marked.condition = p.condition;
+    marked.frequency_hz = p.frequency_hz;
+    lines.poles.push_back(marked);
+  }
+  page->Heading("Physical poles");
+  page->Note("Clusters of stable poles of pLSCF's stabilisation diagram, refined by maximum "
+             "likelihood with their standard errors (σ); the noise of each condition is the "
+             "file's (coherence) or estimated from the residuals of the fit, as its line below says.");
+  page->Table({"condition", "Hz", "σ Hz", "damping ratio", "σ damping ratio", "stable orders"}, rows);
+  for (const PolesCondition& c : b.poles.conditions) {
+    page->Note(c.name + ": " + std::to_string(c.functions) + " FRFs, " + std::to_string(c.lines) +
+               " lines, orders 1-" + std::to_string(c.max_order) + ", noise " + c.noise +
+               ", residues in " + c.units + ".");
+  }
+  lines.conditions = b.conditions;
+  for (const ExtractCondition& c : b.conditions) ConditionSection(lines, c, page);
+}
+
 }  // namespace ringid::html

@@ -46,6 +46,7 @@ const PageKind kPageKinds[] = {
     {ReportKind::kCampaign, Typed<CampaignReport, html::CampaignPage>},
     {ReportKind::kForces, Typed<ForcesReport, html::ForcesPage>},
     {ReportKind::kExtract, Typed<ExtractReport, html::ExtractPage>},
+    {ReportKind::kPoles, Typed<PolesReport, html::PolesPage>},
     {ReportKind::kBenchPaper, Typed<BenchPaperReport, html::BenchPaperPage>},
     {ReportKind::kBenchSynthetic, Typed<BenchSyntheticReport, html::BenchSyntheticPage>},
     {ReportKind::kBenchConditioning, Typed<BenchConditioningReport, html::BenchConditioningPage>},

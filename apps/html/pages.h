@@ -5,6 +5,7 @@
 
 #include "apps/html/page.h"
 #include "report/extract_report.h"
+#include "report/poles_report.h"
 #include "report/report.h"
 #include "validation/extract_suite.h"
 #include "validation/suites.h"
@@ -19,6 +20,7 @@ void PredictPage(const PredictReport& report, Page* page);
 void CampaignPage(const CampaignReport& report, Page* page);
 void ForcesPage(const ForcesReport& report, Page* page);
 void ExtractPage(const ExtractReport& report, Page* page);
+void PolesPage(const PolesReport& report, Page* page);
 void BenchPaperPage(const BenchPaperReport& report, Page* page);
 void BenchSyntheticPage(const BenchSyntheticReport& report, Page* page);
 void BenchConditioningPage(const BenchConditioningReport& report, Page* page);

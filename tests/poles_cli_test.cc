@@ -1,0 +1,112 @@
+// `ringid poles` end to end: the example hammer file's poles equal its closed
+// form (the belt's three uncoupled coordinates, scripts/make_hammer_example.py),
+// a report the page draws, and files that are not FRFs refused in one line
+// with exit status 2 and nothing written: time records (the corpus's dataset
+// 58 files, and one written here), a single line, lines that do not increase.
+#include <cmath>
+#include <complex>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "datasets/synthetic.h"
+#include "tests/test_support.h"
+#include "tests/uff_writer.h"
+
+namespace ringid {
+namespace {
+
+using testing::Ringid;
+using testing::RunResult;
+using testing::Scratch;
+using PolesCorpusTest = testing::CorpusTest;
+
+bool Exists(const std::string& path) { return std::ifstream(path).good(); }
+
+// The damped frequencies (Hz) and damping ratios of m s² + c s + k.
+std::pair<double, double> Pole(double m, double k, double c) {
+  const double wn = std::sqrt(k / m), zeta = c / (2 * std::sqrt(k * m));
+  return {wn * std::sqrt(1 - zeta * zeta) / (2 * M_PI), zeta};
+}
+
+TEST(PolesCliTest, TheExampleHammerFileGivesTheBeltsThreeCoordinatesPoles) {
+  const Parameters p = ExampleCarTire();
+  std::vector<std::pair<double, double>> truth = {
+      Pole(p[Param::m_b], p[Param::k_bx], p[Param::c_bx]),
+      Pole(p[Param::m_b], p[Param::k_bz], p[Param::c_bz]),
+      Pole(p[Param::I_by], p[Param::k_btheta], p[Param::c_btheta])};
+  const std::string out = Scratch("poles.json"), report = Scratch("poles_report.json");
+  const RunResult r = Ringid("poles --uff=datasets/examples/car_tire_hammer.uff --output=" + out +
+                             " --report=" + report);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json poles = nlohmann::json::parse(testing::ReadFile(out));
+  EXPECT_EQ(poles["format"], "ringid-poles/1");
+  EXPECT_EQ(poles["conditions"][0]["noise"], "from the residuals");
+  // Two coordinates with the same pole are one pole of the file.
+  size_t distinct = 0;
+  for (size_t q = 0; q < truth.size(); ++q) {
+    bool seen = false;
+    for (size_t e = 0; e < q; ++e) seen |= std::abs(truth[e].first - truth[q].first) < 1e-9 * truth[q].first;
+    if (seen) continue;
+    ++distinct;
+    bool found = false;
+    for (const auto& pole : poles["poles"]) {
+      const double hz = pole["frequency_hz"], zeta = pole["damping_ratio"];
+      if (std::abs(hz - truth[q].first) > 1e-5 * truth[q].first) continue;
+      found = true;
+      EXPECT_NEAR(zeta, truth[q].second, 1e-5 * truth[q].second);
+      EXPECT_EQ(pole["residues"].size(), 6u);  // 3 responses x 2 references
+      EXPECT_EQ(pole["shape_over"], "responses");
+    }
+    EXPECT_TRUE(found) << truth[q].first << " Hz";
+  }
+  EXPECT_EQ(poles["poles"].size(), distinct);
+  const RunResult page = Ringid("report --input=" + report + " --output=" + Scratch("poles.html"));
+  EXPECT_EQ(page.status, 0) << page.err;
+}
+
+// A refused file: exit 2, one line on stderr holding `says`, no output.
+void ExpectRefused(const std::string& uff, const std::string& says) {
+  const std::string out = Scratch("refused_poles.json");
+  std::remove(out.c_str());
+  const RunResult r = Ringid("poles --uff=" + uff + " --output=" + out);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(uff), std::string::npos) << r.err;
+  EXPECT_FALSE(Exists(out));
+}
+
+std::string Written(const std::string& name, const testing::Fn& f) {
+  const std::string path = Scratch(name);
+  std::ofstream(path) << testing::Function58(f);
+  return path;
+}
+
+TEST(PolesCliTest, FilesWithoutFrfsOrLinesAreRefusedInOneLine) {
+  testing::Fn f;
+  f.response_node = 1, f.response_direction = 3, f.reference_node = 1, f.reference_direction = 3;
+  for (int i = 0; i < 40; ++i) f.y.emplace_back(1.0 / (1 + i), 0.1);
+  testing::Fn time = f;
+  time.type = 1;
+  ExpectRefused(Written("time.uff", time), "function type 1 (time response)");
+  testing::Fn single = f;
+  single.y.resize(1);
+  ExpectRefused(Written("single.uff", single), "1 line(s) above 0 Hz: poles need at least 7");
+  testing::Fn decreasing = f;
+  decreasing.min_hz = 200;
+  decreasing.step_hz = -2.5;
+  ExpectRefused(Written("decreasing.uff", decreasing), "abscissa increment) must be positive");
+}
+
+TEST_F(PolesCorpusTest, TheCorpusDataset58FilesHoldTimeRecordsAndAreRefused) {
+  for (const char* name : {"Sample_UFF58_ascii.uff", "Sample_UFF58b_bin.uff"}) {
+    ExpectRefused(testing::UffCorpus(name), "function type 1 (time response)");
+  }
+}
+
+}  // namespace
+}  // namespace ringid
