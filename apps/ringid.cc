@@ -364,7 +364,7 @@ const std::vector<Command>& Commands() {
        "pole (pLSCF's stabilisation diagram at the order the data need, refined by\n"
        "maximum likelihood). --map: units and averages of a UFF file. --report=FILE:\n"
        "the diagram and each FRF against its synthesis (ringid report draws it)",
-       PolesFlags(), PolesCommand, ""},
+       PolesFlags(), PolesCommand},
       {"diagnose", "--dataset=FILE",
        "the gap between the calibrated baseline and the data: where it lies,\n"
        "which effect explains it, how far it shrinks; --effects puts effects in\n"

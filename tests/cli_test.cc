@@ -1021,7 +1021,7 @@ TEST(CliTest, AMisspelledNameSuggestsTheNearestValidOne) {
   const RunResult r = Ringid("help simulat");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "ringid: unknown command 'simulat' (did you mean 'simulate'? expected help, "
-                   "predict, identify, identifiability, compare, simulate, extract, diagnose, bench, "
+                   "predict, identify, identifiability, compare, simulate, extract, poles, diagnose, bench, "
                    "report, export, import, merge, forces, schema, inputs, reference or commands); see "
                    "'ringid help'\n");
 }

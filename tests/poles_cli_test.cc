@@ -39,7 +39,7 @@ TEST(PolesCliTest, TheExampleHammerFileGivesTheBeltsThreeCoordinatesPoles) {
       Pole(p[Param::m_b], p[Param::k_bz], p[Param::c_bz]),
       Pole(p[Param::I_by], p[Param::k_btheta], p[Param::c_btheta])};
   const std::string out = Scratch("poles.json"), report = Scratch("poles_report.json");
-  const RunResult r = Ringid("poles --uff=datasets/examples/car_tire_hammer.uff --output=" + out +
+  const RunResult r = Ringid("poles --uff=" + testing::SourcePath("datasets/examples/car_tire_hammer.uff") + " --output=" + out +
                              " --report=" + report);
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json poles = nlohmann::json::parse(testing::ReadFile(out));
