@@ -69,7 +69,27 @@ int MaxOrder(const Frf& frf, int lines, const PlscfOptions& given) {
   return best;
 }
 
-// Each function's noise level from the residuals of `r` (estimation/poles.h).
+// Each line's sigma up to a factor per function: contract §9's shape,
+// |H| with the floor of kFrfSigmaFloor of the function's peak (of the
+// largest peak for a function that is zero).
+void SigmaShape(Frf* frf) {
+  double largest = 0;
+  std::vector<double> peak;
+  for (const FrfFunction& f : frf->functions) {
+    peak.push_back(0);
+    for (const std::complex<double>& h : f.h) peak.back() = std::max(peak.back(), std::abs(h));
+    largest = std::max(largest, peak.back());
+  }
+  for (size_t k = 0; k < peak.size(); ++k) {
+    FrfFunction& f = frf->functions[k];
+    f.sigma.clear();
+    f.coherence.reset();
+    for (const std::complex<double>& h : f.h) f.sigma.push_back(FrfSigma(1, h, peak[k] > 0 ? peak[k] : largest));
+  }
+}
+
+// Each function's factor from the residuals of `r`, fitted with the shape's
+// weights (estimation/poles.h).
 bool NoiseFromResiduals(const PlscfResult& r, Frf* frf) {
   if (!r.status.ok() || r.functions.size() != frf->functions.size() || r.lines.empty()) return false;
   std::vector<std::complex<double>> poles;
@@ -81,17 +101,17 @@ bool NoiseFromResiduals(const PlscfResult& r, Frf* frf) {
   for (size_t k = 0; k < level.size(); ++k) {
     const FrfFunction& f = frf->functions[k];
     double sum = 0;
-    for (int l : r.lines) sum += std::norm(r.functions[k].At(frf->frequencies_hz[l], poles, r.real_poles) - f.h[l]);
+    for (int l : r.lines) {
+      sum += std::norm((r.functions[k].At(frf->frequencies_hz[l], poles, r.real_poles) - f.h[l]) / f.sigma[l]);
+    }
     level[k] = std::sqrt(sum / (2.0 * r.lines.size()) * scale);
   }
-  // A function fitted exactly (one the structure does not couple, zero in
-  // the file) at a thousandth of the noisiest one's level.
+  // A function fitted exactly (zero in the file, say) at a thousandth of
+  // the noisiest one's level.
   const double largest = *std::max_element(level.begin(), level.end());
   if (!(largest > 0) || !std::isfinite(largest)) return false;
   for (size_t k = 0; k < level.size(); ++k) {
-    FrfFunction& f = frf->functions[k];
-    f.sigma.assign(f.h.size(), std::max(level[k], kExactFloor * largest));
-    f.coherence.reset();
+    for (double& sigma : frf->functions[k].sigma) sigma *= std::max(level[k], kExactFloor * largest);
   }
   return true;
 }
@@ -127,11 +147,10 @@ void FindPoles(const Frf& frf, const PolesOptions& o, FoundPoles* out) {
   PlscfOptions p;
   p.band_low_hz = o.band_low_hz;
   p.band_high_hz = o.band_high_hz;
-  p.weigh_by_sigma = !out->noise_from_residuals;
-  p.drop_insignificant = true;
-  if (out->noise_from_residuals) {
-    for (FrfFunction& f : out->fitted.functions) f.sigma.clear();
-  }
+  // With the shape alone the scale is unknown: no pole dropped or added by
+  // chi-square until the noise is estimated.
+  p.drop_insignificant = !out->noise_from_residuals;
+  if (out->noise_from_residuals) SigmaShape(&out->fitted);
   p.max_order = out->max_order = MaxOrder(out->fitted, lines, p);
   ExtractModes(out->fitted, p, &out->plscf);
   if (out->noise_from_residuals) {
@@ -140,7 +159,7 @@ void FindPoles(const Frf& frf, const PolesOptions& o, FoundPoles* out) {
                                            : out->plscf.status;
       return;
     }
-    p.weigh_by_sigma = true;
+    p.drop_insignificant = true;
     ExtractModes(out->fitted, p, &out->plscf);
   }
   out->status = out->plscf.status;

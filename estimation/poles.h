@@ -9,11 +9,13 @@
 //   H^T = B' A'^-1 (reciprocity, Maxwell-Betti), so that the denominator is
 //   over the responses; the poles are the same and the shape is over the
 //   references;
-// - no sigma for some function: the noise from the fit's residuals, each
-//   function's own level, s_f^2 = sum over its lines of |r|^2 / (2 lines)
-//   x values / degrees of freedom (at least a thousandth of the largest
-//   function's), from a fit with all values weighted equally; then the
-//   extraction again weighted by it.
+// - no sigma for some function: the noise from the fit's residuals. Each
+//   line's sigma is taken as contract §9's shape, |H| with the floor of
+//   kFrfSigmaFloor of the function's peak (a sensor's noise and leakage grow
+//   with the response), times a factor per function: a_f^2 = sum over its
+//   lines of |r / shape|^2 / (2 lines) x values / degrees of freedom (at
+//   least a thousandth of the largest a_f), from the extraction weighted by
+//   the shape alone; then the extraction again with sigma = a_f shape.
 #ifndef RINGID_ESTIMATION_POLES_H_
 #define RINGID_ESTIMATION_POLES_H_
 

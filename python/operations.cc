@@ -19,6 +19,7 @@
 #include "estimation/identify.h"
 #include "estimation/interrupt.h"
 #include "operations/extract.h"
+#include "operations/poles.h"
 #include "operations/files.h"
 #include "operations/fit.h"
 #include "operations/forces.h"
@@ -320,6 +321,28 @@ std::shared_ptr<ExtractResult> ExtractPy(py::handle dataset, py::handle paramete
   return held;
 }
 
+// POLES.json of `ringid poles` as a dict.
+py::object PolesPy(py::handle uff, py::handle dataset, py::handle map, const py::kwargs& kw) {
+  std::vector<std::string> argv;
+  const PolesSettings s = ReadOptions<PolesSettings>("poles", kw, &argv);
+  const auto path = [](const char* name, py::handle value) {
+    return value.is_none() ? std::string() : FileArg(name, value, "");
+  };
+  const PolesInputs in{path("uff", uff), path("map", map), path("dataset", dataset)};
+  PolesRun run;
+  InputError error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = FindFilePoles(in, s, &run, &error);
+  }
+  if (!ok && !run.body.status.ok() && !run.body.status.message.empty()) {
+    throw Error::Usage("poles: " + error.line);
+  }
+  if (!ok) throw Error::Of(error);
+  return JsonLoads(JsonWriter::ToJson(run.file).dump());
+}
+
 // "signature\n\nwhat\n\nKeyword arguments ...": the options of S.
 template <class S>
 std::string Doc(const std::string& signature, const std::string& what) {
@@ -455,6 +478,14 @@ void BindOperations(py::module_& m) {
                              "from its initial values (parameters=: a parameter set's path or "
                              "ParameterSet in their place, as --parameters), masses made known: "
                              "`ringid extract`. " + dataset_arg).c_str());
+  m.def("poles", &PolesPy, py::kw_only(), py::arg("uff") = py::none(),
+        py::arg("dataset") = py::none(), py::arg("map") = py::none(),
+        Doc<PolesSettings>("poles(*, uff=None, dataset=None, map=None, **options) -> dict",
+                           "The physical poles of a UFF file's (uff=, with map= for its units "
+                           "and averages) or a format-3 dataset's (dataset=) FRFs, without a "
+                           "tire model: POLES.json of `ringid poles` as a dict (format, source, "
+                           "conditions, poles, notes). Paths; raises ringid.Error on bad input, "
+                           "as `ringid` exits 2.").c_str());
   m.def("forces", &ForcesPy, py::arg("parameters"), py::arg("dataset"),
         Doc<ForcesSettings>(
             "forces(parameters, dataset, **options) -> ForcesResult",

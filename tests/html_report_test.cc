@@ -382,6 +382,22 @@ Made Extract() {
   return made;
 }
 
+// poles of the example hammer file with its map (the file's coherence: sigma
+// given), its --report; made once.
+Made Poles() {
+  static const Made made = [] {
+    const std::string out = Scratch("poles_report.json");
+    std::remove(out.c_str());
+    const RunResult r =
+        Ringid("poles --uff=" + SourcePath("datasets/examples/car_tire_hammer.uff") + " --map=" +
+               SourcePath("datasets/examples/car_tire_hammer_map.json") + " --output=" +
+               Scratch("poles.json") + " --report=" + out);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return Render(out);
+  }();
+  return made;
+}
+
 // The speed suite, timed briefly in process (the command times each case for
 // about half a second) and written as the suite writes it; made once.
 Made BenchSpeed() {
@@ -643,6 +659,27 @@ TEST(HtmlReportTest, ExtractDrawsTheDiagramAndEachFunctionAgainstItsSynthesis) {
     EXPECT_NE(svg.find("LSFD synthesis"), std::string::npos);
     EXPECT_NE(svg.find("(synthesised − measured) / σ"), std::string::npos);
   }
+}
+
+// poles: a row per pole with its standard errors, the condition's line, its
+// diagram and its functions against their synthesis.
+TEST(HtmlReportTest, PolesDrawsEachPoleWithItsErrorsAndTheDiagram) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Poles();
+  const json& poles = m.report["poles"]["poles"];
+  ASSERT_EQ(poles.size(), 2u);
+  for (const json& p : poles) {
+    char cell[64];
+    std::snprintf(cell, sizeof cell, "<td class=\"n\">%.4f</td>", p["frequency_hz"].get<double>());
+    EXPECT_NE(m.html.find(cell), std::string::npos) << cell;
+    std::snprintf(cell, sizeof cell, "<td class=\"n\">%.3g</td>", p["frequency_sigma_hz"].get<double>());
+    EXPECT_NE(m.html.find(cell), std::string::npos) << cell;
+  }
+  EXPECT_NE(m.html.find("noise given"), std::string::npos);
+  const std::string diagram = FigureSvg(m.html, "extract-c0-diagram");
+  ASSERT_FALSE(diagram.empty());
+  EXPECT_NE(diagram.find("physical pole"), std::string::npos);
+  EXPECT_FALSE(FigureSvg(m.html, "extract-c0-frfs-1").empty());
 }
 
 // At speed, a drum's two blocks (in-plane, out-of-plane) each get their
@@ -1307,6 +1344,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Kind{"predict", Predict}, Kind{"campaign", Campaign},
                       Kind{"forces", Forces}, Kind{"predict_speeds", PredictAtSpeeds},
                       Kind{"extract", Extract}, Kind{"extract_drum", ExtractDrum},
+                      Kind{"poles", Poles},
                       Kind{"bench_paper", [] { return Bench("paper"); }},
                       Kind{"bench_synthetic", [] { return Bench("synthetic"); }},
                       Kind{"bench_conditioning", [] { return Bench("conditioning"); }},

@@ -408,6 +408,31 @@ class WhatTheModuleLacked(ReportTestCase):
                 ringid.extract(TABLE1)
             self.assertIn(TABLE1 + ": conditions: no condition has an frf block", str(refused.exception))
 
+    def test_poles_equals_the_command_line_and_refuses_time_records(self):
+        uff = os.path.join(SOURCE, "datasets", "examples", "car_tire_hammer.uff")
+        with tempfile.TemporaryDirectory() as scratch:
+            out = os.path.join(scratch, "poles.json")
+            done = subprocess.run([BINARY, "poles", "--uff=" + uff, "--output=" + out,
+                                   "--band=10,240"],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(out) as f:
+                cli = json.load(f)
+            poles = ringid.poles(uff=uff, band="10,240")
+            self.assertSameReport(poles, cli, path="poles", tolerance=1e-9)
+            self.assertEqual(poles["conditions"][0]["low_hz"], 10)
+            self.assertEqual(poles["conditions"][0]["high_hz"], 240)
+            # The belt's x and theta coordinates (the example's closed form) at 67.6 Hz.
+            self.assertAlmostEqual(poles["poles"][0]["frequency_hz"], 67.6453, delta=1e-3)
+            time = os.path.join(scratch, "time.uff")
+            with open(uff) as f:
+                text = f.read()
+            with open(time, "w") as f:  # the FRFs written as time responses (type 1)
+                f.write(text.replace("    4         1    0         0", "    1         1    0         0"))
+            with self.assertRaises(ringid.Error) as refused:
+                ringid.poles(uff=time)
+            self.assertIn("poles need FRFs (function type 4)", str(refused.exception))
+
     def test_simulate_with_lug_forces_equals_the_command_line_and_forces_recover_them(self):
         with tempfile.TemporaryDirectory() as scratch:
             lugs, out = os.path.join(scratch, "lugs.json"), os.path.join(scratch, "response.json")
