@@ -32,17 +32,8 @@ std::string Text(double v) {
   return o.str();
 }
 
-// "dataset 58 #3 (line 120)", as the reader names it.
-std::string Where(const UffFile& file, size_t k) {
-  const UffFunction& f = file.functions[k];
-  return std::string("dataset 58") + (f.binary ? "b" : "") + " #" + std::to_string(k + 1) +
-         " (line " + std::to_string(f.line) + ")";
-}
-
-// "101:+3", as `import --uff` lists a node and direction.
-std::string NodeName(int node, int direction) {
-  return std::to_string(node) + ":" + (direction < 0 ? "-" : "+") + std::to_string(std::abs(direction));
-}
+std::string Where(const UffFile& file, size_t k) { return UffFunctionName(file, k); }
+std::string NodeName(int node, int direction) { return UffNodeName(node, direction); }
 
 std::string Trimmed(const std::string& s) { return std::string(uff_internal::Trim(s)); }
 // The file's text as a message may quote it: 'printable ASCII', at most 40 characters.
@@ -559,6 +550,16 @@ std::string UffUnitProblem(const std::string& name, bool force) {
   }
   if (std::find(names.begin(), names.end(), name) != names.end()) return "";
   return UnknownName(force ? "force unit" : "motion unit", name, names);
+}
+
+std::string UffFunctionName(const UffFile& file, size_t k) {
+  const UffFunction& f = file.functions[k];
+  return std::string("dataset 58") + (f.binary ? "b" : "") + " #" + std::to_string(k + 1) +
+         " (line " + std::to_string(f.line) + ")";
+}
+
+std::string UffNodeName(int node, int direction) {
+  return std::to_string(node) + ":" + (direction < 0 ? "-" : "+") + std::to_string(std::abs(direction));
 }
 
 bool UffFrfUnits(const UffFile& file, size_t k, const UffMap& map, double* si,

@@ -51,6 +51,11 @@ std::string UffUnitProblem(const std::string& name, bool force);
 // is placed.
 bool AddUffFrfs(const UffFile& file, const UffMap& map, UffImport* out, LoadError* error);
 
+// "dataset 58 #3 (line 120)": function k of the file as the reader names it.
+std::string UffFunctionName(const UffFile& file, size_t k);
+// "101:+3": a node and direction as `import --uff` lists them.
+std::string UffNodeName(int node, int direction);
+
 // The factor that takes FRF `k` of `file` (function type 4) to SI and what
 // its response measures, by the map's units or the file's, as AddUffFrfs
 // reads them; false with `why` naming the record where they do not say.

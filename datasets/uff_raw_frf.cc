@@ -14,15 +14,7 @@ namespace {
 
 using internal::Fail;
 
-std::string Where(const UffFile& file, size_t k) {
-  const UffFunction& f = file.functions[k];
-  return std::string("dataset 58") + (f.binary ? "b" : "") + " #" + std::to_string(k + 1) +
-         " (line " + std::to_string(f.line) + ")";
-}
-
-std::string EndName(int node, int direction) {
-  return std::to_string(node) + ":" + (direction < 0 ? "-" : "+") + std::to_string(std::abs(direction));
-}
+std::string Where(const UffFile& file, size_t k) { return UffFunctionName(file, k); }
 
 const char* FunctionTypeName(int type) {
   switch (type) {
@@ -42,7 +34,7 @@ int IndexOf(std::vector<End>* ends, std::vector<UffEnd>* keys, const UffEnd& key
   }
   keys->push_back(key);
   ends->emplace_back();
-  ends->back().name = EndName(key.node, key.direction);
+  ends->back().name = UffNodeName(key.node, key.direction);
   return static_cast<int>(keys->size()) - 1;
 }
 
