@@ -160,12 +160,16 @@ struct ExtractSettings {
 
 // poles (operations/poles.h).
 struct PolesSettings {
-  std::string band;  // "LO,HI" in Hz; empty: every line
+  std::string band;   // "LO,HI" in Hz; empty: every line
+  std::string units;  // "RESPONSE,REFERENCE", e.g. "g,N"; empty: the file's or the map's
 
   template <class Archive>
   void Serialize(Archive* a) {
     a->Visit("band", &band,
              "poles: the lines used, LO,HI in Hz (both ends included); default every line above 0 Hz");
+    a->Visit("units", &units,
+             "poles: the units of a UFF file's FRFs, RESPONSE,REFERENCE (e.g. g,N or mm/s^2,N: "
+             "docs/uff.md), over what the file or the map says; default the file's or the map's");
   }
 };
 

@@ -8,6 +8,7 @@
 #include "datasets/dataset.h"
 #include "datasets/uff.h"
 #include "datasets/uff_dataset.h"
+#include "datasets/uff_frf.h"
 #include "datasets/uff_raw_frf.h"
 #include "operations/extract.h"
 
@@ -45,8 +46,8 @@ bool ParseBand(const std::string& text, PolesOptions* o, InputError* error) {
   return true;
 }
 
-bool ReadSources(const PolesInputs& in, std::vector<Source>* sources, std::vector<std::string>* notes,
-                 InputError* error) {
+bool ReadSources(const PolesInputs& in, const std::string& units, std::vector<Source>* sources,
+                 std::vector<std::string>* notes, InputError* error) {
   LoadError load;
   if (!in.dataset.empty()) {
     Dataset d;
@@ -76,8 +77,23 @@ bool ReadSources(const PolesInputs& in, std::vector<Source>* sources, std::vecto
     *error = InputError::Of(load);
     return false;
   }
+  if (!units.empty()) {
+    const size_t comma = units.find(',');
+    const std::string response = units.substr(0, comma);
+    const std::string reference = comma == std::string::npos ? "" : units.substr(comma + 1);
+    for (const auto& [unit, force] : {std::pair{response, false}, std::pair{reference, true}}) {
+      const std::string problem = UffUnitProblem(unit, force);
+      if (!problem.empty()) {
+        *error = InputError::Option("--units: RESPONSE,REFERENCE: " + problem);
+        return false;
+      }
+    }
+    map.response_unit = response;
+    map.reference_unit = reference;
+  }
   UffRawFrfs raw;
-  if (!ReadUffRawFrfs(file, in.map.empty() ? nullptr : &map, kMinPoleLines, &raw, &load)) {
+  const bool mapped = !in.map.empty() || !units.empty();
+  if (!ReadUffRawFrfs(file, mapped ? &map : nullptr, kMinPoleLines, &raw, &load)) {
     *error = InputError::Of(load);
     return false;
   }
@@ -136,7 +152,11 @@ bool FindFilePoles(const PolesInputs& in, const PolesSettings& s, PolesRun* out,
   std::vector<Source> sources;
   PolesFile& file = out->file;
   file.source = in.uff.empty() ? in.dataset : in.uff;
-  if (!ReadSources(in, &sources, &file.notes, error)) return false;
+  if (!in.dataset.empty() && !s.units.empty()) {
+    *error = InputError::Option("--units: goes with --uff (a dataset's FRFs are in SI)");
+    return false;
+  }
+  if (!ReadSources(in, s.units, &sources, &file.notes, error)) return false;
   out->body.dataset = file.source;
   for (size_t c = 0; c < sources.size(); ++c) {
     FoundPoles found;

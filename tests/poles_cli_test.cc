@@ -102,6 +102,40 @@ TEST(PolesCliTest, FilesWithoutFrfsOrLinesAreRefusedInOneLine) {
   ExpectRefused(Written("decreasing.uff", decreasing), "abscissa increment) must be positive");
 }
 
+// A file without units: poles in the file's units, and --units=g,N gives the
+// same poles with residues g = 9.80665 m/s² times larger, in SI.
+TEST(PolesCliTest, AFileWithoutUnitsGivesPolesAndUnitsGiveItsResiduesInSi) {
+  testing::Fn f;
+  f.response_node = 1, f.response_direction = 3, f.reference_node = 1, f.reference_direction = 3;
+  f.min_hz = 1;
+  f.step_hz = 1;
+  for (int i = 0; i < 200; ++i) {  // an accelerance of 1 kg on 4e5 N/m, 20 N s/m
+    const double w = 2 * M_PI * (1 + i);
+    f.y.push_back(-w * w / std::complex<double>(4e5 - w * w, 20 * w));
+  }
+  const std::string uff = Written("unitless.uff", f), a = Scratch("file_units.json"),
+                    b = Scratch("si_units.json");
+  const RunResult plain = Ringid("poles --uff=" + uff + " --output=" + a);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const RunResult si = Ringid("poles --uff=" + uff + " --units=g,N --output=" + b);
+  ASSERT_EQ(si.status, 0) << si.err;
+  const nlohmann::json x = nlohmann::json::parse(testing::ReadFile(a)),
+                       y = nlohmann::json::parse(testing::ReadFile(b));
+  EXPECT_EQ(x["conditions"][0]["units"], "the file's units");
+  ASSERT_EQ(x["poles"].size(), 1u);
+  ASSERT_EQ(y["poles"].size(), 1u);
+  const auto [hz, zeta] = Pole(1, 4e5, 20);
+  EXPECT_NEAR(x["poles"][0]["frequency_hz"].get<double>(), hz, 1e-6 * hz);
+  EXPECT_NEAR(x["poles"][0]["damping_ratio"].get<double>(), zeta, 1e-6 * zeta);
+  EXPECT_NEAR(y["poles"][0]["frequency_hz"].get<double>(), hz, 1e-6 * hz);
+  const double re = x["poles"][0]["residues"][0]["re"], im = x["poles"][0]["residues"][0]["im"];
+  EXPECT_NEAR(y["poles"][0]["residues"][0]["re"].get<double>(), 9.80665 * re, 1e-6 * std::hypot(re, im));
+  EXPECT_NEAR(y["poles"][0]["residues"][0]["im"].get<double>(), 9.80665 * im, 1e-6 * std::hypot(re, im));
+  const RunResult bad = Ringid("poles --uff=" + uff + " --units=furlong,N --output=" + Scratch("bad_units.json"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--units"), std::string::npos) << bad.err;
+}
+
 TEST_F(PolesCorpusTest, TheCorpusDataset58FilesHoldTimeRecordsAndAreRefused) {
   for (const char* name : {"Sample_UFF58_ascii.uff", "Sample_UFF58b_bin.uff"}) {
     ExpectRefused(testing::UffCorpus(name), "function type 1 (time response)");
