@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/synthetic.h"
+#include "model/rigid_ring_model.h"
 #include "tests/test_support.h"
 #include "tests/uff_writer.h"
 
@@ -66,6 +67,36 @@ TEST(PolesCliTest, TheExampleHammerFileGivesTheBeltsThreeCoordinatesPoles) {
   EXPECT_EQ(poles["poles"].size(), distinct);
   const RunResult page = Ringid("report --input=" + report + " --output=" + Scratch("poles.html"));
   EXPECT_EQ(page.status, 0) << page.err;
+}
+
+// --dataset: the example hammer test's 28 FRFs (2 % noise, sigma given) give
+// the car tire's seven modes, each within 4 of its standard errors of the
+// model's at the parameters they were simulated from.
+TEST(PolesCliTest, ADatasetsFrfsGiveTheModelsModesWithinTheirErrors) {
+  const std::string out = Scratch("dataset_poles.json");
+  const RunResult r = Ringid("poles --dataset=" +
+                             testing::SourcePath("datasets/examples/car_tire_hammer_frf.json") +
+                             " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json poles = nlohmann::json::parse(testing::ReadFile(out));
+  EXPECT_EQ(poles["conditions"][0]["noise"], "given");
+  const ModalSolution truth = RigidRingModel().Solve(ExampleCarTire());
+  ASSERT_TRUE(truth.ok) << truth.error;
+  ASSERT_EQ(poles["poles"].size(), truth.modes.size());
+  for (const Mode& m : truth.modes) {
+    const nlohmann::json* nearest = nullptr;
+    for (const auto& p : poles["poles"]) {
+      if (!nearest || std::abs(p["frequency_hz"].get<double>() - m.frequency_hz) <
+                          std::abs((*nearest)["frequency_hz"].get<double>() - m.frequency_hz)) {
+        nearest = &p;
+      }
+    }
+    const nlohmann::json& p = *nearest;
+    EXPECT_LT(std::abs(p["frequency_hz"].get<double>() - m.frequency_hz),
+              4 * p["frequency_sigma_hz"].get<double>()) << LabelName(m.label);
+    EXPECT_LT(std::abs(p["damping_ratio"].get<double>() - m.damping_ratio),
+              4 * p["damping_sigma"].get<double>()) << LabelName(m.label);
+  }
 }
 
 // A refused file: exit 2, one line on stderr holding `says`, no output.
