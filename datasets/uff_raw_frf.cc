@@ -38,13 +38,15 @@ int IndexOf(std::vector<End>* ends, std::vector<UffEnd>* keys, const UffEnd& key
   return static_cast<int>(keys->size()) - 1;
 }
 
+constexpr char kMixed[] = "mixed: SI where the units say, else the file's";
+
 using PairKey = std::tuple<int, int, int, int>;
 PairKey Pair(const UffFunction& f) {
   return {f.response_node, f.response_direction, f.reference_node, f.reference_direction};
 }
 
 void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out) {
-  std::map<PairKey, size_t> coherences;
+  std::multimap<PairKey, size_t> coherences;  // a pair's coherences, on any lines
   size_t frfs = 0, dc = 0;
   std::map<int, size_t> others;  // function type -> how many
   for (size_t k = 0; k < file.functions.size(); ++k) {
@@ -97,14 +99,21 @@ void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out
       if (f.ordinate.specific_data_type == 8) quantity = FrfQuantity::kDisplacement;
       if (f.ordinate.specific_data_type == 11) quantity = FrfQuantity::kVelocity;
     }
+    if (std::all_of(f.y.begin() + static_cast<long>(first), f.y.end(), [](const auto& y) { return y == 0.0; })) {
+      out->notes.push_back(where + " " + UffNodeName(f.response_node, f.response_direction) + " / " +
+                           UffNodeName(f.reference_node, f.reference_direction) +
+                           ": zero at every line above 0 Hz; left out");
+      --frfs;
+      continue;
+    }
     auto c = std::find_if(out->conditions.begin(), out->conditions.end(),
                           [&](const UffRawCondition& r) { return r.frf.frequencies_hz == lines; });
     if (c == out->conditions.end()) {
       c = out->conditions.insert(out->conditions.end(), UffRawCondition{});
       c->frf.frequencies_hz = lines;
       c->units = known ? "SI (" + said + ")" : "the file's units";
-    } else if (c->units != (known ? "SI (" + said + ")" : "the file's units")) {
-      c->units = known && c->units != "the file's units" ? "SI" : "mixed: SI where the units say, else the file's";
+    } else if (c->units != (known ? "SI (" + said + ")" : "the file's units") && c->units != kMixed) {
+      c->units = known && c->units != "the file's units" ? "SI" : kMixed;
     }
     FrfFunction fn;
     fn.output = IndexOf(&c->frf.outputs, &c->outputs, {f.response_node, f.response_direction});
@@ -117,14 +126,15 @@ void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out
       }
     }
     for (size_t i = first; i < f.y.size(); ++i) fn.h.push_back(si * f.y[i]);
-    const auto coherence = coherences.find(Pair(f));
-    if (map && map->averages && coherence != coherences.end() &&
-        file.functions[coherence->second].x.size() == f.x.size()) {
-      const UffFunction& g = file.functions[coherence->second];
+    const UffFunction* g = nullptr;  // its pair's coherence on its lines
+    for (auto [at, end] = coherences.equal_range(Pair(f)); at != end; ++at) {
+      if (file.functions[at->second].x == f.x) g = &file.functions[at->second];
+    }
+    if (map && map->averages && g) {
       double peak = 0;
       for (const auto& h : fn.h) peak = std::max(peak, std::abs(h));
       for (size_t i = 0; i < fn.h.size(); ++i) {
-        const double gamma2 = std::min(std::max(g.y[first + i].real(), kUffMinCoherence), kUffMaxCoherence);
+        const double gamma2 = std::min(std::max(g->y[first + i].real(), kUffMinCoherence), kUffMaxCoherence);
         fn.sigma.push_back(std::max(CoherenceSigma(fn.h[i], gamma2, *map->averages),
                                     FrfSigma(kDefaultFrfRelativeSigma, 0.0, peak)));
       }
@@ -132,6 +142,7 @@ void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out
     }
     c->frf.functions.push_back(std::move(fn));
   }
+  if (out->conditions.empty()) Fail("", "every FRF is zero: no poles");
   if (dc) out->notes.push_back("lines at or below 0 Hz dropped from " + std::to_string(dc) + " FRF(s)");
   if (in_file_units) {
     out->notes.push_back(std::to_string(in_file_units) + " FRF(s) in the file's units: their units "
@@ -143,7 +154,7 @@ void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out
   }
   if (with_coherence < frfs) {
     out->notes.push_back(std::to_string(frfs - with_coherence) + " FRF(s) without coherence: the "
-                         "noise is estimated from the residuals of the fit");
+                         "noise of every FRF on their lines is estimated from the residuals of the fit");
   }
 }
 

@@ -39,10 +39,10 @@ struct UffRawFrfs {
 // behind coherence functions (type 6), which then give sigma; its points and
 // labels are not used. Without it, or where a function's units do not say,
 // values stay in the file's units (poles do not depend on them). Lines at or
-// below 0 Hz are dropped with a note. False, with `error` naming the record:
+// below 0 Hz, and FRFs that are zero at every line, are left out with a note. False, with `error` naming the record:
 // no FRF in the file (time records, type 1, are not FRFs), an FRF that is
 // not complex, lines that do not increase, fewer than `min_lines` lines above
-// 0 Hz.
+// 0 Hz, every FRF zero.
 bool ReadUffRawFrfs(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out,
                     LoadError* error);
 

@@ -120,7 +120,7 @@ bool NoiseFromResiduals(const PlscfResult& r, Frf* frf) {
 
 bool PolesOptions::IsValid(std::string* why) const {
   if (!(band_low_hz >= 0 && band_high_hz > band_low_hz)) {
-    *why = "band: need 0 <= low < high";
+    *why = "need 0 <= low < high";
     return false;
   }
   return true;

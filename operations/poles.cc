@@ -79,6 +79,10 @@ bool ReadSources(const PolesInputs& in, const std::string& units, std::vector<So
   }
   if (!units.empty()) {
     const size_t comma = units.find(',');
+    if (comma == std::string::npos) {
+      *error = InputError::Option("--units: '" + units + "' is not RESPONSE,REFERENCE (e.g. g,N)");
+      return false;
+    }
     const std::string response = units.substr(0, comma);
     const std::string reference = comma == std::string::npos ? "" : units.substr(comma + 1);
     for (const auto& [unit, force] : {std::pair{response, false}, std::pair{reference, true}}) {
@@ -186,6 +190,10 @@ bool FindFilePoles(const PolesInputs& in, const PolesSettings& s, PolesRun* out,
     }
     for (size_t m = 0; m < found.plscf.modes.size(); ++m) {
       file.poles.push_back(PoleOf(found, m, static_cast<int>(c)));
+    }
+    if (found.plscf.modes.empty()) {
+      file.notes.push_back(sources[c].name + ": no physical pole: no cluster of poles stable across " +
+                           std::to_string(PlscfOptions{}.min_stable_orders) + " orders in the band");
     }
     out->body.conditions.push_back(
         ExtractConditionOf({static_cast<int>(c), found.fitted, found.plscf}, sources[c].name));

@@ -167,6 +167,42 @@ TEST(PolesCliTest, AFileWithoutUnitsGivesPolesAndUnitsGiveItsResiduesInSi) {
   EXPECT_NE(bad.err.find("--units"), std::string::npos) << bad.err;
 }
 
+// A coherence gives sigma to its pair's FRF on its own lines only: two sets
+// of 100 lines, the coherence on the second's, the first's noise from the
+// residuals; an FRF that is zero everywhere left out with a note.
+TEST(PolesCliTest, ACoherenceGivesSigmaOnlyOnItsOwnLines) {
+  testing::Fn a;
+  a.response_node = 1, a.response_direction = 3, a.reference_node = 1, a.reference_direction = 3;
+  a.min_hz = 2.5, a.step_hz = 2.5;
+  testing::Fn b = a, coherence = a, zero = a;
+  b.min_hz = 1.25, b.step_hz = 1.25;
+  coherence.type = 6;
+  coherence.min_hz = 1.25, coherence.step_hz = 1.25;
+  zero.response_node = 2;
+  for (int i = 0; i < 100; ++i) {
+    for (testing::Fn* f : {&a, &b}) {
+      const double w = 2 * M_PI * (f->min_hz + i * f->step_hz);
+      f->y.push_back(-w * w / std::complex<double>(4e5 - w * w, 20 * w));
+    }
+    coherence.y.emplace_back(0.9, 0);
+    zero.y.emplace_back(0, 0);
+  }
+  const std::string uff = Scratch("two_lines.uff"), map = Scratch("averages_map.json"),
+                    out = Scratch("two_lines_poles.json");
+  std::ofstream(uff) << testing::Function58(a) + testing::Function58(zero) + testing::Function58(b) +
+                            testing::Function58(coherence);
+  std::ofstream(map) << R"({"format": "ringid-uff-map/2", "name": "averages",
+                            "points": [{"node": 1, "on": "belt"}], "averages": 10})";
+  const RunResult r = Ringid("poles --uff=" + uff + " --map=" + map + " --output=" + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json poles = nlohmann::json::parse(testing::ReadFile(out));
+  ASSERT_EQ(poles["conditions"].size(), 2u);
+  EXPECT_EQ(poles["conditions"][0]["noise"], "from the residuals");
+  EXPECT_EQ(poles["conditions"][1]["noise"], "given");
+  EXPECT_EQ(poles["conditions"][0]["functions"], 1);
+  EXPECT_NE(r.out.find("2:+3 / 1:+3: zero at every line above 0 Hz; left out"), std::string::npos) << r.out;
+}
+
 TEST_F(PolesCorpusTest, TheCorpusDataset58FilesHoldTimeRecordsAndAreRefused) {
   for (const char* name : {"Sample_UFF58_ascii.uff", "Sample_UFF58b_bin.uff"}) {
     ExpectRefused(testing::UffCorpus(name), "function type 1 (time response)");

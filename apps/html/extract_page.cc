@@ -313,6 +313,7 @@ void PolesPage(const PolesReport& report, Page* page) {
   std::vector<Row> rows;
   ExtractBody lines;  // the poles as the diagrams mark them
   for (const FoundPole& p : b.poles.poles) {
+    if (p.condition < 0 || p.condition >= static_cast<int>(b.poles.conditions.size())) continue;
     const PolesCondition& c = b.poles.conditions[p.condition];
     rows.push_back({TextCell(c.name), NumberCell(p.frequency_hz, "%.4f"),
                     NumberCell(p.frequency_sigma_hz, "%.3g"), NumberCell(p.damping_ratio, "%.5f"),
