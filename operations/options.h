@@ -69,6 +69,12 @@ void Speeds(Archive* a, NumberList* speeds) {
            "V1,V2,...: speeds in m/s (>= 0); simulate: one condition each (0: standing, else "
            "drum_V); predict: the modes at each (a Campbell diagram)");
 }
+template <class Archive>
+void Band(Archive* a, NumberList* band) {
+  a->Visit("band", band,
+           "LO,HI: use the lines of measured FRFs from LO to HI Hz only (all by default; a fit: "
+           "docs/conventions.md §9, the rigid ring does not hold far above its modes)");
+}
 }  // namespace option
 
 // identify, identifiability, compare, diagnose and ringid.Problem.
@@ -114,9 +120,7 @@ struct FitSettings {
              "derivatives and dH = -H dZ H (analytic), or per condition (auto): analytic "
              "where it measures FRFs or static stiffnesses and no modes, numeric where it "
              "measures modes");
-    a->Visit("band", &band,
-             "LO,HI: fit the lines of measured FRFs from LO to HI Hz only (all by default; "
-             "docs/conventions.md §9: the rigid ring does not hold far above its modes)");
+    option::Band(a, &band);
     option::Effects(a, &effects);
     a->Visit("bounds", &bounds,
              "NAME:LO:HI,...: bounds in the parameter's units, in place of a factor 1000 around "
@@ -160,13 +164,12 @@ struct ExtractSettings {
 
 // poles (operations/poles.h).
 struct PolesSettings {
-  std::string band;   // "LO,HI" in Hz; empty: every line
+  NumberList band{{}, false, "Hz"};  // LO,HI; empty: every line
   std::string units;  // "RESPONSE,REFERENCE", e.g. "g,N"; empty: the file's or the map's
 
   template <class Archive>
   void Serialize(Archive* a) {
-    a->Visit("band", &band,
-             "poles: the lines used, LO,HI in Hz (both ends included); default every line above 0 Hz");
+    option::Band(a, &band);
     a->Visit("units", &units,
              "poles: the units of a UFF file's FRFs, RESPONSE,REFERENCE (e.g. g,N or mm/s^2,N: "
              "docs/uff.md), over what the file or the map says; default the file's or the map's");

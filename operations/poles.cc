@@ -2,7 +2,6 @@
 #include "operations/poles.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <utility>
 
 #include "datasets/dataset.h"
@@ -22,22 +21,14 @@ struct Source {
   std::string units;
 };
 
-bool ParseBand(const std::string& text, PolesOptions* o, InputError* error) {
-  if (text.empty()) return true;
-  char* end = nullptr;
-  const double low = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != ',') {
-    *error = InputError::Option("--band: '" + text + "' is not LO,HI in Hz");
+bool ParseBand(const NumberList& band, PolesOptions* o, InputError* error) {
+  if (band.values.empty()) return true;
+  if (band.values.size() != 2) {
+    *error = InputError::Option("--band: LO,HI in Hz");
     return false;
   }
-  const char* rest = end + 1;
-  const double high = std::strtod(rest, &end);
-  if (end == rest || *end != '\0' || !std::isfinite(low) || !std::isfinite(high)) {
-    *error = InputError::Option("--band: '" + text + "' is not LO,HI in Hz");
-    return false;
-  }
-  o->band_low_hz = low;
-  o->band_high_hz = high;
+  o->band_low_hz = band.values[0];
+  o->band_high_hz = band.values[1];
   std::string why;
   if (!o->IsValid(&why)) {
     *error = InputError::Option("--band: " + why);

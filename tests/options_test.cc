@@ -25,7 +25,8 @@ using testing::SourcePath;
 
 std::vector<std::vector<OptionInfo>> Lists() {
   return {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(), OptionsOf<PredictSettings>(),
-          OptionsOf<SimulateSettings>(), OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>()};
+          OptionsOf<SimulateSettings>(), OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>(),
+          OptionsOf<PolesSettings>()};
 }
 
 // An option several operations take is one flag: one kind, default and
