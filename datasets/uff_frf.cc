@@ -562,6 +562,12 @@ std::string UffNodeName(int node, int direction) {
   return std::to_string(node) + ":" + (direction < 0 ? "-" : "+") + std::to_string(std::abs(direction));
 }
 
+std::optional<FrfQuantity> UffResponseQuantity(int specific_data_type) {
+  std::optional<FrfQuantity> q;
+  DataTypeQuantity(specific_data_type, &q);
+  return q;
+}
+
 bool UffFrfUnits(const UffFile& file, size_t k, const UffMap& map, double* si,
                  FrfQuantity* quantity, std::string* said, LoadError* why) {
   why->file = file.path;

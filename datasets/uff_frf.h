@@ -56,6 +56,10 @@ std::string UffFunctionName(const UffFile& file, size_t k);
 // "101:+3": a node and direction as `import --uff` lists them.
 std::string UffNodeName(int node, int direction);
 
+// What a response of record 9's specific data type measures: displacement
+// (8), velocity (11), acceleration (12); empty for any other.
+std::optional<FrfQuantity> UffResponseQuantity(int specific_data_type);
+
 // The factor that takes FRF `k` of `file` (function type 4) to SI and what
 // its response measures, by the map's units or the file's, as AddUffFrfs
 // reads them; false with `why` naming the record where they do not say.

@@ -96,8 +96,7 @@ void Read(const UffFile& file, const UffMap* map, int min_lines, UffRawFrfs* out
     if (!known) {
       si = 1;
       ++in_file_units;
-      if (f.ordinate.specific_data_type == 8) quantity = FrfQuantity::kDisplacement;
-      if (f.ordinate.specific_data_type == 11) quantity = FrfQuantity::kVelocity;
+      quantity = UffResponseQuantity(f.ordinate.specific_data_type).value_or(FrfQuantity::kAcceleration);
     }
     if (std::all_of(f.y.begin() + static_cast<long>(first), f.y.end(), [](const auto& y) { return y == 0.0; })) {
       out->notes.push_back(where + " " + UffNodeName(f.response_node, f.response_direction) + " / " +
