@@ -208,6 +208,12 @@ bool ReadFitOptions(FitSettings* s, IdentifyOptions* o, std::string* error) {
   return ReadSettings(s, error) && FitOptionsOf(*s, Jobs(), o, error) && NeedsDataset(error);
 }
 
+bool ReadIdentifiabilityOptions(IdentifiabilitySettings* s, IdentifiabilityOptions* o,
+                                std::string* error) {
+  return ReadSettings(s, error) && IdentifiabilityOptionsOf(*s, Jobs(), o, error) &&
+         NeedsDataset(error);
+}
+
 bool ReadDiagnoseOptions(DiagnoseSettings* s, DiagnoseOptions* o, std::string* error) {
   return ReadSettings(s, error) && DiagnoseOptionsOf(*s, Jobs(), o, error) &&
          NeedsDataset(error);

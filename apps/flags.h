@@ -103,6 +103,8 @@ bool ParseSet(ParameterValues* set, std::string* error);
 // (the cores shared among a campaign's --jobs), with --dataset given.
 bool ReadFitOptions(FitSettings* s, IdentifyOptions* o, std::string* error);
 bool ReadDiagnoseOptions(DiagnoseSettings* s, DiagnoseOptions* o, std::string* error);
+bool ReadIdentifiabilityOptions(IdentifiabilitySettings* s, IdentifiabilityOptions* o,
+                                std::string* error);
 // The one dataset of --dataset, s.fix applied (the outputs checked first).
 // A directory or a list in --dataset is refused as a campaign's, which
 // `campaigns` (identify and diagnose) run with --output_dir.

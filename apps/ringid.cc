@@ -93,13 +93,14 @@ int IdentifyCommand(int argc, char** argv) {
 
 int IdentifiabilityCommand(int argc, char** argv) {
   std::string error;
-  FitSettings settings;
+  IdentifiabilitySettings settings;
   IdentifiabilityOptions o;
   Dataset d;
-  if (!ReadFitOptions(&settings, &o.fit, &error) || !ReadFitDataset(settings, &d, &error)) {
+  if (!ReadIdentifiabilityOptions(&settings, &o, &error) ||
+      !ReadFitDataset(settings.fit, &d, &error)) {
     return Usage(error);
   }
-  const RigidRingModel model(settings.effects);
+  const RigidRingModel model(settings.fit.effects);
   IdentifiabilityResult r;
   {
     Progress progress("identifiability", 0, kProgressAfterSeconds);
@@ -337,7 +338,7 @@ const std::vector<Command>& Commands() {
        "what the data determine at the fitted point: rank, classes, Wald and\n"
        "profile intervals, free combinations, collinear pairs, identifiable\n"
        "subset, experiment advice",
-       FitFlags(), IdentifiabilityCommand},
+       Joined(FitFlags(), {"profiles"}), IdentifiabilityCommand},
       {"compare", "--dataset=FILE",
        "Levenberg-Marquardt and the Downhill Simplex from the same --starts:\n"
        "success rate, final costs, evaluations, time per fit",

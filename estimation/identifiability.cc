@@ -2,15 +2,19 @@
 #include "estimation/identifiability.h"
 
 #include "estimation/fit.h"
+#include "estimation/parallel.h"
 #include "estimation/problem.h"
 #include "estimation/uncertainty.h"
 #include "estimation/statistics.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -110,16 +114,36 @@ std::string RankExplanation(const Uncertainty& u, int n) {
   return e.str();
 }
 
-// Per coordinate: class, std, Wald and profile intervals.
-// o.on_step: the fit, then each coordinate's profile (step 2 + i), then the rest.
+// Whether the profiles run (o.profiles), and why or why not.
+ProfilesRun ProfilesFor(const Problem& problem, const IdentifiabilityOptions& o) {
+  const auto& conditions = problem.dataset().conditions;
+  const bool frfs = std::any_of(conditions.begin(), conditions.end(),
+                                [](const Condition& c) { return c.frf.has_value(); });
+  if (o.profile_steps == 0) return {false, "profile_steps is 0"};
+  switch (o.profiles) {
+    case Profiles::kNever: return {false, "--profiles=never"};
+    case Profiles::kAlways: return {true, "--profiles=always"};
+    case Profiles::kAuto: break;
+  }
+  if (frfs) {
+    return {false, "the data measure FRFs, where each profile is a series of FRF fits: "
+                   "--profiles=always computes them"};
+  }
+  return {true, "the data measure no FRFs, where refits are cheap"};
+}
+
+// Per coordinate: class, std, Wald and, where `run`, profile intervals, the
+// coordinates' profiles on o.fit.threads, each thread on its own copy of the
+// problem. o.on_step: the fit, then each coordinate's profile as it ends,
+// then the rest.
 std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eigen::VectorXd& xhat,
                                                double cost, const Uncertainty& u,
-                                               const IdentifiabilityOptions& o) {
+                                               const IdentifiabilityOptions& o, bool run) {
   const ParameterSetup& setup = problem.setup();
-  std::vector<ParameterIdentifiability> out;
-  for (int i = 0; i < setup.size(); ++i) {
-    if (o.on_step) o.on_step(1 + i, setup.size() + 2);
-    ParameterIdentifiability p;
+  const int n = setup.size();
+  std::vector<ParameterIdentifiability> out(n);
+  for (int i = 0; i < n; ++i) {
+    ParameterIdentifiability& p = out[i];
     p.key = setup.key(i);
     p.value = setup.ToPhysical(i, xhat[i]);
     p.identifiable = u.classes[i];
@@ -129,11 +153,26 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
       p.std = setup.PhysicalStd(i, xhat[i], s);
       p.wald_95 = setup.Interval95(i, xhat[i], s);
     }
-    if (o.profile_steps > 0) {
-      p.profile_95 = internal::ProfileCoordinate(problem, xhat, cost, i, u.std[i], o);
-    }
-    out.push_back(p);
   }
+  const int threads = run ? std::min(internal::ThreadsFor(o.fit.threads), n) : 1;
+  std::vector<std::unique_ptr<Problem>> copies(threads);
+  std::mutex mutex;
+  int done = 0;
+  std::atomic<int> next{0};
+  internal::ParallelFor(threads, threads, [&](int t) {
+    for (int i; (i = next++) < n;) {
+      if (run) {
+        if (t > 0 && !copies[t]) {
+          Status created;
+          copies[t] = Problem::Create(problem.model(), problem.dataset(), problem.residuals().options(), &created);
+        }
+        const Problem& mine = copies[t] ? *copies[t] : problem;
+        out[i].profile_95 = internal::ProfileCoordinate(mine, xhat, cost, i, u.std[i], o);
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (o.on_step) o.on_step(1 + ++done, n + 2);
+    }
+  });
   return out;
 }
 
@@ -549,7 +588,9 @@ void AnalyzeIdentifiability(const Problem& problem, const IdentifyResult& fit,
   r->singular_values = u.singular_values;
   r->coordinate_names = r->fit.coordinate_names;
   r->rank_explanation = RankExplanation(u, setup.size());
-  r->parameters = Classify(problem, xhat, r->fit.cost, u, o);
+  r->profiles = ProfilesFor(problem, o);
+  if (o.on_step) o.on_step(1, setup.size() + 2);
+  r->parameters = Classify(problem, xhat, r->fit.cost, u, o, r->profiles.computed);
   CombinationList combinations(u.structural_directions, o.same_direction);
   StructuralDirections(u, setup, &combinations);
   CollinearPairs(J, setup, o, &combinations, r);
@@ -606,6 +647,7 @@ std::string IdentifiabilityResult::FullReport() const {
                   sd, wald, prof.c_str());
     o << line;
   }
+  if (!profiles.computed) o << "  profile intervals not computed: " << profiles.why << "\n";
   o << "\n  combinations the data leave free:\n";
   for (const Combination& c : combinations) {
     o << "    " << c.text << "  (" << c.meaning << ")\n";

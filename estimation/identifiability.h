@@ -30,6 +30,9 @@ struct IdentifiabilityOptions {
   int profile_steps = 12;
   double profile_first_step = 0.02;
   double profile_growth = 1.6;
+  // Whether the profiles run at all (the report's `profiles` says why);
+  // the coordinates' profiles share fit.threads.
+  Profiles profiles = Profiles::kAuto;
   // Pairs whose normalised Jacobian columns give a collinearity index
   // (Brun et al. 2001) above this are not separately identifiable.
   double collinearity_threshold = 1e3;
@@ -87,6 +90,18 @@ struct ProfileInterval {
     a->Visit("lower_failed_at", &lower_failed_at);
     a->Visit("upper_failed_at", &upper_failed_at);
     a->Visit("curve_value_delta_chi2", &curve);
+  }
+};
+
+// Whether the profile intervals were computed, and why or why not.
+struct ProfilesRun {
+  bool computed = false;
+  std::string why;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    a->Visit("computed", &computed);
+    a->Visit("why", &why);
   }
 };
 
@@ -170,6 +185,7 @@ struct IdentifiabilityResult {
   std::string rank_explanation;
   std::vector<std::string> coordinate_names;
   std::vector<ParameterIdentifiability> parameters;  // free coordinates
+  ProfilesRun profiles;
   std::vector<Combination> combinations;
   Eigen::MatrixXd correlation;  // empty when the covariance is unavailable
   std::vector<CollinearSubset> collinear_pairs;
@@ -189,6 +205,7 @@ struct IdentifiabilityResult {
     a->Visit("singular_values", &singular_values);
     a->Visit("coordinates", &coordinate_names);
     a->VisitKeyed("parameters", &parameters, &ParameterIdentifiability::key);
+    a->Visit("profiles", &profiles);
     a->Visit("combinations", &combinations);
     a->Visit("correlation", &correlation);
     a->Visit("collinear_pairs", &collinear_pairs);

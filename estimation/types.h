@@ -50,6 +50,19 @@ struct EnumNames<Derivatives> {
   static constexpr std::array<const char*, 3> kNames = {"numeric", "analytic", "auto"};
 };
 
+// Whether identifiability computes profile intervals: each is a series of
+// refits, so where one fit is costly (FRFs) only when asked.
+enum class Profiles {
+  kAuto,    // computed unless a condition measures FRFs
+  kAlways,
+  kNever,
+};
+
+template <>
+struct EnumNames<Profiles> {
+  static constexpr std::array<const char*, 3> kNames = {"auto", "always", "never"};
+};
+
 // Where a start of an identification came from.
 // kEffectAtZero: diagnose's re-calibration of the baseline from an effect's
 // fit that held the effect at 0 and beat the baseline.

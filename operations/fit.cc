@@ -61,6 +61,13 @@ bool DiagnoseOptionsOf(const DiagnoseSettings& s, int jobs, DiagnoseOptions* o,
   return FitOptionsOf(s.fit, jobs, &o->fit, error);
 }
 
+bool IdentifiabilityOptionsOf(const IdentifiabilitySettings& s, int jobs,
+                              IdentifiabilityOptions* o, std::string* error) {
+  *o = IdentifiabilityOptions{};
+  o->profiles = s.profiles;
+  return FitOptionsOf(s.fit, jobs, &o->fit, error);
+}
+
 bool ApplyFix(const std::vector<Param>& fix, Dataset* d, std::string* error) {
   if (!FixParameters(fix, d, error)) {
     *error = "--" + *error;

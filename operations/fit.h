@@ -10,6 +10,7 @@
 #include "datasets/dataset.h"
 #include "datasets/parameter_files.h"
 #include "estimation/diagnose.h"
+#include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "operations/options.h"
 
@@ -23,6 +24,10 @@ bool FitOptionsOf(const FitSettings& settings, int jobs, IdentifyOptions* option
 // The same with the diagnosis's level.
 bool DiagnoseOptionsOf(const DiagnoseSettings& settings, int jobs, DiagnoseOptions* options,
                        std::string* error);
+
+// The same with identifiability's profiles.
+bool IdentifiabilityOptionsOf(const IdentifiabilitySettings& settings, int jobs,
+                              IdentifiabilityOptions* options, std::string* error);
 
 // The parameters of `fix` held at their initial values in `dataset`
 // (FixParameters); false with the line naming --fix.

@@ -264,6 +264,7 @@ const std::vector<OptionInfo>& EveryOption() {
   static const std::vector<OptionInfo>* every = new std::vector<OptionInfo>([] {
     std::vector<OptionInfo> all;
     for (const auto& list : {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(),
+                             OptionsOf<IdentifiabilitySettings>(),
                              OptionsOf<PredictSettings>(), OptionsOf<SimulateSettings>(),
                              OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>(),
                              OptionsOf<PolesSettings>()}) {

@@ -21,6 +21,7 @@
 
 #include "datasets/synthetic.h"
 #include "estimation/diagnose.h"
+#include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "estimation/plscf.h"
 #include "model/effects.h"
@@ -147,6 +148,21 @@ struct DiagnoseSettings {
              "refit only the effects whose score test at the baseline's optimum has a p-value "
              "below this, and the effects whose signatures overlap theirs; 1 refits every "
              "effect");
+  }
+};
+
+// identifiability.
+struct IdentifiabilitySettings {
+  FitSettings fit;
+  Profiles profiles = IdentifiabilityOptions().profiles;
+
+  template <class Archive>
+  void Serialize(Archive* a) {
+    fit.Serialize(a);
+    a->Visit("profiles", &profiles,
+             "identifiability: profile-likelihood intervals (a series of refits per "
+             "parameter): auto computes them unless the data measure FRFs, where each refit "
+             "is an FRF fit");
   }
 };
 

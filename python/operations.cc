@@ -83,8 +83,13 @@ bool LibraryOptions(const FitSettings& s, IdentifyOptions* o, std::string* error
 bool LibraryOptions(const DiagnoseSettings& s, DiagnoseOptions* o, std::string* error) {
   return DiagnoseOptionsOf(s, 1, o, error);
 }
+bool LibraryOptions(const IdentifiabilitySettings& s, IdentifiabilityOptions* o,
+                    std::string* error) {
+  return IdentifiabilityOptionsOf(s, 1, o, error);
+}
 const FitSettings& FitOf(const FitSettings& s) { return s; }
 const FitSettings& FitOf(const DiagnoseSettings& s) { return s.fit; }
+const FitSettings& FitOf(const IdentifiabilitySettings& s) { return s.fit; }
 
 // What a fitting operation reads: its settings (S) and the library's options
 // (O) from them, the dataset with fix applied, and the provenance.
@@ -142,11 +147,10 @@ std::shared_ptr<IdentifyHeld> IdentifyPy(py::handle dataset, const py::kwargs& k
 
 std::shared_ptr<Held<IdentifiabilityReport>> IdentifiabilityPy(py::handle dataset,
                                                                const py::kwargs& kw) {
-  const auto in = ReadFit<FitSettings, IdentifyOptions>("identifiability", dataset, kw);
-  IdentifiabilityOptions o;
-  o.fit = in.options;
+  const auto in =
+      ReadFit<IdentifiabilitySettings, IdentifiabilityOptions>("identifiability", dataset, kw);
   return RunFit<IdentifiabilityReport>(in, [&](const RigidRingModel& model, IdentifiabilityResult* r) {
-    AnalyzeIdentifiability(model, in.dataset, o, r);
+    AnalyzeIdentifiability(model, in.dataset, in.options, r);
   });
 }
 
@@ -446,7 +450,7 @@ void BindOperations(py::module_& m) {
                          "Fits the parameters to a dataset, with covariance and identifiability: "
                          "`ringid identify`. " + dataset_arg).c_str());
   m.def("identifiability", &IdentifiabilityPy, py::arg("dataset"),
-        Doc<FitSettings>("identifiability(dataset, **options) -> IdentifiabilityResult",
+        Doc<IdentifiabilitySettings>("identifiability(dataset, **options) -> IdentifiabilityResult",
                          "What the data determine at the fitted point: `ringid identifiability`. " +
                              dataset_arg).c_str());
   m.def("compare", &ComparePy, py::arg("dataset"),

@@ -25,7 +25,7 @@
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 15;
+inline constexpr int kReportSchemaVersion = 16;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,

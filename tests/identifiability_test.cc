@@ -706,5 +706,79 @@ TEST(IdentifiabilityTest, ItsStepsRunFromNoneToAllOverTheFitAndEachProfile) {
   }
 }
 
+// A hammer test (lines every 5 Hz from 5 to 150 Hz, 2 % noise) with three
+// parameters free: an FRF problem small enough to profile in a test.
+Dataset ThreeFreeHammer() {
+  std::mt19937_64 rng(7);
+  const Parameters truth = ExampleCarTire();
+  Dataset d = PlanSimulation(truth, 0.0, {0}, {}, &rng);
+  d.conditions[0].frf = HammerTest(0.31, 5, 150, 5);
+  SimulateOptions so;
+  so.modes = false;
+  so.frf_noise = 0.02;
+  std::string why;
+  EXPECT_TRUE(Simulate(RigidRingModel(), truth, so, &rng, &d, &why)) << why;
+  std::vector<Param> fix;
+  for (const auto& [p, value] : d.initial) {
+    if (p != Param::k_bx && p != Param::k_btheta && p != Param::k_by) fix.push_back(p);
+  }
+  EXPECT_TRUE(FixParameters(fix, &d, &why)) << why;
+  return d;
+}
+
+// Profiles are a series of refits each: on FRFs they run only when asked,
+// and the report says so. Asked, on a fit this well determined (2 % noise,
+// 30 lines x 28 functions, three parameters), each profile interval is the
+// Wald interval, which a linear model would make exact.
+TEST(IdentifiabilityTest, FrfDataAreProfiledOnlyWhenAskedAndThenAsWaldPredicts) {
+  const Dataset d = ThreeFreeHammer();
+  IdentifiabilityOptions o;
+  o.fit.starts = 1;
+  IdentifiabilityResult skipped, profiled;
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &skipped);
+  ASSERT_TRUE(skipped.status.ok()) << skipped.status.message;
+  EXPECT_FALSE(skipped.profiles.computed);
+  EXPECT_NE(skipped.profiles.why.find("FRFs"), std::string::npos) << skipped.profiles.why;
+  ASSERT_EQ(skipped.parameters.size(), 3u);
+  for (const ParameterIdentifiability& p : skipped.parameters) {
+    EXPECT_FALSE(p.profile_95.computed) << p.key.Text();
+    EXPECT_TRUE(p.wald_95) << p.key.Text();
+  }
+  o.profiles = Profiles::kAlways;
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &profiled);
+  ASSERT_TRUE(profiled.status.ok()) << profiled.status.message;
+  EXPECT_TRUE(profiled.profiles.computed);
+  for (const ParameterIdentifiability& p : profiled.parameters) {
+    ASSERT_TRUE(p.profile_95.computed && p.profile_95.lower && p.profile_95.upper) << p.key.Text();
+    ASSERT_TRUE(p.wald_95) << p.key.Text();
+    const double width = p.wald_95->second - p.wald_95->first;
+    EXPECT_NEAR(*p.profile_95.lower, p.wald_95->first, 0.02 * width) << p.key.Text();
+    EXPECT_NEAR(*p.profile_95.upper, p.wald_95->second, 0.02 * width) << p.key.Text();
+  }
+}
+
+// The coordinates' profiles share the threads, each on its own copy of the
+// problem: the same curves on two threads as on one.
+TEST(IdentifiabilityTest, ProfilesOnTwoThreadsAreThoseOnOne) {
+  Dataset d;
+  LoadError e;
+  ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
+  IdentifiabilityOptions o;
+  o.profile_steps = 3;
+  IdentifiabilityResult one, two;
+  o.fit.threads = 1;
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &one);
+  o.fit.threads = 2;
+  AnalyzeIdentifiability(RigidRingModel(), d, o, &two);
+  ASSERT_TRUE(one.status.ok() && two.status.ok()) << one.status.message << two.status.message;
+  EXPECT_TRUE(one.profiles.computed);
+  ASSERT_EQ(one.parameters.size(), two.parameters.size());
+  for (size_t i = 0; i < one.parameters.size(); ++i) {
+    EXPECT_EQ(one.parameters[i].profile_95.curve, two.parameters[i].profile_95.curve) << i;
+    EXPECT_EQ(one.parameters[i].profile_95.lower, two.parameters[i].profile_95.lower) << i;
+    EXPECT_EQ(one.parameters[i].profile_95.upper, two.parameters[i].profile_95.upper) << i;
+  }
+}
+
 }  // namespace
 }  // namespace ringid

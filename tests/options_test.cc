@@ -24,7 +24,8 @@ using testing::Scratch;
 using testing::SourcePath;
 
 std::vector<std::vector<OptionInfo>> Lists() {
-  return {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(), OptionsOf<PredictSettings>(),
+  return {OptionsOf<FitSettings>(), OptionsOf<DiagnoseSettings>(),
+          OptionsOf<IdentifiabilitySettings>(), OptionsOf<PredictSettings>(),
           OptionsOf<SimulateSettings>(), OptionsOf<ForcesSettings>(), OptionsOf<ExtractSettings>(),
           OptionsOf<PolesSettings>()};
 }
@@ -77,6 +78,7 @@ void ExpectDefaultsReadBack() {
 TEST(OptionsTest, DefaultsReadBackFromTheirText) {
   ExpectDefaultsReadBack<FitSettings>();
   ExpectDefaultsReadBack<DiagnoseSettings>();
+  ExpectDefaultsReadBack<IdentifiabilitySettings>();
   ExpectDefaultsReadBack<PredictSettings>();
   ExpectDefaultsReadBack<SimulateSettings>();
   ExpectDefaultsReadBack<ForcesSettings>();
@@ -135,6 +137,7 @@ TEST(OptionsTest, EachBadValueIsTheOneLineNamingTheOption) {
 TEST(OptionsTest, EachCommandsHelpListsItsOptions) {
   const std::map<std::string, std::vector<OptionInfo>> commands = {
       {"identify", OptionsOf<FitSettings>()}, {"diagnose", OptionsOf<DiagnoseSettings>()},
+      {"identifiability", OptionsOf<IdentifiabilitySettings>()},
       {"predict", OptionsOf<PredictSettings>()}, {"simulate", OptionsOf<SimulateSettings>()},
       {"forces", OptionsOf<ForcesSettings>()}};
   for (const auto& [command, options] : commands) {
