@@ -63,6 +63,7 @@ void ParametersSection(const IdentifiabilityResult& r, Page* page) {
   page->Table({"parameter", "value", "unit", "identifiable", "std", "Wald 95 %", "profile 95 %",
                "reason"},
               rows);
+  if (!r.profiles.computed) page->Note("Profile intervals not computed: " + r.profiles.why + ".");
 }
 
 void TableSections(const IdentifiabilityResult& r, Page* page) {
