@@ -1,0 +1,183 @@
+#include "model/obstacle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace ringid {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A linear piece of the profile over [x0, x1] (closed: a jump's higher side
+// counts at the jump, as the sup in H does).
+struct Piece {
+  double x0, x1, h0, h1;
+};
+
+// The profile's pieces over [lo, hi], each clipped to it.
+void ForEachPiece(const ObstacleProfile& p, double lo, double hi,
+                  const std::function<void(const Piece&)>& f) {
+  const auto flat_or = [&](double x0, double x1, double h0, double h1) {
+    const double a = std::max(x0, lo), b = std::min(x1, hi);
+    if (a > b) return;
+    const double slope = x1 > x0 && std::isfinite(x1 - x0) ? (h1 - h0) / (x1 - x0) : 0;
+    const double at_a = std::isfinite(x0) ? h0 + slope * (a - x0) : h0;
+    const double at_b = std::isfinite(x0) ? h0 + slope * (b - x0) : h1;
+    f({a, b, at_a, at_b});
+  };
+  switch (p.kind) {
+    case ProfileKind::kCleat: {
+      const double half = 0.5 * p.length_m;
+      flat_or(-kInf, -half, 0, 0);
+      flat_or(-half, half, p.height_m, p.height_m);
+      flat_or(half, kInf, 0, 0);
+      return;
+    }
+    case ProfileKind::kLugs: {
+      const double half = 0.5 * p.length_m, P = p.pitch_m;
+      for (double k = std::floor(lo / P) - 1; k <= std::ceil(hi / P) + 1; ++k) {
+        flat_or(k * P - half, k * P + half, p.height_m, p.height_m);
+        flat_or(k * P + half, (k + 1) * P - half, 0, 0);
+      }
+      return;
+    }
+    case ProfileKind::kPoints: {
+      const size_t n = p.x_m.size();
+      flat_or(-kInf, p.x_m.front(), 0, 0);
+      for (size_t i = 0; i + 1 < n; ++i) flat_or(p.x_m[i], p.x_m[i + 1], p.h_m[i], p.h_m[i + 1]);
+      flat_or(p.x_m.back(), kInf, 0, 0);
+      return;
+    }
+  }
+}
+
+// The cam's bottom below its lowest point at offset s (|s| <= a), <= 0.
+double Drop(const TandemCam& c, double s) {
+  const double u = std::min(std::abs(s) / c.a_e, 1.0);
+  return c.b_e * (std::pow(1 - std::pow(u, c.c_e), 1 / c.c_e) - 1);
+}
+
+// Where the drop's slope is -m: the offset s (sign of m) with
+// (b/a) g(|s|/a) = |m|, g(u) = u^(c-1) (1 - u^c)^((1-c)/c) = t^((c-1)/c) for
+// t = u^c / (1 - u^c).
+double Stationary(const TandemCam& c, double m) {
+  if (m == 0) return 0;
+  const double t = std::pow(std::abs(m) * c.a_e / c.b_e, c.c_e / (c.c_e - 1));
+  const double u = std::isfinite(t) ? std::pow(t / (1 + t), 1 / c.c_e) : 1.0;
+  return std::copysign(c.a_e * u, m);
+}
+
+}  // namespace
+
+LanePattern ObstacleProfile::Pattern() const {
+  if (pattern) return *pattern;
+  return kind == ProfileKind::kLugs ? LanePattern::kChevron : LanePattern::kInclined;
+}
+
+std::string ObstacleProfile::Invalid() const {
+  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  if (kind != ProfileKind::kPoints) {
+    if (!std::isfinite(height_m)) return "height_m: must be finite";
+    if (!positive(length_m)) return "length_m: must be positive";
+  }
+  if (kind == ProfileKind::kLugs && !(positive(pitch_m) && pitch_m > length_m)) {
+    return "pitch_m: must exceed length_m (a lug's length)";
+  }
+  if (kind == ProfileKind::kPoints) {
+    if (x_m.size() < 2 || x_m.size() != h_m.size()) {
+      return "x_m, h_m: need two or more points, as many heights as positions";
+    }
+    for (size_t i = 0; i < x_m.size(); ++i) {
+      if (!std::isfinite(x_m[i]) || !std::isfinite(h_m[i])) return "x_m, h_m: must be finite";
+      if (i > 0 && !(x_m[i] > x_m[i - 1])) return "x_m: must increase";
+    }
+  }
+  if (width_m && !positive(*width_m)) return "width_m: must be positive";
+  if (!(std::abs(angle_deg) < 90)) return "angle_deg: must lie in (-90, 90)";
+  if (lanes < 1) return "lanes: must be at least 1";
+  if (Pattern() == LanePattern::kAlternating) {
+    if (kind != ProfileKind::kLugs) return "pattern: alternating is for lugs only";
+    if (lanes % 2 != 0) return "lanes: alternating needs an even number";
+    if (!width_m) return "width_m: alternating needs the tread's width";
+  }
+  return "";
+}
+
+std::string TandemCam::Invalid() const {
+  if (!(a_e > 0 && std::isfinite(a_e))) return "a_e: must be positive";
+  if (!(b_e > 0 && std::isfinite(b_e))) return "b_e: must be positive";
+  if (!(c_e > 1 && std::isfinite(c_e))) return "c_e: must exceed 1";
+  if (!(l_s > 0 && std::isfinite(l_s))) return "l_s: must be positive";
+  return "";
+}
+
+std::vector<Lane> LanesOf(const ObstacleProfile& p) {
+  if (!p.width_m) return {Lane{}};
+  const double W = *p.width_m, tan = std::tan(p.angle_deg * M_PI / 180);
+  std::vector<Lane> lanes;
+  for (int j = 0; j < p.lanes; ++j) {
+    const double y = W * (j + 0.5) / p.lanes - 0.5 * W;
+    double shift = p.Pattern() == LanePattern::kInclined ? y * tan : std::abs(y) * tan;
+    if (p.Pattern() == LanePattern::kAlternating && y < 0) shift += 0.5 * p.pitch_m;
+    lanes.push_back({y, shift});
+  }
+  return lanes;
+}
+
+double ProfileHeight(const ObstacleProfile& profile, double x) {
+  double h = 0;
+  bool first = true;
+  ForEachPiece(profile, x, x, [&](const Piece& p) {
+    h = first ? p.h0 : std::max(h, p.h0);  // at a jump, its higher side
+    first = false;
+  });
+  return h;
+}
+
+double CamHeight(const ObstacleProfile& profile, const TandemCam& cam, const Lane& lane,
+                 double X) {
+  const double centre = X - lane.shift_m;  // the profile's x under the cam's lowest point
+  double H = -kInf;
+  ForEachPiece(profile, centre - cam.a_e, centre + cam.a_e, [&](const Piece& p) {
+    const double slope = p.x1 > p.x0 ? (p.h1 - p.h0) / (p.x1 - p.x0) : 0;
+    const double s = std::clamp(Stationary(cam, slope), p.x0 - centre, p.x1 - centre);
+    H = std::max(H, p.h0 + slope * (centre + s - p.x0) + Drop(cam, s));
+  });
+  return H;
+}
+
+EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam, double X) {
+  const std::vector<Lane> lanes = LanesOf(profile);
+  EffectiveInput e;
+  double yw = 0, yy = 0;
+  for (const Lane& lane : lanes) {
+    const double front = CamHeight(profile, cam, lane, X + 0.5 * cam.l_s);
+    const double rear = CamHeight(profile, cam, lane, X - 0.5 * cam.l_s);
+    const double w = 0.5 * (front + rear);
+    e.w += w / lanes.size();
+    e.beta += (front - rear) / cam.l_s / lanes.size();
+    yw += lane.y_m * w;
+    yy += lane.y_m * lane.y_m;
+  }
+  e.beta_x = yy > 0 ? yw / yy : 0;
+  return e;
+}
+
+double FirstContact(const ObstacleProfile& profile, const TandemCam& cam) {
+  if (profile.kind == ProfileKind::kLugs) return -kInf;
+  double first = kInf;  // the profile's first x where it leaves 0
+  if (profile.kind == ProfileKind::kCleat) {
+    if (profile.height_m != 0) first = -0.5 * profile.length_m;
+  } else {
+    for (size_t i = 0; i < profile.x_m.size() && first == kInf; ++i) {
+      if (profile.h_m[i] != 0) first = i > 0 ? profile.x_m[i - 1] : profile.x_m[0];
+    }
+  }
+  double earliest = kInf;
+  for (const Lane& lane : LanesOf(profile)) earliest = std::min(earliest, first + lane.shift_m);
+  return earliest - 0.5 * cam.l_s - cam.a_e;
+}
+
+}  // namespace ringid
