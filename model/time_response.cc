@@ -1,0 +1,124 @@
+#include "model/time_response.h"
+
+#include <cmath>
+#include <optional>
+
+#include <Eigen/LU>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace ringid {
+namespace {
+
+constexpr int kInputs = 3;  // F_x on x_b, F_z on z_b, F_y on y_b
+constexpr Dof kInputDofs[kInputs] = {Dof::kXb, Dof::kZb, Dof::kYb};
+
+// The exact first-order-hold step of one length dt.
+struct HeldStep {
+  double dt = 0;
+  Eigen::MatrixXd Phi, G0, G1;  // G1 multiplies (u_{k+1} - u_k) / dt
+};
+
+HeldStep Discretise(const StateSpace& s, double dt) {
+  const Eigen::Index n = s.A.rows(), m = s.B.cols();
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(n + 2 * m, n + 2 * m);
+  F.topLeftCorner(n, n) = s.A;
+  F.block(0, n, n, m) = s.B;
+  F.block(n, n + m, m, m).setIdentity();
+  const Eigen::MatrixXd E = (F * dt).exp();
+  return {dt, E.topLeftCorner(n, n), E.block(0, n, n, m), E.block(0, n + m, n, m)};
+}
+
+}  // namespace
+
+bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double speed_m_s,
+                       StateSpace* out, std::string* why) {
+  const MechanicalSystem s = model.Assemble(p, speed_m_s);
+  std::vector<int> dofs;
+  std::array<int, kNumDofs> row;
+  row.fill(-1);
+  for (int d = 0; d < kNumDofs; ++d) {
+    if (!s.active(static_cast<Dof>(d))) continue;
+    row[d] = static_cast<int>(dofs.size());
+    dofs.push_back(d);
+  }
+  const int n = static_cast<int>(dofs.size());
+  const bool rolling = speed_m_s > 0;
+  const int lags = rolling ? static_cast<int>(s.lags().size()) : 0;
+  const auto on = [&](const MechanicalSystem::Matrix& full) {
+    Eigen::MatrixXd m(n, n);
+    for (int a = 0; a < n; ++a) {
+      for (int b = 0; b < n; ++b) m(a, b) = full(dofs[a], dofs[b]);
+    }
+    return m;
+  };
+  const Eigen::MatrixXd M = on(s.M()), C = on(s.C());
+  Eigen::MatrixXd K = on(s.K());
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+  if (!lu.isInvertible()) {
+    *why = "the mass matrix is singular: the response over time needs a mass on every coordinate";
+    return false;
+  }
+  const Eigen::MatrixXd Minv = lu.inverse();
+  // The lags' rows over the active coordinates: f, d, e (docs/rolling.md).
+  const auto vector_of = [&](const MechanicalSystem::Combination& c) {
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
+    for (const auto& term : c) {
+      if (row[static_cast<int>(term.dof)] >= 0) v[row[static_cast<int>(term.dof)]] += term.coef;
+    }
+    return v;
+  };
+  StateSpace& ss = *out;
+  const int states = 2 * n + lags;
+  ss.A = Eigen::MatrixXd::Zero(states, states);
+  Eigen::MatrixXd coupling = Eigen::MatrixXd::Zero(n, lags);  // sum K f zeta
+  for (int l = 0; l < lags; ++l) {
+    const auto& lag = s.lags()[l];
+    const Eigen::VectorXd f = vector_of(lag.force), d = vector_of(lag.velocity),
+                          e = vector_of(lag.heading);
+    K -= lag.stiffness / lag.relaxation_length * f * d.transpose();  // the standstill stand-in
+    coupling.col(l) = lag.stiffness * f;
+    const int z = 2 * n + l;
+    ss.A.block(z, 0, 1, n) = speed_m_s / lag.relaxation_length * e.transpose();
+    ss.A.block(z, n, 1, n) = -d.transpose() / lag.relaxation_length;
+    ss.A(z, z) = -speed_m_s / lag.relaxation_length;
+  }
+  ss.A.block(0, n, n, n).setIdentity();
+  ss.A.block(n, 0, n, n) = -Minv * K;
+  ss.A.block(n, n, n, n) = -Minv * C;
+  if (lags > 0) ss.A.block(n, 2 * n, n, lags) = Minv * coupling;
+  ss.B = Eigen::MatrixXd::Zero(states, kInputs);
+  for (int i = 0; i < kInputs; ++i) {
+    const int a = row[static_cast<int>(kInputDofs[i])];
+    if (a >= 0) ss.B.block(n, i, n, 1) = Minv.col(a);
+  }
+  ss.C = Eigen::MatrixXd::Zero(kNumTimeOutputs, states);
+  const auto G_d = s.axle_displacement();
+  const auto G_v = s.axle_velocity();
+  for (int c = 0; c < kNumAxleChannels; ++c) {
+    for (int a = 0; a < n; ++a) {
+      ss.C(c, a) = G_d(c, dofs[a]);
+      ss.C(c, n + a) = G_v(c, dofs[a]);
+    }
+  }
+  ss.C(kRimSpeedOutput, n + row[static_cast<int>(Dof::kThetaA)]) = 1;
+  return true;
+}
+
+Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
+                             const Eigen::MatrixXd& u, const Eigen::VectorXd& x0) {
+  const Eigen::Index T = static_cast<Eigen::Index>(t.size());
+  Eigen::MatrixXd y(s.C.rows(), T);
+  Eigen::VectorXd x = x0.size() ? x0 : Eigen::VectorXd::Zero(s.A.rows());
+  std::optional<HeldStep> step;
+  for (Eigen::Index k = 0; k < T; ++k) {
+    y.col(k) = s.C * x;
+    if (k + 1 == T) break;
+    const double dt = t[k + 1] - t[k];
+    // Steps equal to 1e-9 of their length (a grid's rounding) share one.
+    if (!step || std::abs(dt - step->dt) > 1e-9 * dt) step = Discretise(s, dt);
+    x = step->Phi * x + step->G0 * u.col(k) + step->G1 * ((u.col(k + 1) - u.col(k)) / dt);
+  }
+  return y;
+}
+
+}  // namespace ringid

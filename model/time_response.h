@@ -1,0 +1,47 @@
+// The model's response over time (contract §11): the linear system rolling
+// at speed as a state space, the slip lags' states beside the coordinates,
+// driven by forces on x_b, z_b and y_b, discretised exactly with the inputs
+// held first-order (linear between grid points); and the response to
+// rolling over an obstacle.
+#ifndef RINGID_MODEL_TIME_RESPONSE_H_
+#define RINGID_MODEL_TIME_RESPONSE_H_
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "model/obstacle.h"
+#include "model/rigid_ring_model.h"
+
+namespace ringid {
+
+// §11's outputs: the five axle channels (N, N m), then the rim's spin rate
+// theta_a' (rad/s).
+inline constexpr int kNumTimeOutputs = kNumAxleChannels + 1;
+inline constexpr int kRimSpeedOutput = kNumAxleChannels;
+
+// x' = A x + B u, y = C x: x = [q, q', zeta] over the active coordinates and
+// the lags (at speed; standing, K's contact stiffness stands for them);
+// u = [F_x on x_b, F_z on z_b, F_y on y_b] (N); y as kNumTimeOutputs.
+struct StateSpace {
+  Eigen::MatrixXd A, B, C;
+};
+
+// The state space of p rolling at speed_m_s (docs/rolling.md: sigma zeta' +
+// V zeta = -d^T q' + V e^T q, the force K zeta through f). False with why
+// where the mass matrix is singular.
+bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double speed_m_s,
+                       StateSpace* s, std::string* why);
+
+// y at the grid times t (increasing, from the state x0 at t[0]: zero
+// where empty) for the inputs u (3 x t.size()) linear between them:
+// x_{k+1} = Phi x_k + G0 u_k + G1 (u_{k+1} - u_k) / dt from the exponential
+// of the augmented matrix [[A, B, 0], [0, 0, I], [0, 0, 0]] dt, exact for
+// such inputs. Steps of one length share one exponential.
+Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
+                             const Eigen::MatrixXd& u, const Eigen::VectorXd& x0 = {});
+
+}  // namespace ringid
+
+#endif  // RINGID_MODEL_TIME_RESPONSE_H_

@@ -1,0 +1,147 @@
+// The response over time against closed forms and the frequency response
+// code (model/frequency_response.h), which assembles H another way.
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+
+#include "datasets/synthetic.h"
+#include "model/effects.h"
+#include "model/frequency_response.h"
+#include "model/time_response.h"
+#include "tests/test_support.h"
+
+namespace ringid {
+namespace {
+
+// m x'' + c x' + k x = F, F a unit step at t = 0 (held constant, so the
+// first-order hold is exact): x(t) = (1 - e^(-zeta wn t) (cos wd t +
+// zeta / sqrt(1 - zeta^2) sin wd t)) / k.
+TEST(TimeResponseTest, AOneDegreeOfFreedomStepIsItsClosedForm) {
+  const double m = 2.0, c = 12.0, k = 8000.0;
+  StateSpace s;
+  s.A.resize(2, 2);
+  s.A << 0, 1, -k / m, -c / m;
+  s.B = Eigen::MatrixXd::Zero(2, 3);
+  s.B(1, 0) = 1 / m;
+  s.C = Eigen::MatrixXd::Zero(1, 2);
+  s.C(0, 0) = 1;
+  std::vector<double> t;
+  for (int i = 0; i <= 2000; ++i) t.push_back(i * 1e-3);
+  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(3, t.size());
+  u.row(0).setOnes();
+  const Eigen::MatrixXd y = SimulateHeld(s, t, u);
+  const double wn = std::sqrt(k / m), zeta = c / (2 * std::sqrt(k * m));
+  const double wd = wn * std::sqrt(1 - zeta * zeta);
+  for (size_t i = 0; i < t.size(); ++i) {
+    const double closed = (1 - std::exp(-zeta * wn * t[i]) *
+                                   (std::cos(wd * t[i]) +
+                                    zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t[i]))) /
+                          k;
+    EXPECT_NEAR(y(0, i), closed, 1e-12 / k) << t[i];
+  }
+}
+
+// The FRF request of the time response's inputs and outputs.
+ResponseRequest TimeRequest(double hz) {
+  ResponseRequest r;
+  for (Dof d : {Dof::kXb, Dof::kZb, Dof::kYb}) r.inputs.push_back({std::nullopt, {{d, 1.0}}});
+  for (int c = 0; c < kNumAxleChannels; ++c) {
+    r.outputs.push_back({static_cast<AxleChannel>(c), {}, 0});
+  }
+  r.outputs.push_back({std::nullopt, {{Dof::kThetaA, 1.0}}, 1});  // the rim's spin rate
+  for (int o = 0; o < kNumTimeOutputs; ++o) {
+    for (int i = 0; i < 3; ++i) r.pairs.push_back({o, i});
+  }
+  r.frequencies_hz = {hz};
+  return r;
+}
+
+// The state space's transfer C (i w - A)^-1 B is the FRF code's H, standing
+// and rolling, with an effect that adds coordinates (the hub) and one that
+// couples the planes.
+TEST(TimeResponseTest, TheStateSpacesTransferIsTheFrequencyResponse) {
+  for (const char* name : {"", "hub_compliance", "lug_coupling", "contact_yaw_stiffness"}) {
+    const Effect* effect = *name ? FindEffect(name) : nullptr;
+    const RigidRingModel model(effect ? std::vector<const Effect*>{effect}
+                                      : std::vector<const Effect*>{});
+    const Parameters p =
+        effect ? testing::WithEffectSized(*effect, ExampleCarTire()) : ExampleCarTire();
+    for (double speed : {0.0, 12.0}) {
+      StateSpace s;
+      std::string why;
+      ASSERT_TRUE(RollingStateSpace(model, p, speed, &s, &why)) << why;
+      for (double hz : {7.0, 48.0, 95.0, 170.0}) {
+        const ResponseResult h = FrequencyResponse(model, p, speed, TimeRequest(hz));
+        ASSERT_TRUE(h.ok) << h.error;
+        const std::complex<double> iw(0, 2 * M_PI * hz);
+        const Eigen::MatrixXcd G =
+            s.C.cast<std::complex<double>>() *
+            (iw * Eigen::MatrixXcd::Identity(s.A.rows(), s.A.cols()) -
+             s.A.cast<std::complex<double>>())
+                .lu()
+                .solve(s.B.cast<std::complex<double>>());
+        for (int f = 0; f < static_cast<int>(h.H.cols()); ++f) {
+          const auto [o, i] = TimeRequest(hz).pairs[f];
+          EXPECT_LE(std::abs(G(o, i) - h.H(0, f)), 1e-9 * std::abs(h.H(0, f)) + 1e-14)
+              << name << ", speed " << speed << ", " << hz << " Hz, output " << o << ", input "
+              << i;
+        }
+      }
+    }
+  }
+}
+
+// From the steady state of sinusoidal forces at t = 0, the exact
+// discretisation with the forces held first-order stays on it: y(t) =
+// Re(H U e^(i w t)), H the FRF code's, to the hold's error, about
+// (w dt)^2 / 12 of the amplitude.
+TEST(TimeResponseTest, ASinusoidsResponseIsTheFrfTimesTheInput) {
+  const RigidRingModel model;
+  const Parameters p = ExampleCarTire();
+  const double hz[3] = {23.0, 61.0, 88.0};  // one per input
+  const double dt = 2e-6;  // (w dt)^2 / 12 at most 1.0e-7
+  for (double speed : {0.0, 15.0}) {
+    StateSpace s;
+    std::string why;
+    ASSERT_TRUE(RollingStateSpace(model, p, speed, &s, &why)) << why;
+    const Eigen::Index n = s.A.rows();
+    std::vector<double> t;
+    for (int k = 0; k <= 25000; ++k) t.push_back(k * dt);
+    Eigen::MatrixXd u(3, t.size());
+    Eigen::VectorXcd x0 = Eigen::VectorXcd::Zero(n);
+    std::vector<Eigen::VectorXcd> H(3);
+    for (int i = 0; i < 3; ++i) {
+      const double w = 2 * M_PI * hz[i];
+      for (size_t k = 0; k < t.size(); ++k) u(i, k) = std::cos(w * t[k]);
+      // The state's steady amplitude, (i w - A)^-1 B_i: the start only.
+      x0 += (std::complex<double>(0, w) * Eigen::MatrixXcd::Identity(n, n) -
+             s.A.cast<std::complex<double>>())
+                .lu()
+                .solve(s.B.col(i).cast<std::complex<double>>());
+      const ResponseResult h = FrequencyResponse(model, p, speed, TimeRequest(hz[i]));
+      ASSERT_TRUE(h.ok) << h.error;
+      H[i] = Eigen::VectorXcd(kNumTimeOutputs);
+      for (int o = 0; o < kNumTimeOutputs; ++o) H[i][o] = h.H(0, 3 * o + i);
+    }
+    const Eigen::MatrixXd y = SimulateHeld(s, t, u, x0.real());
+    for (int o = 0; o < kNumTimeOutputs; ++o) {
+      double amplitude = 0;
+      for (int i = 0; i < 3; ++i) amplitude += std::abs(H[i][o]);
+      for (size_t k = 0; k < t.size(); k += 101) {
+        double expected = 0;
+        for (int i = 0; i < 3; ++i) {
+          expected += (H[i][o] * std::exp(std::complex<double>(0, 2 * M_PI * hz[i] * t[k]))).real();
+        }
+        EXPECT_NEAR(y(o, k), expected, 1e-6 * amplitude) << "speed " << speed << ", output " << o
+                                                         << ", t " << t[k];
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ringid
