@@ -1,9 +1,11 @@
 #include "model/time_response.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <unsupported/Eigen/MatrixFunctions>
 
 namespace ringid {
@@ -119,6 +121,102 @@ Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
     x = step->Phi * x + step->G0 * u.col(k) + step->G1 * ((u.col(k + 1) - u.col(k)) / dt);
   }
   return y;
+}
+
+namespace {
+
+// The grid through 0 and the sample times, no step longer than kTravelStep
+// of travel; `sample` the grid index of each sample time.
+std::vector<double> TravelGrid(const std::vector<double>& times, double speed,
+                               std::vector<size_t>* sample) {
+  std::vector<double> grid = {0.0};
+  for (double t : times) {
+    const double from = grid.back();
+    // (a step of exactly kTravelStep, to rounding, is one)
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(speed * (t - from) / kTravelStep - 1e-9)));
+    for (int k = 1; k <= steps; ++k) grid.push_back(k == steps ? t : from + (t - from) * k / steps);
+    if (t == from) grid.pop_back();  // a sample at the grid's last time
+    sample->push_back(grid.size() - 1);
+  }
+  return grid;
+}
+
+// The forces of §11 on the grid.
+Eigen::MatrixXd Forces(const Parameters& p, const ObstacleRun& run,
+                       const std::vector<double>& grid) {
+  Eigen::MatrixXd u(kInputs, grid.size());
+  for (size_t k = 0; k < grid.size(); ++k) {
+    const EffectiveInput e =
+        Effective(run.profile, run.cam, run.position_at_t0_m + run.speed_m_s * grid[k]);
+    u.col(k) << -p[Param::F_cz0] * e.beta, -p[Param::k_cz] * e.w, -p[Param::F_cz0] * e.beta_x;
+  }
+  return u;
+}
+
+// The state at t = 0 of the periodic steady state under the lugs' forces
+// less their mean (subtracted from u): one pitch of travel on a grid of
+// equal steps, x(T) = Phi_T x(0) + x_forced solved by least squares (the
+// rim's free angle makes I - Phi_T singular; it reaches no output).
+Eigen::VectorXd PeriodicStart(const StateSpace& s, const Parameters& p, const ObstacleRun& run,
+                              Eigen::MatrixXd* u_mean) {
+  const double period = run.profile.pitch_m / run.speed_m_s;
+  const int steps =
+      std::max(8, static_cast<int>(std::ceil(run.profile.pitch_m / kTravelStep - 1e-9)));
+  std::vector<double> grid;
+  for (int k = 0; k <= steps; ++k) grid.push_back(period * k / steps);
+  Eigen::MatrixXd u = Forces(p, run, grid);
+  *u_mean = u.leftCols(steps).rowwise().mean();  // the periodic trapezoid rule
+  u.colwise() -= u_mean->col(0);
+  const HeldStep step = Discretise(s, period / steps);
+  const Eigen::Index n = s.A.rows();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  Eigen::MatrixXd Phi_T = Eigen::MatrixXd::Identity(n, n);
+  for (int k = 0; k < steps; ++k) {
+    x = step.Phi * x + step.G0 * u.col(k) + step.G1 * ((u.col(k + 1) - u.col(k)) / step.dt);
+    Phi_T = step.Phi * Phi_T;
+  }
+  return (Eigen::MatrixXd::Identity(n, n) - Phi_T).completeOrthogonalDecomposition().solve(x);
+}
+
+}  // namespace
+
+bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
+                      Eigen::MatrixXd* y, std::string* why) {
+  if (!(run.speed_m_s > 0) || !std::isfinite(run.speed_m_s)) {
+    *why = "speed_m_s: rolling over an obstacle needs a positive speed";
+    return false;
+  }
+  if (const std::string bad = run.profile.Invalid(); !bad.empty()) {
+    *why = "profile: " + bad;
+    return false;
+  }
+  if (const std::string bad = run.cam.Invalid(); !bad.empty()) {
+    *why = bad;
+    return false;
+  }
+  for (size_t k = 0; k < run.times_s.size(); ++k) {
+    if (!(run.times_s[k] >= 0) || !std::isfinite(run.times_s[k]) ||
+        (k > 0 && !(run.times_s[k] > run.times_s[k - 1]))) {
+      *why = "time_s: times must be finite, at least 0 and increasing";
+      return false;
+    }
+  }
+  StateSpace s;
+  if (!RollingStateSpace(model, p, run.speed_m_s, &s, why)) return false;
+  std::vector<size_t> sample;
+  const std::vector<double> grid = TravelGrid(run.times_s, run.speed_m_s, &sample);
+  Eigen::MatrixXd u = Forces(p, run, grid);
+  Eigen::VectorXd x0;
+  if (run.profile.kind == ProfileKind::kLugs) {
+    Eigen::MatrixXd mean;
+    x0 = PeriodicStart(s, p, run, &mean);
+    u.colwise() -= mean.col(0);
+  }
+  const Eigen::MatrixXd all = SimulateHeld(s, grid, u, x0);
+  y->resize(kNumTimeOutputs, static_cast<Eigen::Index>(sample.size()));
+  for (size_t k = 0; k < sample.size(); ++k) y->col(static_cast<Eigen::Index>(k)) = all.col(sample[k]);
+  return true;
 }
 
 }  // namespace ringid

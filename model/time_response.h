@@ -42,6 +42,24 @@ bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double 
 Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
                              const Eigen::MatrixXd& u, const Eigen::VectorXd& x0 = {});
 
+// Rolling at speed_m_s > 0 over `profile` from X = position_at_t0_m at
+// t = 0 (§11): the forces u = [-F_cz0 beta, -k_cz w, -F_cz0 beta_x] at
+// X = position_at_t0_m + V t, held first-order on a grid of at most
+// kTravelStep of travel through the sample times. From the zero state at
+// t = 0, or for `lugs` the periodic steady state about the forces' mean
+// (the mean's static response left out: §11 reports it apart).
+inline constexpr double kTravelStep = 1e-3;  // m
+struct ObstacleRun {
+  double speed_m_s = 0;
+  ObstacleProfile profile;
+  TandemCam cam;
+  double position_at_t0_m = 0;
+  std::vector<double> times_s;  // increasing, >= 0
+};
+// y (kNumTimeOutputs x the samples); false with why naming what is wrong.
+bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
+                      Eigen::MatrixXd* y, std::string* why);
+
 }  // namespace ringid
 
 #endif  // RINGID_MODEL_TIME_RESPONSE_H_

@@ -1,5 +1,6 @@
 // The response over time against closed forms and the frequency response
 // code (model/frequency_response.h), which assembles H another way.
+#include <array>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -141,6 +142,146 @@ TEST(TimeResponseTest, ASinusoidsResponseIsTheFrfTimesTheInput) {
       }
     }
   }
+}
+
+// Chevron lugs (pitch 0.15 m, ten lanes at 15 degrees) at 10 m/s.
+ObstacleRun LugRun(LanePattern pattern) {
+  ObstacleRun run;
+  run.speed_m_s = 10;
+  run.profile.kind = ProfileKind::kLugs;
+  run.profile.height_m = 0.025;
+  run.profile.length_m = 0.05;
+  run.profile.pitch_m = 0.15;
+  run.profile.width_m = 0.4;
+  run.profile.angle_deg = 15;
+  run.profile.pattern = pattern;
+  run.cam = {0.12, 0.30, 1.8, 0.10};
+  run.position_at_t0_m = 0.013;
+  for (int k = 0; k < 300; ++k) run.times_s.push_back(k * 1e-4);  // 1 mm apart, two pitches
+  return run;
+}
+
+// The lugs' periodic steady state against the frequency response: the
+// forces held first-order on the 1 mm grid are a periodic piecewise-linear
+// u, whose Fourier coefficients are the samples' DFT times sinc^2(pi k / N);
+// each order k responds through the FRF code's H at k V / P (the mean
+// left out), summed to |k| = 3N.
+TEST(TimeResponseTest, TheLugsSteadyStateIsTheResponseToTheForcesFourierSeries) {
+  const RigidRingModel model;
+  const Parameters p = ExampleCarTire();
+  const ObstacleRun run = LugRun(LanePattern::kChevron);
+  Eigen::MatrixXd y;
+  std::string why;
+  ASSERT_TRUE(ObstacleResponse(model, p, run, &y, &why)) << why;
+  const int N = 150;  // samples per pitch
+  std::vector<std::array<double, 3>> u(N);
+  for (int j = 0; j < N; ++j) {
+    const EffectiveInput e = Effective(run.profile, run.cam, run.position_at_t0_m + j * 1e-3);
+    u[j] = {-p[Param::F_cz0] * e.beta, -p[Param::k_cz] * e.w, -p[Param::F_cz0] * e.beta_x};
+  }
+  const int orders = 3 * N;
+  const double f0 = run.speed_m_s / run.profile.pitch_m;
+  ResponseRequest request = TimeRequest(f0);
+  request.frequencies_hz.clear();
+  for (int k = 1; k <= orders; ++k) request.frequencies_hz.push_back(k * f0);
+  const ResponseResult h = FrequencyResponse(model, p, run.speed_m_s, request);
+  ASSERT_TRUE(h.ok) << h.error;
+  // The Fourier coefficient of each input at each order.
+  std::vector<std::array<std::complex<double>, 3>> c(orders + 1);
+  for (int k = 1; k <= orders; ++k) {
+    const double x = M_PI * k / N, sinc2 = std::pow(std::sin(x) / x, 2);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < N; ++j) {
+        c[k][i] += u[j][i] * std::exp(std::complex<double>(0, -2 * M_PI * k * j / N));
+      }
+      c[k][i] *= sinc2 / N;
+    }
+  }
+  for (int o = 0; o < kNumTimeOutputs; ++o) {
+    double peak = 0;
+    for (int k = 0; k < y.cols(); ++k) peak = std::max(peak, std::abs(y(o, k)));
+    for (int s = 0; s < y.cols(); s += 7) {
+      const double t = run.times_s[s];
+      double expected = 0;
+      for (int k = 1; k <= orders; ++k) {
+        for (int i = 0; i < 3; ++i) {
+          expected += 2 * (h.H(k - 1, 3 * o + i) * c[k][i] *
+                           std::exp(std::complex<double>(0, 2 * M_PI * k * f0 * t)))
+                              .real();
+        }
+      }
+      EXPECT_NEAR(y(o, s), expected, 1e-6 * peak + 1e-9) << "output " << o << ", t " << t;
+    }
+  }
+}
+
+// Cross-stitch lugs: half a pitch on, the vertical and longitudinal response
+// repeats and the lateral reverses (only even and only odd orders).
+TEST(TimeResponseTest, AlternatingLugsShakeTheAxleVerticallyAtEvenOrdersAndLaterallyAtOdd) {
+  const ObstacleRun run = LugRun(LanePattern::kAlternating);
+  Eigen::MatrixXd y;
+  std::string why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &y, &why)) << why;
+  const int half = 75;  // half a pitch, in samples
+  for (AxleChannel c : {AxleChannel::kForceX, AxleChannel::kForceZ, AxleChannel::kForceY,
+                        AxleChannel::kMomentX, AxleChannel::kMomentZ}) {
+    const int o = static_cast<int>(c);
+    const double sign = c == AxleChannel::kForceX || c == AxleChannel::kForceZ ? 1 : -1;
+    const double peak = y.row(o).cwiseAbs().maxCoeff();
+    EXPECT_GT(peak, 0) << ToString(c);
+    for (int k = 0; k + half < y.cols(); ++k) {
+      EXPECT_NEAR(y(o, k + half), sign * y(o, k), 1e-9 * peak) << ToString(c) << " " << k;
+    }
+  }
+}
+
+// A cleat at 15 m/s sampled at 2 kHz (7.5 mm of travel, held on 8 steps of
+// the 1 mm grid) against samples 0.094 mm apart: the grid is fine enough.
+TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
+  ObstacleRun run;
+  run.speed_m_s = 15;
+  run.profile.height_m = 0.015;
+  run.profile.length_m = 0.02;
+  run.cam = {0.12, 0.30, 1.8, 0.10};
+  run.position_at_t0_m = -0.3;
+  ObstacleRun fine = run;
+  for (int k = 0; k < 100; ++k) run.times_s.push_back(k * 5e-4);
+  for (int k = 0; k < 8000; ++k) fine.times_s.push_back(k * 6.25e-6);
+  Eigen::MatrixXd y, z;
+  std::string why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &y, &why)) << why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), fine, &z, &why)) << why;
+  for (int o = 0; o < kNumTimeOutputs; ++o) {
+    const double peak = z.row(o).cwiseAbs().maxCoeff();
+    for (int k = 0; k < 100; ++k) {
+      EXPECT_NEAR(y(o, k), z(o, 80 * k), 1e-3 * peak) << o << " " << k;
+    }
+  }
+}
+
+TEST(TimeResponseTest, ARunThatCannotBeRolledIsRefusedNamingTheField) {
+  ObstacleRun run = LugRun(LanePattern::kChevron);
+  Eigen::MatrixXd y;
+  std::string why;
+  const auto refused = [&](const ObstacleRun& r, const std::string& field) {
+    EXPECT_FALSE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), r, &y, &why)) << field;
+    EXPECT_EQ(why.rfind(field, 0), 0u) << field << ": " << why;
+  };
+  ObstacleRun bad = run;
+  bad.speed_m_s = 0;
+  refused(bad, "speed_m_s");
+  bad = run;
+  std::swap(bad.times_s[3], bad.times_s[4]);
+  refused(bad, "time_s");
+  bad = run;
+  bad.times_s[0] = -1e-3;
+  refused(bad, "time_s");
+  bad = run;
+  bad.profile.lanes = 0;
+  refused(bad, "profile: lanes");
+  bad = run;
+  bad.cam.c_e = 0.5;
+  refused(bad, "c_e");
 }
 
 }  // namespace
