@@ -245,11 +245,11 @@ void BM_CleatResponse(benchmark::State& state) {
   for (int k = 0; k < 1000; ++k) run.times_s.push_back(k / 2000.0);
   const RigidRingModel model;
   const Parameters p = ExampleCarTire();
-  Eigen::MatrixXd y;
+  ObstacleResult r;
   std::string why;
   for (auto _ : state) {
-    if (!ObstacleResponse(model, p, run, &y, &why)) state.SkipWithError(why.c_str());
-    benchmark::DoNotOptimize(y.data());
+    if (!ObstacleResponse(model, p, run, &r, &why)) state.SkipWithError(why.c_str());
+    benchmark::DoNotOptimize(r.y.data());
   }
 }
 BENCHMARK(BM_CleatResponse)->Unit(benchmark::kMillisecond);

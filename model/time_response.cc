@@ -103,6 +103,8 @@ bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double 
     }
   }
   ss.C(kRimSpeedOutput, n + row[static_cast<int>(Dof::kThetaA)]) = 1;
+  ss.z_b = Eigen::RowVectorXd::Zero(states);
+  ss.z_b(row[static_cast<int>(Dof::kZb)]) = 1;
   return true;
 }
 
@@ -182,7 +184,7 @@ Eigen::VectorXd PeriodicStart(const StateSpace& s, const Parameters& p, const Ob
 }  // namespace
 
 bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
-                      Eigen::MatrixXd* y, std::string* why) {
+                      ObstacleResult* r, std::string* why) {
   if (!(run.speed_m_s > 0) || !std::isfinite(run.speed_m_s)) {
     *why = "speed_m_s: rolling over an obstacle needs a positive speed";
     return false;
@@ -207,15 +209,36 @@ bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const Ob
   std::vector<size_t> sample;
   const std::vector<double> grid = TravelGrid(run.times_s, run.speed_m_s, &sample);
   Eigen::MatrixXd u = Forces(p, run, grid);
+  const Eigen::RowVectorXd w = u.row(1) / -p[Param::k_cz];
   Eigen::VectorXd x0;
+  double static_z_b = 0;  // the lugs' mean force's, where the mean is left out
   if (run.profile.kind == ProfileKind::kLugs) {
     Eigen::MatrixXd mean;
     x0 = PeriodicStart(s, p, run, &mean);
     u.colwise() -= mean.col(0);
+    static_z_b = -s.z_b * s.A.completeOrthogonalDecomposition().solve(s.B * mean.col(0));
   }
-  const Eigen::MatrixXd all = SimulateHeld(s, grid, u, x0);
-  y->resize(kNumTimeOutputs, static_cast<Eigen::Index>(sample.size()));
-  for (size_t k = 0; k < sample.size(); ++k) y->col(static_cast<Eigen::Index>(k)) = all.col(sample[k]);
+  StateSpace with_z_b = s;  // the outputs and z_b
+  with_z_b.C.conservativeResize(kNumTimeOutputs + 1, Eigen::NoChange);
+  with_z_b.C.row(kNumTimeOutputs) = s.z_b;
+  const Eigen::MatrixXd all = SimulateHeld(with_z_b, grid, u, x0);
+  r->y.resize(kNumTimeOutputs, static_cast<Eigen::Index>(sample.size()));
+  for (size_t k = 0; k < sample.size(); ++k) {
+    r->y.col(static_cast<Eigen::Index>(k)) = all.col(sample[k]).head(kNumTimeOutputs);
+  }
+  r->lowest_contact_force_n = INFINITY;
+  r->largest_load_change = -1;
+  for (size_t k = 0; k < grid.size(); ++k) {
+    const double change = p[Param::k_cz] * (all(kNumTimeOutputs, k) + static_z_b + w[k]);
+    if (p[Param::F_cz0] + change < r->lowest_contact_force_n) {
+      r->lowest_contact_force_n = p[Param::F_cz0] + change;
+      r->lowest_at_s = grid[k];
+    }
+    if (std::abs(change) / p[Param::F_cz0] > r->largest_load_change) {
+      r->largest_load_change = std::abs(change) / p[Param::F_cz0];
+      r->largest_at_s = grid[k];
+    }
+  }
   return true;
 }
 

@@ -26,6 +26,7 @@ inline constexpr int kRimSpeedOutput = kNumAxleChannels;
 // u = [F_x on x_b, F_z on z_b, F_y on y_b] (N); y as kNumTimeOutputs.
 struct StateSpace {
   Eigen::MatrixXd A, B, C;
+  Eigen::RowVectorXd z_b;  // the belt's vertical displacement (down) from x
 };
 
 // The state space of p rolling at speed_m_s (docs/rolling.md: sigma zeta' +
@@ -56,9 +57,18 @@ struct ObstacleRun {
   double position_at_t0_m = 0;
   std::vector<double> times_s;  // increasing, >= 0
 };
-// y (kNumTimeOutputs x the samples); false with why naming what is wrong.
+// The response, and §11's validity: the contact force F_cz0 + k_cz (z_b + w)
+// over the grid (for lugs with the mean's static part), at its lowest (the
+// tire leaves the road where it is not positive) and where its change
+// |k_cz (z_b + w)| / F_cz0 is largest (§11 warns above 0.3).
+struct ObstacleResult {
+  Eigen::MatrixXd y;  // kNumTimeOutputs x the samples
+  double lowest_contact_force_n = 0, lowest_at_s = 0;
+  double largest_load_change = 0, largest_at_s = 0;
+};
+// False with why naming what is wrong.
 bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
-                      Eigen::MatrixXd* y, std::string* why);
+                      ObstacleResult* result, std::string* why);
 
 }  // namespace ringid
 

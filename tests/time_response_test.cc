@@ -170,9 +170,10 @@ TEST(TimeResponseTest, TheLugsSteadyStateIsTheResponseToTheForcesFourierSeries) 
   const RigidRingModel model;
   const Parameters p = ExampleCarTire();
   const ObstacleRun run = LugRun(LanePattern::kChevron);
-  Eigen::MatrixXd y;
+  ObstacleResult r;
   std::string why;
-  ASSERT_TRUE(ObstacleResponse(model, p, run, &y, &why)) << why;
+  ASSERT_TRUE(ObstacleResponse(model, p, run, &r, &why)) << why;
+  const Eigen::MatrixXd& y = r.y;
   const int N = 150;  // samples per pitch
   std::vector<std::array<double, 3>> u(N);
   for (int j = 0; j < N; ++j) {
@@ -219,9 +220,10 @@ TEST(TimeResponseTest, TheLugsSteadyStateIsTheResponseToTheForcesFourierSeries) 
 // repeats and the lateral reverses (only even and only odd orders).
 TEST(TimeResponseTest, AlternatingLugsShakeTheAxleVerticallyAtEvenOrdersAndLaterallyAtOdd) {
   const ObstacleRun run = LugRun(LanePattern::kAlternating);
-  Eigen::MatrixXd y;
+  ObstacleResult r;
   std::string why;
-  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &y, &why)) << why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &r, &why)) << why;
+  const Eigen::MatrixXd& y = r.y;
   const int half = 75;  // half a pitch, in samples
   for (AxleChannel c : {AxleChannel::kForceX, AxleChannel::kForceZ, AxleChannel::kForceY,
                         AxleChannel::kMomentX, AxleChannel::kMomentZ}) {
@@ -247,10 +249,12 @@ TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
   ObstacleRun fine = run;
   for (int k = 0; k < 100; ++k) run.times_s.push_back(k * 5e-4);
   for (int k = 0; k < 8000; ++k) fine.times_s.push_back(k * 6.25e-6);
-  Eigen::MatrixXd y, z;
+  ObstacleResult coarse, fine_result;
   std::string why;
-  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &y, &why)) << why;
-  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), fine, &z, &why)) << why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), run, &coarse, &why)) << why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), fine, &fine_result, &why))
+      << why;
+  const Eigen::MatrixXd &y = coarse.y, &z = fine_result.y;
   for (int o = 0; o < kNumTimeOutputs; ++o) {
     const double peak = z.row(o).cwiseAbs().maxCoeff();
     for (int k = 0; k < 100; ++k) {
@@ -259,9 +263,32 @@ TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
   }
 }
 
+// Slowly over a long, low cleat the belt follows statically: the contact
+// spring k_cz in series with the sidewall k_bz (hub held) carries the cleat's
+// height h on its top, k_cz k_bz h / (k_cz + k_bz), and never less than
+// the load before it but for the ring's ringing where w has a kink (the cam
+// leaving the edge: a velocity step V dw/dX, about k V dw/dX / w_n).
+TEST(TimeResponseTest, SlowlyOverALongCleatTheContactForceIsTheSeriesSpringsOnItsHeight) {
+  ObstacleRun run;
+  run.speed_m_s = 0.02;  // the cam climbs the edge in 1.2 s, 100 vertical periods
+  run.profile.height_m = 0.01;
+  run.profile.length_m = 0.6;
+  run.cam = {0.12, 0.30, 1.8, 0.10};
+  run.position_at_t0_m = -0.6;
+  for (int k = 0; k < 300; ++k) run.times_s.push_back(k * 0.2);
+  const Parameters p = ExampleCarTire();
+  ObstacleResult r;
+  std::string why;
+  ASSERT_TRUE(ObstacleResponse(RigidRingModel(), p, run, &r, &why)) << why;
+  const double k_cz = p[Param::k_cz], k_bz = p[Param::k_bz];
+  const double plateau = k_cz * k_bz * 0.01 / (k_cz + k_bz);
+  EXPECT_NEAR(r.largest_load_change * p[Param::F_cz0], plateau, 1e-4 * plateau);
+  EXPECT_NEAR(r.lowest_contact_force_n, p[Param::F_cz0], 5e-4 * plateau) << r.lowest_at_s;
+}
+
 TEST(TimeResponseTest, ARunThatCannotBeRolledIsRefusedNamingTheField) {
   ObstacleRun run = LugRun(LanePattern::kChevron);
-  Eigen::MatrixXd y;
+  ObstacleResult y;
   std::string why;
   const auto refused = [&](const ObstacleRun& r, const std::string& field) {
     EXPECT_FALSE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), r, &y, &why)) << field;
