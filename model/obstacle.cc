@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 
 namespace ringid {
@@ -17,8 +16,8 @@ struct Piece {
 };
 
 // The profile's pieces over [lo, hi], each clipped to it.
-void ForEachPiece(const ObstacleProfile& p, double lo, double hi,
-                  const std::function<void(const Piece&)>& f) {
+template <class F>
+void ForEachPiece(const ObstacleProfile& p, double lo, double hi, const F& f) {
   const auto flat_or = [&](double x0, double x1, double h0, double h1) {
     const double a = std::max(x0, lo), b = std::min(x1, hi);
     if (a > b) return;
@@ -149,7 +148,11 @@ double CamHeight(const ObstacleProfile& profile, const TandemCam& cam, const Lan
 }
 
 EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam, double X) {
-  const std::vector<Lane> lanes = LanesOf(profile);
+  return Effective(profile, cam, LanesOf(profile), X);
+}
+
+EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam,
+                         const std::vector<Lane>& lanes, double X) {
   EffectiveInput e;
   double yw = 0, yy = 0;
   for (const Lane& lane : lanes) {

@@ -78,6 +78,9 @@ struct EffectiveInput {
   double w = 0, beta = 0, beta_x = 0;
 };
 EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam, double X);
+// The same over the profile's lanes, LanesOf(profile).
+EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam,
+                         const std::vector<Lane>& lanes, double X);
 
 // The first X (increasing) at which a non-zero height of the profile comes
 // within some lane's front cam's reach (a_e): before it the road is flat

@@ -14,10 +14,11 @@ namespace {
 constexpr int kInputs = 3;  // F_x on x_b, F_z on z_b, F_y on y_b
 constexpr Dof kInputDofs[kInputs] = {Dof::kXb, Dof::kZb, Dof::kYb};
 
-// The exact first-order-hold step of one length dt.
+// The exact first-order-hold step of one length dt: x_{k+1} = Phi x_k +
+// G0 u_k + G1 (u_{k+1} - u_k) / dt, the three side by side in `step`.
 struct HeldStep {
   double dt = 0;
-  Eigen::MatrixXd Phi, G0, G1;  // G1 multiplies (u_{k+1} - u_k) / dt
+  Eigen::MatrixXd step;  // [Phi, G0, G1]: the top rows of exp(F dt)
 };
 
 HeldStep Discretise(const StateSpace& s, double dt) {
@@ -27,7 +28,7 @@ HeldStep Discretise(const StateSpace& s, double dt) {
   F.block(0, n, n, m) = s.B;
   F.block(n, n + m, m, m).setIdentity();
   const Eigen::MatrixXd E = (F * dt).exp();
-  return {dt, E.topLeftCorner(n, n), E.block(0, n, n, m), E.block(0, n + m, n, m)};
+  return {dt, E.topRows(n)};
 }
 
 }  // namespace
@@ -112,15 +113,21 @@ Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
                              const Eigen::MatrixXd& u, const Eigen::VectorXd& x0) {
   const Eigen::Index T = static_cast<Eigen::Index>(t.size());
   Eigen::MatrixXd y(s.C.rows(), T);
-  Eigen::VectorXd x = x0.size() ? x0 : Eigen::VectorXd::Zero(s.A.rows());
+  const Eigen::Index n = s.A.rows(), m = s.B.cols();
+  Eigen::VectorXd z(n + 2 * m);  // [x_k, u_k, (u_{k+1} - u_k) / dt]
+  z.head(n) = x0.size() ? x0 : Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd next(n);
   std::optional<HeldStep> step;
   for (Eigen::Index k = 0; k < T; ++k) {
-    y.col(k) = s.C * x;
+    y.col(k).noalias() = s.C * z.head(n);
     if (k + 1 == T) break;
     const double dt = t[k + 1] - t[k];
     // Steps equal to 1e-9 of their length (a grid's rounding) share one.
     if (!step || std::abs(dt - step->dt) > 1e-9 * dt) step = Discretise(s, dt);
-    x = step->Phi * x + step->G0 * u.col(k) + step->G1 * ((u.col(k + 1) - u.col(k)) / dt);
+    z.segment(n, m) = u.col(k);
+    z.tail(m) = (u.col(k + 1) - u.col(k)) / dt;
+    next.noalias() = step->step * z;
+    z.head(n) = next;
   }
   return y;
 }
@@ -148,9 +155,10 @@ std::vector<double> TravelGrid(const std::vector<double>& times, double speed,
 Eigen::MatrixXd Forces(const Parameters& p, const ObstacleRun& run,
                        const std::vector<double>& grid) {
   Eigen::MatrixXd u(kInputs, grid.size());
+  const std::vector<Lane> lanes = LanesOf(run.profile);
   for (size_t k = 0; k < grid.size(); ++k) {
     const EffectiveInput e =
-        Effective(run.profile, run.cam, run.position_at_t0_m + run.speed_m_s * grid[k]);
+        Effective(run.profile, run.cam, lanes, run.position_at_t0_m + run.speed_m_s * grid[k]);
     u.col(k) << -p[Param::F_cz0] * e.beta, -p[Param::k_cz] * e.w, -p[Param::F_cz0] * e.beta_x;
   }
   return u;
@@ -170,14 +178,11 @@ Eigen::VectorXd PeriodicStart(const StateSpace& s, const Parameters& p, const Ob
   Eigen::MatrixXd u = Forces(p, run, grid);
   *u_mean = u.leftCols(steps).rowwise().mean();  // the periodic trapezoid rule
   u.colwise() -= u_mean->col(0);
-  const HeldStep step = Discretise(s, period / steps);
   const Eigen::Index n = s.A.rows();
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  Eigen::MatrixXd Phi_T = Eigen::MatrixXd::Identity(n, n);
-  for (int k = 0; k < steps; ++k) {
-    x = step.Phi * x + step.G0 * u.col(k) + step.G1 * ((u.col(k + 1) - u.col(k)) / step.dt);
-    Phi_T = step.Phi * Phi_T;
-  }
+  StateSpace whole = s;  // the state itself as the output
+  whole.C = Eigen::MatrixXd::Identity(n, n);
+  const Eigen::VectorXd x = SimulateHeld(whole, grid, u).col(steps);
+  const Eigen::MatrixXd Phi_T = (s.A * period).exp();
   return (Eigen::MatrixXd::Identity(n, n) - Phi_T).completeOrthogonalDecomposition().solve(x);
 }
 
