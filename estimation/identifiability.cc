@@ -154,20 +154,30 @@ std::vector<ParameterIdentifiability> Classify(const Problem& problem, const Eig
       p.wald_95 = setup.Interval95(i, xhat[i], s);
     }
   }
-  const int threads = run ? std::min(internal::ThreadsFor(o.fit.threads), n) : 1;
-  std::vector<std::unique_ptr<Problem>> copies(threads);
+  // Thread 0 on the problem itself, each other on a copy made here (as the
+  // problem was made: not expected to fail; where one does, fewer threads).
+  std::vector<std::unique_ptr<Problem>> copies(1);
+  for (int t = 1; run && t < std::min(internal::ThreadsFor(o.fit.threads), n); ++t) {
+    Status created;
+    auto copy = Problem::Create(problem.model(), problem.dataset(), problem.residuals().options(),
+                                &created);
+    if (!copy) break;
+    copies.push_back(std::move(copy));
+  }
+  const int threads = static_cast<int>(copies.size());
   std::mutex mutex;
   int done = 0;
   std::atomic<int> next{0};
   internal::ParallelFor(threads, threads, [&](int t) {
     for (int i; (i = next++) < n;) {
-      if (run) {
-        if (t > 0 && !copies[t]) {
-          Status created;
-          copies[t] = Problem::Create(problem.model(), problem.dataset(), problem.residuals().options(), &created);
+      try {
+        if (run) {
+          const Problem& mine = t > 0 ? *copies[t] : problem;
+          out[i].profile_95 = internal::ProfileCoordinate(mine, xhat, cost, i, u.std[i], o);
         }
-        const Problem& mine = copies[t] ? *copies[t] : problem;
-        out[i].profile_95 = internal::ProfileCoordinate(mine, xhat, cost, i, u.std[i], o);
+      } catch (...) {
+        next = n;  // the other threads take no new coordinate
+        throw;
       }
       const std::lock_guard<std::mutex> lock(mutex);
       if (o.on_step) o.on_step(1 + ++done, n + 2);

@@ -62,6 +62,8 @@ struct Lane {
 };
 std::vector<Lane> LanesOf(const ObstacleProfile& profile);
 
+// The functions below take a profile and a cam whose Invalid() is empty.
+
 // The height of the profile at x (one lane, unshifted).
 double ProfileHeight(const ObstacleProfile& profile, double x);
 

@@ -1,6 +1,7 @@
 #include "model/time_response.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -142,9 +143,11 @@ std::vector<double> TravelGrid(const std::vector<double>& times, double speed,
   for (double t : times) {
     const double from = grid.back();
     // (a step of exactly kTravelStep, to rounding, is one)
-    const int steps =
-        std::max(1, static_cast<int>(std::ceil(speed * (t - from) / kTravelStep - 1e-9)));
-    for (int k = 1; k <= steps; ++k) grid.push_back(k == steps ? t : from + (t - from) * k / steps);
+    const long steps =
+        std::max(1L, static_cast<long>(std::ceil(speed * (t - from) / kTravelStep - 1e-9)));
+    for (long k = 1; k <= steps; ++k) {
+      grid.push_back(k == steps ? t : from + (t - from) * static_cast<double>(k) / steps);
+    }
     if (t == from) grid.pop_back();  // a sample at the grid's last time
     sample->push_back(grid.size() - 1);
   }
@@ -190,8 +193,12 @@ Eigen::VectorXd PeriodicStart(const StateSpace& s, const Parameters& p, const Ob
 
 bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
                       ObstacleResult* r, std::string* why) {
-  if (!(run.speed_m_s > 0) || !std::isfinite(run.speed_m_s)) {
-    *why = "speed_m_s: rolling over an obstacle needs a positive speed";
+  if (!(run.speed_m_s >= kSlowestRoll) || !std::isfinite(run.speed_m_s)) {
+    *why = "speed_m_s: rolling over an obstacle needs a speed of at least 0.001 m/s";
+    return false;
+  }
+  if (!(p[Param::F_cz0] > 0) || !(p[Param::k_cz] > 0)) {
+    *why = "F_cz0, k_cz: the load and the contact stiffness must be positive";
     return false;
   }
   if (const std::string bad = run.profile.Invalid(); !bad.empty()) {
@@ -209,19 +216,24 @@ bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const Ob
       return false;
     }
   }
+  if (!run.times_s.empty() && run.speed_m_s * run.times_s.back() / kTravelStep > kMostSteps) {
+    *why = "time_s: the run rolls more than 10 km (10 million steps of 1 mm)";
+    return false;
+  }
   StateSpace s;
   if (!RollingStateSpace(model, p, run.speed_m_s, &s, why)) return false;
   std::vector<size_t> sample;
   const std::vector<double> grid = TravelGrid(run.times_s, run.speed_m_s, &sample);
   Eigen::MatrixXd u = Forces(p, run, grid);
-  const Eigen::RowVectorXd w = u.row(1) / -p[Param::k_cz];
+  Eigen::RowVectorXd w = u.row(1) / -p[Param::k_cz];
   Eigen::VectorXd x0;
-  double static_z_b = 0;  // the lugs' mean force's, where the mean is left out
-  if (run.profile.kind == ProfileKind::kLugs) {
+  const bool lugs = run.profile.kind == ProfileKind::kLugs;
+  r->reaches_at_t0 = !lugs && run.position_at_t0_m > FirstContact(run.profile, run.cam);
+  if (lugs) {
     Eigen::MatrixXd mean;
     x0 = PeriodicStart(s, p, run, &mean);
     u.colwise() -= mean.col(0);
-    static_z_b = -s.z_b * s.A.completeOrthogonalDecomposition().solve(s.B * mean.col(0));
+    w.array() -= mean(1, 0) / -p[Param::k_cz];  // about the mean, as the response
   }
   StateSpace with_z_b = s;  // the outputs and z_b
   with_z_b.C.conservativeResize(kNumTimeOutputs + 1, Eigen::NoChange);
@@ -234,7 +246,7 @@ bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const Ob
   r->lowest_contact_force_n = INFINITY;
   r->largest_load_change = -1;
   for (size_t k = 0; k < grid.size(); ++k) {
-    const double change = p[Param::k_cz] * (all(kNumTimeOutputs, k) + static_z_b + w[k]);
+    const double change = p[Param::k_cz] * (all(kNumTimeOutputs, k) + w[k]);
     if (p[Param::F_cz0] + change < r->lowest_contact_force_n) {
       r->lowest_contact_force_n = p[Param::F_cz0] + change;
       r->lowest_at_s = grid[k];

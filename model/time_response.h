@@ -43,13 +43,17 @@ bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double 
 Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
                              const Eigen::MatrixXd& u, const Eigen::VectorXd& x0 = {});
 
-// Rolling at speed_m_s > 0 over `profile` from X = position_at_t0_m at
-// t = 0 (§11): the forces u = [-F_cz0 beta, -k_cz w, -F_cz0 beta_x] at
-// X = position_at_t0_m + V t, held first-order on a grid of at most
-// kTravelStep of travel through the sample times. From the zero state at
-// t = 0, or for `lugs` the periodic steady state about the forces' mean
-// (the mean's static response left out: §11 reports it apart).
+// Rolling at speed_m_s (at least kSlowestRoll) over `profile` from X =
+// position_at_t0_m at t = 0 (§11): the forces u = [-F_cz0 beta, -k_cz w,
+// -F_cz0 beta_x] at X = position_at_t0_m + V t, held first-order on a grid
+// of at most kTravelStep of travel through the sample times (at most
+// kMostSteps). From rest at t = 0 (`reaches_at_t0` says where a cam already
+// reaches the profile there: simulate refuses that, a fit warns), or for
+// `lugs` the periodic steady state about the forces' mean (the mean's static
+// response left out: §11 reports it apart).
 inline constexpr double kTravelStep = 1e-3;  // m
+inline constexpr double kSlowestRoll = 1e-3;  // m/s
+inline constexpr long kMostSteps = 10'000'000;
 struct ObstacleRun {
   double speed_m_s = 0;
   ObstacleProfile profile;
@@ -58,13 +62,15 @@ struct ObstacleRun {
   std::vector<double> times_s;  // increasing, >= 0
 };
 // The response, and §11's validity: the contact force F_cz0 + k_cz (z_b + w)
-// over the grid (for lugs with the mean's static part), at its lowest (the
-// tire leaves the road where it is not positive) and where its change
-// |k_cz (z_b + w)| / F_cz0 is largest (§11 warns above 0.3).
+// over the grid (for lugs about the mean: F_cz0 is then the mean load on
+// them), at its lowest (the tire leaves the road where it is not positive)
+// and where its change |k_cz (z_b + w)| / F_cz0 is largest (§11 warns above
+// 0.3).
 struct ObstacleResult {
   Eigen::MatrixXd y;  // kNumTimeOutputs x the samples
   double lowest_contact_force_n = 0, lowest_at_s = 0;
   double largest_load_change = 0, largest_at_s = 0;
+  bool reaches_at_t0 = false;  // position_at_t0_m > FirstContact (not lugs)
 };
 // False with why naming what is wrong.
 bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,

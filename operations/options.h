@@ -128,8 +128,8 @@ struct FitSettings {
              "the start");
     option::Fix(a, &fix);
     a->Visit("threads", &threads,
-             "starts (diagnose: and candidate effects) fitted at once; 0: the cores, shared "
-             "among --jobs");
+             "starts (diagnose: and candidate effects; identifiability: and profiles) fitted at "
+             "once; 0: the cores, shared among --jobs");
   }
 };
 

@@ -685,13 +685,14 @@ TEST(IdentifiabilityTest, AdvisedDrumTestMakesTheRelaxationLengthIdentifiable) {
 
 // The steps a progress line shows (IdentifiabilityOptions::on_step): from
 // none done to all, never back, over the fit, Table 1's 16 free coordinates'
-// profiles and the rest.
+// profiles (on two threads) and the rest.
 TEST(IdentifiabilityTest, ItsStepsRunFromNoneToAllOverTheFitAndEachProfile) {
   Dataset d;
   LoadError e;
   ASSERT_TRUE(LoadDataset(testing::SourcePath("datasets/paper/table1.json"), &d, &e));
   IdentifiabilityOptions o;
-  o.profile_steps = 0;
+  o.profile_steps = 1;
+  o.fit.threads = 2;
   std::vector<std::pair<int, int>> steps;
   o.on_step = [&](int done, int total) { steps.emplace_back(done, total); };
   IdentifiabilityResult r;

@@ -255,6 +255,7 @@ TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
   ASSERT_TRUE(ObstacleResponse(RigidRingModel(), ExampleCarTire(), fine, &fine_result, &why))
       << why;
   const Eigen::MatrixXd &y = coarse.y, &z = fine_result.y;
+  EXPECT_FALSE(coarse.reaches_at_t0);  // the front cam reaches the cleat at X = -0.18 m
   for (int o = 0; o < kNumTimeOutputs; ++o) {
     const double peak = z.row(o).cwiseAbs().maxCoeff();
     for (int k = 0; k < 100; ++k) {
@@ -309,6 +310,12 @@ TEST(TimeResponseTest, ARunThatCannotBeRolledIsRefusedNamingTheField) {
   bad = run;
   bad.cam.c_e = 0.5;
   refused(bad, "c_e");
+  bad = run;
+  bad.speed_m_s = 1e-9;
+  refused(bad, "speed_m_s");
+  bad = run;
+  bad.times_s.back() = 2e3;  // 20 km at 10 m/s
+  refused(bad, "time_s");
 }
 
 }  // namespace
