@@ -17,7 +17,9 @@ int Predict(int argc, char** argv) {
   if (FLAGS_parameters.empty() == FLAGS_dataset.empty()) {
     return Usage("predict needs exactly one of --parameters=FILE or --dataset=FILE");
   }
-  if (!CheckOutputs({{"output", FLAGS_output}}, Inputs(), &error)) return Usage(error);
+  auto inputs = Inputs();
+  inputs.emplace_back("lug_profile", s.lug_profile);
+  if (!CheckOutputs({{"output", FLAGS_output}}, inputs, &error)) return Usage(error);
   Parameters p;
   LoadError load;
   std::vector<std::string> notes;
@@ -38,7 +40,11 @@ int Predict(int argc, char** argv) {
   if (!solve_error.empty()) std::fprintf(stderr, "ringid: predict: %s\n", solve_error.c_str());
   else std::printf("%s", body.FullReport().c_str());
   if (!FLAGS_output.empty()) {
-    const int rc = Write(FLAGS_output, ReportText(PredictReport{ThisRun(argc, argv, std::nullopt), body}));
+    Provenance provenance = ThisRun(argc, argv, std::nullopt);
+    if (!s.lug_profile.empty()) {
+      provenance.inputs.push_back({"lug_profile", s.lug_profile, FileSha256(s.lug_profile)});
+    }
+    const int rc = Write(FLAGS_output, ReportText(PredictReport{provenance, body}));
     if (rc != kExitOk) return rc;
   }
   return solve_error.empty() ? kExitOk : kExitFailure;

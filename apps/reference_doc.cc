@@ -16,6 +16,7 @@ const char* DomainText(Domain d) {
     case Domain::kPositive: return "> 0";
     case Domain::kNonNegative: return ">= 0";
     case Domain::kReal: return "any sign";
+    case Domain::kAboveOne: return "> 1";
   }
   return "";
 }
@@ -26,6 +27,7 @@ const char* GroupText(Group g) {
     case Group::kInPlane: return "in-plane";
     case Group::kOutOfPlane: return "out-of-plane";
     case Group::kEffect: return "effect";
+    case Group::kEnvelope: return "obstacle (tandem cam)";
   }
   return "";
 }
@@ -49,16 +51,17 @@ std::string ReferenceMarkdown() {
   const Parameters car = ExampleCarTire();
   o << "## Parameters\n\n"
        "The typical value is the example passenger car tire (`datasets/examples/car_tire.json`:\n"
-       "the belt of the public MF-Swift 205/60R15 example, typical contact values), which passes\n"
-       "every plausibility rule of [plausibility.md](plausibility.md). Effect parameters are 0\n"
-       "in the baseline model.\n\n"
+       "the belt and the tandem cam of the public MF-Swift 205/60R15 example, typical contact\n"
+       "values), which passes every plausibility rule of [plausibility.md](plausibility.md).\n"
+       "Effect parameters are 0 in the baseline model. The tandem cam's are read only where the\n"
+       "tire rolls over an obstacle (contract §11).\n\n"
        "| name | meaning | unit | sign | group | typical (car tire) |\n"
        "| --- | --- | --- | --- | --- | --- |\n";
   for (int i = 0; i < kNumParams; ++i) {
     const Param p = ParamAt(i);
     const ParameterInfo& info = Info(p);
     const bool set = car.IsSet(p) && (info.group != Group::kEffect || car[p] != 0);
-    o << "| `" << ParamName(p) << "` | " << info.description << " | " << info.unit << " | "
+    o << "| `" << ParamName(p) << "` | " << info.description << " | " << (*info.unit ? info.unit : "—") << " | "
       << DomainText(info.domain) << " | " << GroupText(info.group) << " | "
       << (set ? Significant4(car[p]) : "—") << " |\n";
   }

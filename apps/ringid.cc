@@ -138,6 +138,7 @@ int SimulateCommand(int, char**) {
   }
   auto inputs = Inputs();
   inputs.emplace_back("frf", settings.frf);
+  inputs.emplace_back("obstacle", settings.obstacle);
   if (!CheckOutputs({{"output", FLAGS_output}, {"truth", FLAGS_truth}}, inputs, &error)) {
     return Usage(error);
   }
@@ -160,6 +161,15 @@ int SimulateCommand(int, char**) {
   std::string modes = frfs == 0 || !d.modes.empty() ? std::to_string(d.modes.size()) + " modes" : "";
   if (frfs > 0) modes += (modes.empty() ? "" : ", ") + std::to_string(frfs) + " FRFs";
   if (!d.statics.empty()) modes += ", " + std::to_string(d.statics.size()) + " static stiffnesses";
+  size_t runs = 0, series = 0;
+  for (const Condition& c : d.conditions) {
+    runs += c.obstacle.has_value();
+    series += c.obstacle ? c.obstacle->channels.size() : 0;
+  }
+  if (runs > 0) {
+    modes += ", " + std::to_string(runs) + (runs == 1 ? " obstacle run" : " obstacle runs") +
+             " (" + std::to_string(series) + " channels in all)";
+  }
   if (d.conditions.size() > 1) modes += " in " + std::to_string(d.conditions.size()) + " conditions";
   std::printf("wrote %s (%s) and %s (effect %s)\n", FLAGS_output.c_str(), modes.c_str(),
               FLAGS_truth.c_str(), EffectList(s.effects).c_str());

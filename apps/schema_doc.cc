@@ -94,8 +94,9 @@ std::string InputsMarkdown() {
          "priors (conventions.md §7); a condition's `modes` are required, `static` is format 3's.\n\n" +
          InputSchema(format2) + "\n" +
          "## Dataset, format 3 (`" + kDatasetFormat3 + "`)\n\nFormat 2's fields, each condition "
-         "holding any of `modes`, `frf` (frequency response functions,\ncontract §9) and `static` "
-         "(static stiffnesses, standing only; contract §10), at least one.\n\n" + InputSchema(format3) + "\n" +
+         "holding any of `modes`, `frf` (frequency response functions,\ncontract §9), `static` "
+         "(static stiffnesses, standing only; contract §10) and `obstacle` (the axle's\nresponse "
+         "to rolling over a profile over time, at speed; contract §11), at least one.\n\n" + InputSchema(format3) + "\n" +
          "## Parameter set (`" + kParameterSetFormat + "`)\n\nRead by `--parameters`, written by "
          "`identify --save_parameters` and `export`. A reader also takes a bare number for a\n"
          "value, a file without `format`, and an identify report (its `parameters`).\n\n" + InputSchema(ParameterSet{}) + "\n" +
@@ -129,7 +130,23 @@ std::string InputsMarkdown() {
          "input)\npairs measured (absent: every output with every input); `noise` the sd of re "
          "and of im per\nline relative to |H| (absent: " + Number(SimulateOptions().frf_noise) + "; 0: none). Examples: "
          "`datasets/examples/hammer_spec.json`,\n`datasets/examples/drum_spec.json`.\n\n" +
-         InputSchema(FrfSpecFields{});
+         InputSchema(FrfSpecFields{}) + "\n" +
+         "## Obstacle spec (`" + kObstacleSpecFormat + "`)\n\nRead by `simulate --obstacle` "
+         "(contract §11; [the obstacles guide](guides/obstacles.md)): a drum test\nover a cleat or a lugged "
+         "tread, whose values the model gives. One condition per speed of\n`speeds_m_s` (m/s, "
+         "each > 0), named `obstacle_V`; the `profile` as in a dataset's `obstacle`\nblock; the "
+         "contact centre at `position_at_t0_m` at t = 0; samples at k / `sample_rate_hz`\nfor k "
+         "below round(`duration_s` x `sample_rate_hz`); `outputs` the channels by name\n(" +
+         TimeOutputChoices() + "); `noise` each channel's sigma relative to the\npeak-to-peak of "
+         "its noise-free series, 0 to 1 (absent: " + Number(kDefaultObstacleNoise) + "; 0: none, and\n"
+         "sigma then the default's share). Speeds 0.001 to 200 m/s, at most 100. An "
+         "example:\n`datasets/examples/cleat_spec.json`.\n\n" +
+         InputSchema(ObstacleSpecFields{}) + "\n" +
+         "## Lug profile (`" + kLugProfileFormat + "`)\n\nRead by `predict --lug_profile` "
+         "(contract §11; [the obstacles guide](guides/obstacles.md)): a\nlugged tread rolled out, "
+         "a `lugs` profile as in a dataset's `obstacle` block. An example:\n"
+         "`datasets/examples/cross_stitch_lugs.json`.\n\n" +
+         InputSchema(LugProfileFields{});
 }
 
 }  // namespace ringid

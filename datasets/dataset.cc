@@ -239,8 +239,8 @@ void Priors(const std::map<std::string, PriorFields>& priors, Dataset* d) {
       if (prior.spread > kMaxParameterMagnitude) Fail(f + ".sigma", ParameterValueProblem(p, prior.spread));
     } else {
       if (Info(p).domain != Domain::kPositive) {
-        Fail(f + ".distribution", "a lognormal prior needs a positive parameter; '" + name +
-                                      "' may be zero or negative");
+        Fail(f + ".distribution", "a lognormal prior needs a positive parameter fitted in log; '" +
+                                      name + "' is not");
       }
       prior.center = Positive(*o.median, f + ".median");
       const std::string problem = ParameterValueProblem(p, prior.center);
@@ -321,7 +321,8 @@ void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* 
   d->conditions.push_back(c);
   if (d->format == 2 && !j.modes) Fail(field + ".modes", "missing");
   for (const auto& [given, name] : {std::pair{j.statics.has_value(), "static"},
-                                     std::pair{j.frf.has_value(), "frf"}}) {
+                                     std::pair{j.frf.has_value(), "frf"},
+                                     std::pair{j.obstacle.has_value(), "obstacle"}}) {
     if (d->format == 2 && given) {
       Fail(field + "." + name, std::string("needs format \"") + kDatasetFormat3 + "\" (contract §10)");
     }
@@ -335,8 +336,16 @@ void ReadCondition(const ConditionFields& j, const std::string& field, Dataset* 
     }
   }
   if (j.statics) Statics(*j.statics, field + ".static", index, c.speed_m_s, d);
-  if (!j.modes && !j.statics && !j.frf) {
-    Fail(field, "holds no measurement: give it modes, frf or static (contract §10)");
+  if (j.obstacle) {
+    LoadError error;
+    d->conditions.back().obstacle.emplace();
+    if (!ReadObstacle(*j.obstacle, c.speed_m_s, d->path, field + ".obstacle",
+                      &*d->conditions.back().obstacle, &error)) {
+      Fail(error.field, error.message);
+    }
+  }
+  if (!j.modes && !j.statics && !j.frf && !j.obstacle) {
+    Fail(field, "holds no measurement: give it modes, frf, static or obstacle (contract §10)");
   }
 }
 
@@ -404,6 +413,7 @@ std::string ParameterValueProblem(Param p, double v) {
   const Domain d = Info(p).domain;
   if (d == Domain::kPositive && !(v > 0)) return "must be positive";
   if (d == Domain::kNonNegative && v < 0) return "must not be negative";
+  if (d == Domain::kAboveOne && !(v > 1)) return "must be greater than 1";
   if (std::abs(v) > kMaxParameterMagnitude) return "is absurd: beyond " + Magnitude();
   return "";
 }

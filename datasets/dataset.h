@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/frf.h"
+#include "datasets/obstacle.h"
 #include "model/names.h"
 #include "model/parameters.h"
 
@@ -46,8 +47,11 @@ struct Condition {
   std::map<Param, double> known;    // per_condition parameters only
   std::map<Param, double> initial;  // per_condition parameters only
   // Format 3: the condition's frequency response functions (contract §9),
-  // read and written; fitted from issue 36 on.
+  // read, written and fitted.
   std::optional<Frf> frf;
+  // Format 3: the axle's response to rolling over an obstacle (contract
+  // §11), read and written.
+  std::optional<ObstacleTest> obstacle;
 };
 
 // A prior of docs/conventions.md §7, in the units of its parameter.

@@ -81,6 +81,7 @@ struct ConditionFields {
   std::optional<std::vector<ModeFields>> modes;
   std::optional<std::vector<StaticFields>> statics;  // "static", format 3
   std::optional<FrfFields> frf;                      // format 3 (contract §9)
+  std::optional<ObstacleFields> obstacle;            // format 3 (contract §11)
 
   template <class Archive>
   void Serialize(Archive* a) {
@@ -91,6 +92,7 @@ struct ConditionFields {
     a->VisitIfSet("modes", &modes);
     a->VisitIfSet("frf", &frf);
     a->VisitIfSet("static", &statics);
+    a->VisitIfSet("obstacle", &obstacle);
   }
 };
 

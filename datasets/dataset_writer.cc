@@ -57,7 +57,7 @@ bool NeedsFormat2(const Dataset& d) {
 bool NeedsFormat3(const Dataset& d) {
   return d.format == 3 || !d.statics.empty() ||
          std::any_of(d.conditions.begin(), d.conditions.end(),
-                     [](const Condition& c) { return c.frf.has_value(); });
+                     [](const Condition& c) { return c.frf || c.obstacle; });
 }
 
 }  // namespace
@@ -117,6 +117,7 @@ DatasetFields FieldsOf(const Dataset& d) {
       o.modes->push_back(FieldsOf(m));
     }
     if (c.frf) o.frf = FieldsOf(*c.frf);
+    if (c.obstacle) o.obstacle = FieldsOf(*c.obstacle);
     for (const MeasuredStatic& m : d.statics) {
       if (m.condition != static_cast<int>(i)) continue;
       if (!o.statics) o.statics.emplace();

@@ -7,6 +7,7 @@
 
 #include "datasets/dataset.h"
 #include "datasets/frf_spec.h"
+#include "datasets/obstacle.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
 #include "datasets/uff_dataset.h"
@@ -48,7 +49,8 @@ FileKind FormatKind(const std::string& format) {
       {kParameterSetFormat, FileKind::kParameterSet}, {kTruthFormat, FileKind::kTruth},
       {kResponseFormat, FileKind::kResponseDataset},  {kLugForcesFormat, FileKind::kLugForces},
       {kUffMapFormat, FileKind::kUffMap},           {kUffMapFormat2, FileKind::kUffMap},
-      {kFrfSpecFormat, FileKind::kFrfSpec},
+      {kFrfSpecFormat, FileKind::kFrfSpec},         {kObstacleSpecFormat, FileKind::kObstacleSpec},
+      {kLugProfileFormat, FileKind::kLugProfile},
   };
   for (const auto& [name, kind] : kFormats) {
     if (format == name) return kind;
@@ -93,6 +95,14 @@ void Words(const SniffedFile& found, std::string* what_out, std::string* belongs
     case FileKind::kFrfSpec:
       what = "an FRF test's layout" + format;
       belongs = "use simulate --frf";
+      break;
+    case FileKind::kObstacleSpec:
+      what = "an obstacle test's layout" + format;
+      belongs = "use simulate --obstacle";
+      break;
+    case FileKind::kLugProfile:
+      what = "a lugged tread's profile" + format;
+      belongs = "use predict --lug_profile";
       break;
     case FileKind::kReport: what = "a ringid " + found.detail + " report"; break;
   }

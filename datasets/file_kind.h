@@ -21,6 +21,8 @@ enum class FileKind {
   kLugForces,
   kUffMap,
   kFrfSpec,
+  kObstacleSpec,
+  kLugProfile,
   kReport,  // any ringid report ("report": KIND)
 };
 

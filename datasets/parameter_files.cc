@@ -1,5 +1,6 @@
 #include "datasets/parameter_files.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 
@@ -85,7 +86,14 @@ Truth MakeTruth(const RigidRingModel& model, const Parameters& truth, const Data
   Truth t;
   t.dataset = dataset_file;
   t.effect = EffectList(model.effects());
-  for (Param q : model.parameters()) {
+  std::vector<Param> used = model.parameters();
+  if (std::any_of(d.conditions.begin(), d.conditions.end(),
+                  [](const Condition& c) { return c.obstacle.has_value(); })) {
+    for (int i = 0; i < kNumParams; ++i) {
+      if (Info(ParamAt(i)).group == Group::kEnvelope) used.push_back(ParamAt(i));
+    }
+  }
+  for (Param q : used) {
     if (!d.IsPerCondition(q)) t.parameters[ParamName(q)].value = truth[q];
   }
   for (const Condition& c : d.conditions) {

@@ -11,6 +11,7 @@
 
 #include "datasets/frf_spec.h"
 #include "datasets/measurement.h"
+#include "model/time_response.h"
 
 namespace ringid {
 
@@ -190,6 +191,18 @@ Parameters ExampleCarTire() {
   p[P::r_l0] = 0.28;
   p[P::t_0] = 0.03;
   p[P::k_cz] = 2e5;
+  // The tandem cam: the same example's fitted [CONTACT_PATCH] (ELLIPS_LENGTH
+  // 1.4634, ELLIPS_HEIGHT 0.9551, ELLIPS_ORDER 1.5257, ELLIPS_SHIFT 0.8328)
+  // by docs/tir.md's mapping: a_e and b_e times UNLOADED_RADIUS 0.3135 m, l_s
+  // times the contact length 2a at 4 kN, a = R0 (Q_RA2 rho/R0 + Q_RA1
+  // sqrt(rho/R0)) with Q_RA1 0.6715, Q_RA2 0.7308 and the deflection rho =
+  // F_z / VERTICAL_STIFFNESS 209651.5 N/m.
+  const double r0 = 0.3135, rho = 4000 / 209651.5;
+  const double a = r0 * (0.7308 * (rho / r0) + 0.6715 * std::sqrt(rho / r0));
+  p[P::a_e] = 1.4634 * r0;
+  p[P::b_e] = 0.9551 * r0;
+  p[P::c_e] = 1.5257;
+  p[P::l_s] = 0.8328 * 2 * a;
   return p;
 }
 
@@ -205,7 +218,7 @@ void SetEngineerPriors(const Parameters& truth, double prior_spread,
              {Param::c_bpsi, Param::c_bgamma}, {Param::k_bpsi, Param::k_bgamma}};
   for (int i = 0; i < kNumParams; ++i) {
     const Param q = ParamAt(i);
-    if (Info(q).group == Group::kEffect || d->known.count(q) || d->ties.count(q)) continue;
+    if (!IsBaseline(q) || d->known.count(q) || d->ties.count(q)) continue;
     d->initial[q] = truth[q] * std::exp(prior_spread * normal(*rng));
   }
 }
@@ -264,7 +277,94 @@ std::string CompactNumber(double v) {
   return text;
 }
 
+// "%.4g" of v.
+std::string Short(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
 }  // namespace
+
+bool SimulateObstacles(const RigidRingModel& model, const Parameters& truth,
+                       const ObstacleSpec& spec, const std::vector<double>& loads,
+                       std::mt19937_64* rng, std::vector<Condition>* conditions,
+                       std::vector<std::string>* warnings, LoadError* error) {
+  std::normal_distribution<double> normal(0, 1);
+  *error = LoadError{spec.path, "", ""};
+  const bool lugs = spec.profile.kind == ProfileKind::kLugs;
+  for (Condition c : SimulatedConditions(spec.speeds_m_s, loads)) {
+    c.name.replace(0, c.name.find('_'), "obstacle");
+    Parameters p = truth;
+    for (const auto& [q, v] : c.known) p[q] = v;
+    ObstacleRun run;
+    run.speed_m_s = c.speed_m_s;
+    run.profile = spec.profile;
+    run.cam = CamOf(p);
+    run.position_at_t0_m = spec.position_at_t0_m;
+    for (int k = 0; k < spec.samples; ++k) run.times_s.push_back(k / spec.sample_rate_hz);
+    ObstacleResult r;
+    std::string why;
+    if (!ObstacleResponse(model, p, run, &r, &why)) {  // why: "field: message"
+      const size_t colon = why.find(": ");
+      error->field = colon == std::string::npos ? "" : why.substr(0, colon);
+      error->message = "condition " + c.name + ": " + why.substr(colon == std::string::npos ? 0 : colon + 2);
+      return false;
+    }
+    if (r.reaches_at_t0) {
+      error->field = "position_at_t0_m";
+      error->message = "a cam reaches the profile at t = 0: start below " +
+                       Short(FirstContact(run.profile, run.cam)) + " m, where the road under " +
+                       "every cam is flat (contract §11)";
+      return false;
+    }
+    if (!(r.lowest_contact_force_n > 0)) {
+      error->field = "profile";
+      error->message = "condition " + c.name + ": the tire leaves the road at t = " +
+                       Short(r.lowest_at_s) + " s (contact force " +
+                       Short(r.lowest_contact_force_n) + " N): the linear model does not hold " +
+                       "(contract §11): a lower obstacle or a higher load";
+      return false;
+    }
+    if (r.largest_load_change > kLargeLoadChange) {
+      warnings->push_back("condition " + c.name + ": the contact force changes by " +
+                          Short(100 * r.largest_load_change) + " % of F_cz0 at t = " +
+                          Short(r.largest_at_s) + " s, more than " +
+                          Short(100 * kLargeLoadChange) + " %: the linear model is stretched");
+    }
+    ObstacleTest test;
+    test.profile = spec.profile;
+    test.position_at_t0_m = spec.position_at_t0_m;
+    test.times_s = run.times_s;
+    test.sample_rate_hz = spec.sample_rate_hz;
+    for (int o : spec.outputs) {
+      const Eigen::RowVectorXd y = r.y.row(o);
+      const double span = y.maxCoeff() - y.minCoeff();
+      if (!std::isfinite(span)) {
+        error->field = "profile";
+        error->message = "condition " + c.name + ": " + TimeOutputName(o) + " is not finite";
+        return false;
+      }
+      if (!(span > 0)) {
+        error->field = "outputs";
+        error->message = std::string(TimeOutputName(o)) + " is identically zero in condition " +
+                         c.name + (lugs ? "" : " (its noise would be 0)") +
+                         ": leave it out";
+        return false;
+      }
+      ObstacleChannel ch;
+      ch.output = o;
+      ch.one_sigma = true;
+      const double sigma = spec.noise * span;
+      for (Eigen::Index k = 0; k < y.size(); ++k) ch.values.push_back(y[k] + sigma * normal(*rng));
+      ch.sigma.assign(y.size(), spec.noise > 0 ? sigma : kDefaultObstacleNoise * span);
+      test.channels.push_back(std::move(ch));
+    }
+    c.obstacle = std::move(test);
+    conditions->push_back(std::move(c));
+  }
+  return true;
+}
 
 std::vector<Condition> SimulatedConditions(const std::vector<double>& speeds,
                                            const std::vector<double>& loads) {

@@ -98,6 +98,21 @@ Dataset PlanSimulation(const Parameters& truth, double prior_spread,
                        const std::vector<double>& speeds, const std::vector<double>& loads,
                        std::mt19937_64* rng);
 
+// Each speed of `spec` (x each of `loads`, as SimulatedConditions) as a
+// condition "obstacle_V" holding the axle's response to rolling over the
+// spec's profile (contract §11) with the tandem cam of `truth`, and noise of
+// spec.noise times each channel's peak-to-peak there (that its sigma; with
+// noise 0, the default's). False
+// with `error` naming the spec's field where the test cannot be simulated: a
+// cam reaching the profile at t = 0 (but lugs), the tire leaving the road, a
+// channel identically zero. `warnings`: where the load changes by more than
+// kLargeLoadChange of F_cz0.
+inline constexpr double kLargeLoadChange = 0.3;
+bool SimulateObstacles(const RigidRingModel& model, const Parameters& truth,
+                       const ObstacleSpec& spec, const std::vector<double>& loads,
+                       std::mt19937_64* rng, std::vector<Condition>* conditions,
+                       std::vector<std::string>* warnings, LoadError* error);
+
 // The effects' names joined by commas, "none" without any.
 std::string EffectList(const std::vector<const Effect*>& effects);
 

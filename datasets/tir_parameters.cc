@@ -394,7 +394,7 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
            " N; no FNOMIN is written.\n";
   }
   out += AssumptionNotes(p);
-  std::vector<std::string> not_held, effects;
+  std::vector<std::string> not_held, effects, cam;
   for (Param q : ParametersNotHeldByTir()) {
     not_held.push_back(std::string(ParamName(q)) +
                        (p.IsSet(q) ? " = " + TirNumber(p[q]) + " " + Info(q).unit : " (unset)"));
@@ -418,8 +418,14 @@ bool ParametersToTir(const Parameters& p, const std::string& name, const std::st
     if (Info(q).group == Group::kEffect && p.IsSet(q) && p[q] != 0) {
       effects.push_back(std::string(ParamName(q)) + " = " + TirNumber(p[q]) + " " + Info(q).unit);
     }
+    if (Info(q).group == Group::kEnvelope && p.IsSet(q)) {
+      cam.push_back(std::string(ParamName(q)) + " = " + TirNumber(p[q]) + " " + Info(q).unit);
+    }
   }
   if (!effects.empty()) CommentList("Nor the effect parameters:", effects, &out);
+  if (!cam.empty()) {
+    CommentList("Not written, the tandem cam (ringid writes no [CONTACT_PATCH]):", cam, &out);
+  }
   if (!unset.empty()) CommentList("Not written, a parameter unset:", unset, &out);
   std::vector<std::string> never;
   for (const TirNotWritten& k : TirKeysNotWritten()) never.push_back(k.key);

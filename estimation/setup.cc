@@ -31,6 +31,12 @@ bool ParameterSetup::Build(const ModalModel& model, const Dataset& dataset,
     return std::find(s->used_.begin(), s->used_.end(), p) != s->used_.end();
   };
   const int nc = static_cast<int>(dataset.conditions.size());
+  for (const Condition& c : dataset.conditions) {
+    if (!c.obstacle) continue;
+    *error = "condition '" + c.name + "': ringid simulates obstacle tests but does not fit " +
+             "them: leave its obstacle block out of the dataset to fit the rest";
+    return false;
+  }
   for (int c = 0; c < nc; ++c) {
     s->conditions_.push_back(nc > 1 || dataset.NamesConditions() ? dataset.conditions[c].name : "");
     s->start_.push_back(InitialParameters(dataset, c));
@@ -80,18 +86,22 @@ ParameterKey ParameterSetup::key(int i) const {
 }
 
 double ParameterSetup::ToPhysical(int i, double x) const {
+  if (is_above_one(i)) return 1 + std::exp(x);
   return is_log(i) ? std::exp(x) : x * TypicalScale(free_[i]);
 }
 
 double ParameterSetup::ToCoordinate(int i, double value) const {
+  if (is_above_one(i)) return std::log(value - 1);
   return is_log(i) ? std::log(value) : value / TypicalScale(free_[i]);
 }
 
 double ParameterSetup::PhysicalStd(int i, double x, double sd) const {
+  if (is_above_one(i)) return std::exp(x) * sd;
   return is_log(i) ? std::exp(x) * sd : sd * TypicalScale(free_[i]);
 }
 
 std::pair<double, double> ParameterSetup::Interval95(int i, double x, double sd) const {
+  if (is_above_one(i)) return {1 + std::exp(x - kNormal95 * sd), 1 + std::exp(x + kNormal95 * sd)};
   if (is_log(i)) return {std::exp(x - kNormal95 * sd), std::exp(x + kNormal95 * sd)};
   const double v = ToPhysical(i, x), half = kNormal95 * PhysicalStd(i, x, sd);
   return {v - half, v + half};

@@ -15,8 +15,9 @@
 // Types: bool, integers, double (null where not finite), std::string, enums
 // with EnumNames, pointers to objects with PointerNames (an effect or "none"), std::complex<double> ({re, im}), std::optional (null),
 // std::vector (array), std::pair (two-element array), std::map keyed by a
-// string or an enum (object), Eigen vectors (array) and matrices (rows), and
-// structs with Serialize (object).
+// string or an enum (object), Eigen vectors (array) and matrices (rows),
+// std::variant (read as its first alternative the value reads as: a number
+// or an array of them, say), and structs with Serialize (object).
 #ifndef RINGID_MODEL_ARCHIVE_H_
 #define RINGID_MODEL_ARCHIVE_H_
 
@@ -30,6 +31,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,6 +56,8 @@ template <class A, class B> struct IsPair<std::pair<A, B>> : std::true_type {};
 template <class T> struct IsMap : std::false_type {};
 template <class K, class V> struct IsMap<std::map<K, V>> : std::true_type {};
 template <class T> struct IsEigen : std::is_base_of<Eigen::EigenBase<T>, T> {};
+template <class T> struct IsVariant : std::false_type {};
+template <class... T> struct IsVariant<std::variant<T...>> : std::true_type {};
 
 template <class T>
 using PointerNamesOf = PointerNames<std::remove_const_t<std::remove_pointer_t<T>>>;
@@ -137,6 +141,8 @@ class JsonWriter {
       return array;
     } else if constexpr (detail::IsPair<T>::value) {
       return Json::array({ToJson(v.first), ToJson(v.second)});
+    } else if constexpr (detail::IsVariant<T>::value) {
+      return std::visit([](const auto& item) { return ToJson(item); }, v);
     } else if constexpr (detail::IsMap<T>::value) {
       Json object = Json::object();
       for (const auto& [key, item] : v) object[detail::KeyText(key)] = ToJson(item);
@@ -323,6 +329,8 @@ class JsonReader {
       }
     } else if constexpr (detail::IsEigen<T>::value) {
       return EigenFromJson(j, path, v, error);
+    } else if constexpr (detail::IsVariant<T>::value) {
+      return VariantFromJson<T, 0>(j, path, v, error);
     } else {
       if (!Expect(j, j.is_object(), path, "an object", error)) return false;
       JsonReader reader(j, path, error);
@@ -333,6 +341,26 @@ class JsonReader {
   }
 
  private:
+  // The first alternative from I on that j reads as; else the last one's error.
+  template <class T, size_t I>
+  static bool VariantFromJson(const Json& j, const std::string& path, T* v, std::string* error) {
+    std::variant_alternative_t<I, T> item{};
+    std::string why;
+    if (FromJson(j, path, &item, &why)) {
+      *v = std::move(item);
+      return true;
+    }
+    if constexpr (I + 1 < std::variant_size_v<T>) {
+      return VariantFromJson<T, I + 1>(j, path, v, error);
+    } else {
+      // A value neither a number nor an array (the one variant read, a
+      // sigma, is those) says so; else the last alternative's error (an
+      // array with one bad element, say).
+      const bool typed = (j.is_number() || j.is_null()) ? false : !j.is_array();
+      *error = typed ? path + ": must be a number or an array (found " + j.type_name() + ")" : why;
+      return false;
+    }
+  }
   template <class T>
   static bool EigenFromJson(const Json& j, const std::string& path, T* v, std::string* error) {
     if (!Expect(j, j.is_array(), path, "an array", error)) return false;

@@ -2,12 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace ringid {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// "%g" of v.
+std::string Short(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 
 // A linear piece of the profile over [x0, x1] (closed: a jump's higher side
 // counts at the jump, as the sup in H does).
@@ -36,17 +44,23 @@ void ForEachPiece(const ObstacleProfile& p, double lo, double hi, const F& f) {
     }
     case ProfileKind::kLugs: {
       const double half = 0.5 * p.length_m, P = p.pitch_m;
-      for (double k = std::floor(lo / P) - 1; k <= std::ceil(hi / P) + 1; ++k) {
-        flat_or(k * P - half, k * P + half, p.height_m, p.height_m);
-        flat_or(k * P + half, (k + 1) * P - half, 0, 0);
+      const long long last = static_cast<long long>(std::ceil(hi / P)) + 1;
+      for (long long k = static_cast<long long>(std::floor(lo / P)) - 1; k <= last; ++k) {
+        const double at = static_cast<double>(k) * P;
+        flat_or(at - half, at + half, p.height_m, p.height_m);
+        flat_or(at + half, at + P - half, 0, 0);
       }
       return;
     }
     case ProfileKind::kPoints: {
-      const size_t n = p.x_m.size();
-      flat_or(-kInf, p.x_m.front(), 0, 0);
-      for (size_t i = 0; i + 1 < n; ++i) flat_or(p.x_m[i], p.x_m[i + 1], p.h_m[i], p.h_m[i + 1]);
-      flat_or(p.x_m.back(), kInf, 0, 0);
+      const std::vector<double>& x = p.x_m;
+      const size_t n = x.size();
+      if (lo <= x.front()) flat_or(-kInf, x.front(), 0, 0);
+      // the pieces [x_i, x_i+1] that meet [lo, hi]
+      size_t i = std::upper_bound(x.begin(), x.end(), lo) - x.begin();
+      i = i > 0 ? i - 1 : 0;
+      for (; i + 1 < n && x[i] <= hi; ++i) flat_or(x[i], x[i + 1], p.h_m[i], p.h_m[i + 1]);
+      if (hi >= x.back()) flat_or(x.back(), kInf, 0, 0);
       return;
     }
   }
@@ -76,26 +90,41 @@ LanePattern ObstacleProfile::Pattern() const {
 }
 
 std::string ObstacleProfile::Invalid() const {
-  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  const auto within = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
+  const std::string height = "must be a height of at most " + Short(kMostObstacleHeight) + " m either way";
   if (kind != ProfileKind::kPoints) {
-    if (!std::isfinite(height_m)) return "height_m: must be finite";
-    if (!positive(length_m)) return "length_m: must be positive";
+    if (!within(height_m, -kMostObstacleHeight, kMostObstacleHeight)) return "height_m: " + height;
+    if (!within(length_m, kShortestObstacle, kLongestObstacle)) {
+      return "length_m: must lie in [" + Short(kShortestObstacle) + ", " + Short(kLongestObstacle) + "] m";
+    }
   }
-  if (kind == ProfileKind::kLugs && !(positive(pitch_m) && pitch_m > length_m)) {
-    return "pitch_m: must exceed length_m (a lug's length)";
+  if (kind == ProfileKind::kLugs &&
+      !(within(pitch_m, kShortestPitch, kLongestPitch) && pitch_m > length_m)) {
+    return "pitch_m: must exceed length_m (a lug's length) and lie in [" + Short(kShortestPitch) +
+           ", " + Short(kLongestPitch) + "] m";
   }
   if (kind == ProfileKind::kPoints) {
     if (x_m.size() < 2 || x_m.size() != h_m.size()) {
       return "x_m, h_m: need two or more points, as many heights as positions";
     }
+    if (x_m.size() > kMostPoints) return "x_m: at most " + std::to_string(kMostPoints) + " points";
     for (size_t i = 0; i < x_m.size(); ++i) {
-      if (!std::isfinite(x_m[i]) || !std::isfinite(h_m[i])) return "x_m, h_m: must be finite";
-      if (i > 0 && !(x_m[i] > x_m[i - 1])) return "x_m: must increase";
+      if (!within(x_m[i], -kFarthestX, kFarthestX)) {
+        return "x_m: must lie within " + Short(kFarthestX) + " m of 0";
+      }
+      if (!within(h_m[i], -kMostObstacleHeight, kMostObstacleHeight)) return "h_m: " + height;
+      if (i > 0 && !(x_m[i] - x_m[i - 1] >= kShortestObstacle * (1 - 1e-9))) {
+        return "x_m: must increase by at least " + Short(kShortestObstacle) + " m";
+      }
     }
   }
-  if (width_m && !positive(*width_m)) return "width_m: must be positive";
-  if (!(std::abs(angle_deg) < 90)) return "angle_deg: must lie in (-90, 90)";
-  if (lanes < 1) return "lanes: must be at least 1";
+  if (width_m && !within(*width_m, kShortestObstacle, kWidestTread)) {
+    return "width_m: must lie in [" + Short(kShortestObstacle) + ", " + Short(kWidestTread) + "] m";
+  }
+  if (!within(angle_deg, -kSteepestAngleDeg, kSteepestAngleDeg)) {
+    return "angle_deg: must lie in [-" + Short(kSteepestAngleDeg) + ", " + Short(kSteepestAngleDeg) + "]";
+  }
+  if (lanes < 1 || lanes > kMostLanes) return "lanes: must lie in [1, " + std::to_string(kMostLanes) + "]";
   if (Pattern() == LanePattern::kAlternating) {
     if (kind != ProfileKind::kLugs) return "pattern: alternating is for lugs only";
     if (lanes % 2 != 0) return "lanes: alternating needs an even number";
@@ -105,11 +134,29 @@ std::string ObstacleProfile::Invalid() const {
 }
 
 std::string TandemCam::Invalid() const {
-  if (!(a_e > 0 && std::isfinite(a_e))) return "a_e: must be positive";
-  if (!(b_e > 0 && std::isfinite(b_e))) return "b_e: must be positive";
-  if (!(c_e > 1 && std::isfinite(c_e))) return "c_e: must exceed 1";
-  if (!(l_s > 0 && std::isfinite(l_s))) return "l_s: must be positive";
+  const auto length = [](double v) { return v > 0 && v <= kLongestCam; };
+  const std::string most = "m, at most " + Short(kLongestCam) + " m";
+  if (!length(a_e)) return "a_e: must be a positive length of " + most;
+  if (!length(b_e)) return "b_e: must be a positive length of " + most;
+  if (!(c_e > 1 && c_e <= kHighestCamOrder)) {
+    return "c_e: must exceed 1 and be at most " + Short(kHighestCamOrder);
+  }
+  if (!length(l_s)) return "l_s: must be a positive length of " + most;
   return "";
+}
+
+double PieceEvaluations(const ObstacleProfile& profile, const TandemCam& cam) {
+  double pieces = 3;
+  if (profile.kind == ProfileKind::kLugs) pieces = 2 * (2 * cam.a_e / profile.pitch_m + 3);
+  if (profile.kind == ProfileKind::kPoints) {
+    pieces = static_cast<double>(profile.x_m.size()) + 1;
+    double closest = kInf;  // the points' least spacing bounds the pieces in a cam's span
+    for (size_t i = 1; i < profile.x_m.size(); ++i) {
+      closest = std::min(closest, profile.x_m[i] - profile.x_m[i - 1]);
+    }
+    pieces = std::min(pieces, 2 * cam.a_e / closest + 3);
+  }
+  return 2.0 * static_cast<double>(LanesOf(profile).size()) * pieces;
 }
 
 std::vector<Lane> LanesOf(const ObstacleProfile& p) {
@@ -168,19 +215,31 @@ EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam,
   return e;
 }
 
-double FirstContact(const ObstacleProfile& profile, const TandemCam& cam) {
-  if (profile.kind == ProfileKind::kLugs) return -kInf;
-  double first = kInf;  // the profile's first x where it leaves 0
+std::pair<double, double> Reach(const ObstacleProfile& profile, const TandemCam& cam) {
+  if (profile.kind == ProfileKind::kLugs) return {-kInf, kInf};
+  double first = kInf, last = -kInf;  // where the profile leaves 0, and comes back for good
   if (profile.kind == ProfileKind::kCleat) {
-    if (profile.height_m != 0) first = -0.5 * profile.length_m;
+    if (profile.height_m != 0) first = -0.5 * profile.length_m, last = 0.5 * profile.length_m;
   } else {
-    for (size_t i = 0; i < profile.x_m.size() && first == kInf; ++i) {
-      if (profile.h_m[i] != 0) first = i > 0 ? profile.x_m[i - 1] : profile.x_m[0];
+    const size_t n = profile.x_m.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (profile.h_m[i] == 0) continue;
+      first = std::min(first, i > 0 ? profile.x_m[i - 1] : profile.x_m[0]);
+      last = std::max(last, i + 1 < n ? profile.x_m[i + 1] : profile.x_m[n - 1]);
     }
   }
-  double earliest = kInf;
-  for (const Lane& lane : LanesOf(profile)) earliest = std::min(earliest, first + lane.shift_m);
-  return earliest - 0.5 * cam.l_s - cam.a_e;
+  if (first == kInf) return {kInf, kInf};  // a flat road: no cam ever rises
+  double lo = kInf, hi = -kInf;
+  for (const Lane& lane : LanesOf(profile)) {
+    lo = std::min(lo, first + lane.shift_m);
+    hi = std::max(hi, last + lane.shift_m);
+  }
+  const double half = 0.5 * cam.l_s + cam.a_e;
+  return {lo - half, hi + half};
+}
+
+double FirstContact(const ObstacleProfile& profile, const TandemCam& cam) {
+  return profile.kind == ProfileKind::kLugs ? -kInf : Reach(profile, cam).first;
 }
 
 }  // namespace ringid

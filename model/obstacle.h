@@ -8,6 +8,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/enum_names.h"
@@ -28,6 +29,20 @@ template <>
 struct EnumNames<LanePattern> {
   static constexpr std::array<const char*, 3> kNames = {"inclined", "chevron", "alternating"};
 };
+
+// What a profile and a cam may be (Invalid): an obstacle a tire rolls over,
+// not a cliff; the bounds keep each run's work and numbers finite.
+inline constexpr double kMostObstacleHeight = 1;     // m, either way
+inline constexpr double kShortestObstacle = 1e-4;   // m: a length, a width, points' spacing
+inline constexpr double kLongestObstacle = 1e3;     // m
+inline constexpr double kShortestPitch = 5e-3, kLongestPitch = 10;  // m
+inline constexpr double kFarthestX = 1e4;           // m: points, and where a run starts
+inline constexpr size_t kMostPoints = 10000;
+inline constexpr double kWidestTread = 10;          // m
+inline constexpr double kSteepestAngleDeg = 85;
+inline constexpr int kMostLanes = 100;
+inline constexpr double kLongestCam = 10;           // m: a_e, b_e, l_s
+inline constexpr double kHighestCamOrder = 100;
 
 // Heights up (m) along x, the cleat's centre at x = 0; flat road (h = 0)
 // elsewhere. `points` is piecewise linear between its points, and 0 outside
@@ -54,6 +69,11 @@ struct TandemCam {
   // Why the cam is not one, naming the parameter; "" if it is.
   std::string Invalid() const;
 };
+
+// The pieces of the profile one evaluation of the effective inputs (w, beta
+// and beta_x at one X) visits at most: both cams of every lane, each over
+// the pieces within its span. A run's work is this times its points.
+double PieceEvaluations(const ObstacleProfile& profile, const TandemCam& cam);
 
 // One lane across the width: its y (right positive) and its copy's shift.
 struct Lane {
@@ -84,9 +104,13 @@ EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam, d
 EffectiveInput Effective(const ObstacleProfile& profile, const TandemCam& cam,
                          const std::vector<Lane>& lanes, double X);
 
-// The first X (increasing) at which a non-zero height of the profile comes
-// within some lane's front cam's reach (a_e): before it the road is flat
-// (§11's rule for t = 0). For lugs, -infinity (the road is never flat).
+// The X interval outside which every lane's two cams rest on a flat road,
+// so that w = beta = beta_x = 0 exactly: a non-zero height of the profile
+// within a cam's reach (a_e) of its centre. The whole line for lugs; {inf,
+// inf} for a flat profile.
+std::pair<double, double> Reach(const ObstacleProfile& profile, const TandemCam& cam);
+// Reach's first X: before it the road is flat (§11's rule for t = 0). For
+// lugs, -infinity (the road is never flat).
 double FirstContact(const ObstacleProfile& profile, const TandemCam& cam);
 
 }  // namespace ringid

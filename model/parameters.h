@@ -12,11 +12,13 @@
 
 namespace ringid {
 
-// How a parameter may vary. Estimation works in log space for kPositive.
-enum class Domain { kPositive, kNonNegative, kReal };
+// How a parameter may vary. Estimation works in log space for kPositive and
+// in log(value - 1) for kAboveOne.
+enum class Domain { kPositive, kNonNegative, kReal, kAboveOne };
 
-// Which part of the model a parameter belongs to.
-enum class Group { kInertia, kInPlane, kOutOfPlane, kEffect };
+// Which part of the model a parameter belongs to. kEnvelope: the tandem cam
+// of contract §11, read only where the tire rolls over an obstacle.
+enum class Group { kInertia, kInPlane, kOutOfPlane, kEffect, kEnvelope };
 
 // name, unit, domain, group, description. Order fixes the Param enum.
 #define RINGID_PARAMETERS(X)                                                   \
@@ -53,7 +55,11 @@ enum class Group { kInertia, kInPlane, kOutOfPlane, kEffect };
   X(k_cpsi, "N m/rad", kNonNegative, kEffect, "contact yaw stiffness")         \
   X(k_atheta, "N m/rad", kNonNegative, kEffect, "rim torsional restraint (axle_torsion)") \
   X(dm, "kg", kNonNegative, kEffect, "sensor mass on the tread (sensor_mass)") \
-  X(k_xy, "N/m", kReal, kEffect, "x_b-y_b coupling stiffness (lug_coupling)")
+  X(k_xy, "N/m", kReal, kEffect, "x_b-y_b coupling stiffness (lug_coupling)") \
+  X(a_e, "m", kPositive, kEnvelope, "cam half-length (tandem cam)")            \
+  X(b_e, "m", kPositive, kEnvelope, "cam half-height (tandem cam)")            \
+  X(c_e, "", kAboveOne, kEnvelope, "cam super-ellipse exponent (tandem cam)") \
+  X(l_s, "m", kPositive, kEnvelope, "distance between the tandem cams")
 
 enum class Param : int {
 #define RINGID_ENUM(name, unit, domain, group, text) name,
@@ -116,6 +122,12 @@ inline const SidewallElement* SidewallOf(Param p) {
 inline bool IsDamping(Param p) {
   const SidewallElement* e = SidewallOf(p);
   return e && e->damper == p;
+}
+
+// The parameters the baseline model reads wherever the tire is: neither an
+// effect's nor the tandem cam's.
+inline bool IsBaseline(Param p) {
+  return Info(p).group != Group::kEffect && Info(p).group != Group::kEnvelope;
 }
 
 // The belt's mass and the belt's and rim's inertias: what a force-calibrated

@@ -11,10 +11,11 @@ namespace ringid {
 namespace {
 
 std::string Name(Param p) { return ParamName(p); }
-std::string Unit(Param p) { return Info(p).unit; }
+// " m", or "" for a dimensionless parameter.
+std::string Unit(Param p) { return *Info(p).unit ? std::string(" ") + Info(p).unit : ""; }
 // "r_e0 = 0.319 m"
 std::string Value(const Parameters& p, Param q) {
-  return Name(q) + " = " + FormatSignificant3(p[q]) + " " + Unit(q);
+  return Name(q) + " = " + FormatSignificant3(p[q]) + Unit(q);
 }
 std::string Num(double x) { return FormatSignificant3(x); }
 
@@ -24,11 +25,11 @@ std::string Num(double x) { return FormatSignificant3(x); }
 // lo <= p <= hi. `what` names the quantity in the reason ("the loaded radius").
 PlausibilityRule Range(std::string id, Param q, double lo, double hi, std::string what,
                        std::string why) {
-  const std::string range = Num(lo) + "–" + Num(hi) + " " + Unit(q);
+  const std::string range = Num(lo) + "–" + Num(hi) + Unit(q);
   auto check = [=](const Parameters& p) -> std::string {
     const double v = p[q];
     if (v >= lo && v <= hi) return "";
-    return Value(p, q) + " is " + (v < lo ? "below " + Num(lo) : "above " + Num(hi)) + " " +
+    return Value(p, q) + " is " + (v < lo ? "below " + Num(lo) : "above " + Num(hi)) +
            Unit(q) + "; " + what + " is typically within " + range;
   };
   return {std::move(id), {q}, range, std::move(why), check};
@@ -161,6 +162,26 @@ PlausibilityRule InertiaXVsZ() {
           check};
 }
 
+// lo <= q / r_e0 <= hi, for the tandem cam's lengths.
+PlausibilityRule CamVsRadius(std::string id, Param q, double lo, double hi, std::string what,
+                             std::string why) {
+  auto check = [=](const Parameters& p) -> std::string {
+    const double r = p[q] / p[Param::r_e0];
+    if (!std::isfinite(r) || (r >= lo && r <= hi)) return "";
+    return Value(p, q) + " is " + Num(r) + " r_e0 (" + Value(p, Param::r_e0) + "), " +
+           (r < lo ? "below " + Num(lo) : "above " + Num(hi)) + "; " + what +
+           " is typically within " + Num(lo) + "–" + Num(hi) + " r_e0";
+  };
+  return {std::move(id), {q, Param::r_e0}, Num(lo) + "–" + Num(hi) + " r_e0", std::move(why),
+          check};
+}
+
+const char kCamWhy[] =
+    "The tandem cam (contract §11, Schmeitz 2004) stands for the tire's own outline: a_e and "
+    "b_e are near the free radius (a circle of it is a_e = b_e = R0, c_e = 2). Fitted MF-Swift "
+    "files hold ELLIPS_LENGTH 1.46–1.47 and ELLIPS_HEIGHT 0.955–0.962 times UNLOADED_RADIUS, "
+    "the generic default 1 and 1 (the public .tir corpus); the ranges leave a wide margin.";
+
 // Every rule, in the order of docs/plausibility.md.
 std::vector<PlausibilityRule> MakeRules() {
   using P = Param;
@@ -189,6 +210,20 @@ std::vector<PlausibilityRule> MakeRules() {
   rules.push_back(InertiaXVsZ());
   rules.push_back(SlipStiffnessVsLoad("longitudinal_slip_stiffness_vs_load", P::K_cx));
   rules.push_back(SlipStiffnessVsLoad("lateral_slip_stiffness_vs_load", P::K_cy));
+  rules.push_back(CamVsRadius("cam_length_vs_radius", P::a_e, 0.5, 3, "the cam's half-length",
+                              kCamWhy));
+  rules.push_back(CamVsRadius("cam_height_vs_radius", P::b_e, 0.3, 2, "the cam's half-height",
+                              kCamWhy));
+  rules.push_back(Range("cam_order_range", P::c_e, 1.2, 3, "the cam's exponent",
+                        "c_e = 2 is an ellipse, a larger one flattens the cam's bottom. Fitted "
+                        "MF-Swift files hold ELLIPS_ORDER 1.52–1.53, the generic default 1.8 "
+                        "(the public .tir corpus); the range leaves a wide margin."));
+  rules.push_back(CamVsRadius("cam_distance_vs_radius", P::l_s, 0.05, 1,
+                              "the distance between the cams",
+                              "The two cams stand near the ends of the contact patch: "
+                              "docs/tir.md maps l_s from ELLIPS_SHIFT (0.8–0.83 in the public "
+                              ".tir corpus) times the contact length, about 0.1–0.5 r_e0 for a "
+                              "car tire."));
   return rules;
 }
 

@@ -124,7 +124,7 @@ BasicSystem<T> AssembleAny(const std::vector<const Effect*>& effects, const P& p
 RigidRingModel::RigidRingModel(std::vector<const Effect*> effects)
     : effects_(std::move(effects)) {
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) used_.push_back(ParamAt(i));
+    if (IsBaseline(ParamAt(i))) used_.push_back(ParamAt(i));
   }
   for (const Effect* e : effects_) {
     for (Param p : e->parameters()) used_.push_back(p);

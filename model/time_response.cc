@@ -136,19 +136,30 @@ Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
 namespace {
 
 // The grid through 0 and the sample times, no step longer than kTravelStep
-// of travel; `sample` the grid index of each sample time.
-std::vector<double> TravelGrid(const std::vector<double>& times, double speed,
-                               std::vector<size_t>* sample) {
+// of travel where X = x0 + V t lies within `reach` (Reach: elsewhere the
+// forces are 0 and a step of any length is exact); `sample` the grid index
+// of each sample time.
+std::vector<double> TravelGrid(const std::vector<double>& times, double speed, double x0,
+                               std::pair<double, double> reach, std::vector<size_t>* sample) {
   std::vector<double> grid = {0.0};
-  for (double t : times) {
-    const double from = grid.back();
+  const auto fine = [&](double from, double to) {  // (from, to] in <= kTravelStep steps
     // (a step of exactly kTravelStep, to rounding, is one)
     const long steps =
-        std::max(1L, static_cast<long>(std::ceil(speed * (t - from) / kTravelStep - 1e-9)));
+        std::max(1L, static_cast<long>(std::ceil(speed * (to - from) / kTravelStep - 1e-9)));
     for (long k = 1; k <= steps; ++k) {
-      grid.push_back(k == steps ? t : from + (t - from) * static_cast<double>(k) / steps);
+      grid.push_back(k == steps ? to : from + (to - from) * static_cast<double>(k) / steps);
     }
-    if (t == from) grid.pop_back();  // a sample at the grid's last time
+  };
+  // The times at which X enters and leaves the reach.
+  const double enter = (reach.first - x0) / speed, leave = (reach.second - x0) / speed;
+  for (double t : times) {
+    const double from = grid.back();
+    if (t > from) {
+      const double a = std::clamp(enter, from, t), b = std::clamp(leave, from, t);
+      if (a > from) grid.push_back(a);  // flat before: one step
+      if (b > a) fine(a, b);
+      if (t > grid.back()) grid.push_back(t);  // flat after: one step
+    }
     sample->push_back(grid.size() - 1);
   }
   return grid;
@@ -191,10 +202,35 @@ Eigen::VectorXd PeriodicStart(const StateSpace& s, const Parameters& p, const Ob
 
 }  // namespace
 
+const char* TimeOutputName(int output) {
+  return output == kRimSpeedOutput ? "rim_speed" : ToString(static_cast<AxleChannel>(output));
+}
+
+std::optional<int> ParseTimeOutput(const std::string& name) {
+  for (int o = 0; o < kNumTimeOutputs; ++o) {
+    if (name == TimeOutputName(o)) return o;
+  }
+  return std::nullopt;
+}
+
+std::string TimeOutputChoices() {
+  std::string out;
+  for (int o = 0; o < kNumTimeOutputs; ++o) out += (o ? ", " : "") + std::string(TimeOutputName(o));
+  return out;
+}
+
+TandemCam CamOf(const Parameters& p) {
+  return {p[Param::a_e], p[Param::b_e], p[Param::c_e], p[Param::l_s]};
+}
+
 bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const ObstacleRun& run,
                       ObstacleResult* r, std::string* why) {
-  if (!(run.speed_m_s >= kSlowestRoll) || !std::isfinite(run.speed_m_s)) {
-    *why = "speed_m_s: rolling over an obstacle needs a speed of at least 0.001 m/s";
+  if (!(run.speed_m_s >= kSlowestRoll && run.speed_m_s <= kFastestRoll)) {
+    *why = "speed_m_s: rolling over an obstacle needs a speed of 0.001 to 200 m/s";
+    return false;
+  }
+  if (!(std::abs(run.position_at_t0_m) <= kFarthestX)) {
+    *why = "position_at_t0_m: must lie within 10000 m of 0";
     return false;
   }
   if (!(p[Param::F_cz0] > 0) || !(p[Param::k_cz] > 0)) {
@@ -223,7 +259,17 @@ bool ObstacleResponse(const RigidRingModel& model, const Parameters& p, const Ob
   StateSpace s;
   if (!RollingStateSpace(model, p, run.speed_m_s, &s, why)) return false;
   std::vector<size_t> sample;
-  const std::vector<double> grid = TravelGrid(run.times_s, run.speed_m_s, &sample);
+  const std::vector<double> grid = TravelGrid(run.times_s, run.speed_m_s, run.position_at_t0_m,
+                                              Reach(run.profile, run.cam), &sample);
+  const double work = PieceEvaluations(run.profile, run.cam) *
+                      (static_cast<double>(grid.size()) +
+                       (run.profile.kind == ProfileKind::kLugs ? run.profile.pitch_m / kTravelStep : 0));
+  if (work > kMostPieceEvaluations) {
+    *why = "profile: the cam would visit " + std::to_string(static_cast<long long>(work)) +
+           " pieces of it over the run, more than 2e8: fewer lanes or points, a shorter run or "
+           "a longer pitch";
+    return false;
+  }
   Eigen::MatrixXd u = Forces(p, run, grid);
   Eigen::RowVectorXd w = u.row(1) / -p[Param::k_cz];
   Eigen::VectorXd x0;

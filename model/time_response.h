@@ -6,6 +6,7 @@
 #ifndef RINGID_MODEL_TIME_RESPONSE_H_
 #define RINGID_MODEL_TIME_RESPONSE_H_
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ namespace ringid {
 // theta_a' (rad/s).
 inline constexpr int kNumTimeOutputs = kNumAxleChannels + 1;
 inline constexpr int kRimSpeedOutput = kNumAxleChannels;
+// The outputs by name: the axle channels' (model/names.h), then "rim_speed".
+const char* TimeOutputName(int output);
+std::optional<int> ParseTimeOutput(const std::string& name);
+// "axle_force_x, ..., rim_speed".
+std::string TimeOutputChoices();
 
 // x' = A x + B u, y = C x: x = [q, q', zeta] over the active coordinates and
 // the lags (at speed; standing, K's contact stiffness stands for them);
@@ -43,17 +49,24 @@ bool RollingStateSpace(const RigidRingModel& model, const Parameters& p, double 
 Eigen::MatrixXd SimulateHeld(const StateSpace& s, const std::vector<double>& t,
                              const Eigen::MatrixXd& u, const Eigen::VectorXd& x0 = {});
 
-// Rolling at speed_m_s (at least kSlowestRoll) over `profile` from X =
+// Rolling at speed_m_s (kSlowestRoll to kFastestRoll) over `profile` from X =
 // position_at_t0_m at t = 0 (§11): the forces u = [-F_cz0 beta, -k_cz w,
 // -F_cz0 beta_x] at X = position_at_t0_m + V t, held first-order on a grid
-// of at most kTravelStep of travel through the sample times (at most
-// kMostSteps). From rest at t = 0 (`reaches_at_t0` says where a cam already
+// through the sample times with steps of at most kTravelStep of travel
+// where a cam reaches the profile (Reach; elsewhere the forces are 0 and
+// the grid steps from sample to sample), at most kMostSteps. From rest at t = 0 (`reaches_at_t0` says where a cam already
 // reaches the profile there: simulate refuses that, a fit warns), or for
 // `lugs` the periodic steady state about the forces' mean (the mean's static
 // response left out: §11 reports it apart).
 inline constexpr double kTravelStep = 1e-3;  // m
 inline constexpr double kSlowestRoll = 1e-3;  // m/s
 inline constexpr long kMostSteps = 10'000'000;
+// The most pieces of the profile a run visits (PieceEvaluations times its
+// grid's points): a few seconds.
+inline constexpr double kMostPieceEvaluations = 2e8;
+inline constexpr double kFastestRoll = 200;  // m/s
+// The tandem cam of p: a_e, b_e, c_e, l_s.
+TandemCam CamOf(const Parameters& p);
 struct ObstacleRun {
   double speed_m_s = 0;
   ObstacleProfile profile;

@@ -201,18 +201,24 @@ struct PredictSettings {
   // The orders a lug-force measurement reads (docs/forces.md); at most
   // kMaxOrders (model/campbell.h).
   int max_order = 5;
+  std::string lug_profile;
 
   template <class Archive>
   void Serialize(Archive* a) {
     option::Set(a, &set);
     option::Effects(a, &effects);
     option::Speeds(a, &speeds);
+    a->Visit("lug_profile", &lug_profile,
+             "predict: a lugged tread (ringid-lug-profile/1: a lugs profile of contract §11; "
+             "docs/inputs.md); at each of --speeds (> 0), the forces per lug order 1 to "
+             "--max_order that its lugs put on the ring through the tandem cam, and the axle's "
+             "response to each");
     a->Visit("lugs_per_revolution", &lugs_per_revolution,
              "predict: lug impacts per wheel turn; with --speeds, the lug orders meet the modes "
              "at the critical speeds listed (0: none)");
     a->Visit("max_order", &max_order,
-             "predict --lugs_per_revolution: the highest lug order whose critical speeds are "
-             "listed (at most 200). The default keeps the orders a lug-force measurement reads "
+             "predict --lugs_per_revolution, --lug_profile: the highest lug order whose critical "
+             "speeds, or forces, are listed (at most 200). The default keeps the orders a lug-force measurement reads "
              "(docs/forces.md) and a list of a few dozen lines: order k meets a mode of f Hz at "
              "2 pi r_e0 f / (k lugs) m/s, so slow speeds alone would add hundreds of orders");
   }
@@ -231,6 +237,7 @@ struct SimulateSettings {
   double static_noise = SimulateOptions().static_noise;
   std::string frf;
   bool frf_modes = false;
+  std::string obstacle;
   double prior_spread = 0.1;
   std::vector<Param> fix;
   int seed = FitSettings().seed;
@@ -259,6 +266,11 @@ struct SimulateSettings {
              "its modes; the dataset is then format 3");
     a->Visit("frf_modes", &frf_modes,
              "simulate --frf: write each condition's seven modes beside its FRFs");
+    a->Visit("obstacle", &obstacle,
+             "an obstacle test's layout (ringid-obstacle-spec/1: speeds, profile, sampling, "
+             "channels, noise; docs/inputs.md): adds a condition per speed holding the axle's "
+             "response to rolling over the profile (contract §11), beside the conditions of "
+             "--speeds; the dataset is then format 3");
     a->Visit("prior_spread", &prior_spread,
              "log-normal spread of the dataset's initial values around the truth");
     option::Fix(a, &fix);

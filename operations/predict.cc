@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "datasets/obstacle.h"
 #include "model/campbell.h"
+#include "model/lug_excitation.h"
 #include "operations/model_parameters.h"
 
 namespace ringid {
@@ -61,6 +63,40 @@ std::vector<SpeedModes> ByCondition(const RigidRingModel& model, const Dataset& 
   return out;
 }
 
+// With s.lug_profile: the lugs' excitation at each of s.speeds, into body.
+bool LugsAtSpeeds(const RigidRingModel& model, const Parameters& p, const PredictSettings& s,
+                  PredictBody* body, InputError* error) {
+  if (s.lug_profile.empty()) return true;
+  ObstacleProfile lugs;
+  LoadError load;
+  if (!LoadLugProfile(s.lug_profile, &lugs, &load)) {
+    *error = InputError::Of(load);
+    return false;
+  }
+  for (double v : s.speeds.values) {
+    if (!(v >= kSlowestRoll)) {
+      *error = InputError::Option("--lug_profile: the lugs roll: every speed of --speeds must be "
+                                  "at least 0.001 m/s");
+      return false;
+    }
+  }
+  body->lug_profile = FieldsOf(lugs);
+  body->max_order = s.max_order;
+  body->lug_excitation.emplace();
+  std::vector<double> speeds = s.speeds.values;
+  std::sort(speeds.begin(), speeds.end());
+  for (double v : speeds) {
+    LugExcitation e;
+    std::string why;
+    if (!LugExcitationOf(model, p, lugs, v, s.max_order, &e, &why)) {
+      *error = InputError::Option("--lug_profile: " + why);
+      return false;
+    }
+    body->lug_excitation->push_back(std::move(e));
+  }
+  return true;
+}
+
 }  // namespace
 
 bool PredictBodyOf(const Parameters& parameters, const Dataset* d, const PredictSettings& s,
@@ -86,6 +122,17 @@ bool PredictBodyOf(const Parameters& parameters, const Dataset* d, const Predict
     *error = InputError::Option(line);
     return false;
   }
+  if (!s.lug_profile.empty()) {
+    std::vector<Param> cam;
+    for (int i = 0; i < kNumParams; ++i) {
+      if (Info(ParamAt(i)).group == Group::kEnvelope && !p.IsSet(ParamAt(i))) cam.push_back(ParamAt(i));
+    }
+    if (!cam.empty()) {
+      *error = MissingParameters(source, cam, notes);
+      return false;
+    }
+  }
+  if (!LugsAtSpeeds(model, p, s, body, error)) return false;
   solve_error->clear();
   if (!solution.ok) {
     *solve_error = solution.error.empty() ? std::string("the model cannot be solved") : solution.error;

@@ -7,8 +7,10 @@
 #include <random>
 
 #include "datasets/frf_spec.h"
+#include "datasets/obstacle.h"
 #include "datasets/synthetic.h"
 #include "model/frequency_response.h"
+#include "model/time_response.h"
 #include "operations/model_parameters.h"
 
 namespace ringid {
@@ -65,6 +67,49 @@ bool PlanFrfs(const std::string& path, const ModalModel& model, Dataset* d, doub
   }
   *noise = spec.noise.value_or(*noise);
   d->description += "; the FRFs laid out by " + path;
+  return true;
+}
+
+// The obstacle conditions of the spec at `path` after d's own (contract
+// §11), the tandem cam known at the truth; its warnings on stderr.
+bool AddObstacles(const std::string& path, const std::string& parameters,
+                  const RigidRingModel& model, const Parameters& truth,
+                  const std::vector<double>& loads, std::mt19937_64* rng, Dataset* d,
+                  InputError* error) {
+  ObstacleSpec spec;
+  LoadError load;
+  if (!LoadObstacleSpec(path, &spec, &load)) {
+    *error = InputError::Of(load);
+    return false;
+  }
+  std::vector<Param> cam;
+  for (int i = 0; i < kNumParams; ++i) {
+    const Param q = ParamAt(i);
+    if (Info(q).group != Group::kEnvelope) continue;
+    if (!truth.IsSet(q)) cam.push_back(q);
+    d->known[q] = truth[q];
+  }
+  if (!cam.empty()) {
+    *error = MissingParameters(parameters, cam);
+    return false;
+  }
+  const double values = 8.0 * spec.samples * static_cast<double>(spec.outputs.size()) *
+                        static_cast<double>(spec.speeds_m_s.size() * std::max<size_t>(1, loads.size()));
+  if (values > kMaxFileBytes) {
+    *error = InputError::Option("--obstacle: " + path + " with --loads lays out more samples than a "
+                                "dataset of at most " + std::to_string(kMaxFileBytes) + " bytes holds");
+    return false;
+  }
+  std::vector<Condition> conditions;
+  std::vector<std::string> warnings;
+  if (!SimulateObstacles(model, truth, spec, loads, rng, &conditions, &warnings, &load)) {
+    *error = InputError::Of(load);
+    return false;
+  }
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), w.c_str());
+  for (Condition& c : conditions) d->conditions.push_back(std::move(c));  // "obstacle_V": new names
+  d->format = 3;
+  d->description += "; the obstacle tests laid out by " + path;
   return true;
 }
 
@@ -139,10 +184,17 @@ bool SimulateDataset(const std::string& parameters, const std::string& output,
     *failed = true;
     return Fail(line);
   }
-  if (const size_t bytes = s.frf.empty() ? 0 : DatasetToJson(d).size(); bytes > kMaxFileBytes) {
-    return Fail("--frf: " + s.frf + " lays out a dataset of " + std::to_string(bytes) +
-                " bytes, more than the " + std::to_string(kMaxFileBytes) +
-                " a dataset may have: fewer lines, functions or conditions");
+  if (!s.obstacle.empty() && !AddObstacles(s.obstacle, parameters, model, truth, s.loads.values,
+                                            &rng, &d, error)) {
+    return false;
+  }
+  const bool large = !s.frf.empty() || !s.obstacle.empty();
+  if (const size_t bytes = large ? DatasetToJson(d).size() : 0; bytes > kMaxFileBytes) {
+    std::string spec = s.frf.empty() ? "" : "--frf: " + s.frf;
+    if (!s.obstacle.empty()) spec += (spec.empty() ? "" : " and ") + ("--obstacle: " + s.obstacle);
+    return Fail(spec + " lays out a dataset of " + std::to_string(bytes) + " bytes, more than the " +
+                std::to_string(kMaxFileBytes) + " a dataset may have: fewer samples, " +
+                "channels or conditions");
   }
   out->truth = MakeTruth(model, truth, d, output);
   out->effects = s.effects;

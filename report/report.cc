@@ -116,6 +116,30 @@ PredictBody PredictBody::From(const ModalSolution& solution) {
   return b;
 }
 
+std::vector<std::array<double, kLugColumns>> ShownAmplitudes(const LugExcitation& e) {
+  std::vector<std::array<double, kLugColumns>> shown;
+  std::array<double, kLugColumns> largest{};
+  for (const LugOrderExcitation& k : e.orders) {
+    std::array<double, kLugColumns> row;
+    for (int c = 0; c < kLugColumns; ++c) {
+      row[c] = std::abs(c < 3 ? k.force[c] : k.response[c - 3]);
+      largest[c] = std::max(largest[c], row[c]);
+    }
+    shown.push_back(row);
+  }
+  for (auto& row : shown) {
+    for (int c = 0; c < kLugColumns; ++c) row[c] = row[c] < 1e-9 * largest[c] ? 0.0 : row[c];
+  }
+  return shown;
+}
+
+std::array<double, 3> ShownMeans(const LugExcitation& e) {
+  std::array<double, 3> mean = e.mean_force;
+  const double top = std::max({std::abs(mean[0]), std::abs(mean[1]), std::abs(mean[2])});
+  for (double& m : mean) m = std::abs(m) < 1e-9 * top ? 0.0 : m;
+  return mean;
+}
+
 std::string PredictBody::FullReport() const {
   std::string text;
   char line[160];
@@ -168,6 +192,35 @@ std::string PredictBody::FullReport() const {
       std::snprintf(line, sizeof line, "  order %2d meets %-20s at %7.3f m/s, %8.2f Hz, zeta %.4f\n",
                     c.order, LabelName(c.label), c.speed_m_s, c.frequency_hz, c.damping_ratio);
       text += line;
+    }
+  }
+  if (lug_excitation) {
+    std::snprintf(line, sizeof line,
+                  "\nlug excitation (amplitudes of orders 1 to %d, --max_order; forces N, axle "
+                  "N and N m, rim rad/s):\n",
+                  max_order.value_or(0));
+    text += line;
+    for (const LugExcitation& e : *lug_excitation) {
+      const std::array<double, 3> mean = ShownMeans(e);
+      std::snprintf(line, sizeof line, "at %g m/s, mean forces F_x %.4g, F_z %.4g, F_y %.4g N\n",
+                    e.speed_m_s, mean[0], mean[1], mean[2]);
+      text += line;
+      text += "order       Hz      F_x      F_z      F_y";
+      for (int c = 0; c < kNumTimeOutputs; ++c) {
+        std::snprintf(line, sizeof line, " %13.13s", TimeOutputName(c));
+        text += line;
+      }
+      text += "\n";
+      const auto shown = ShownAmplitudes(e);
+      for (size_t k = 0; k < e.orders.size(); ++k) {
+        std::snprintf(line, sizeof line, "%5d %8.2f", e.orders[k].order, e.orders[k].frequency_hz);
+        text += line;
+        for (int c = 0; c < kLugColumns; ++c) {
+          std::snprintf(line, sizeof line, c < 3 ? " %8.3g" : " %13.4g", shown[k][c]);
+          text += line;
+        }
+        text += "\n";
+      }
     }
   }
   return text;

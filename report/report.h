@@ -18,14 +18,16 @@
 #include "estimation/identifiability.h"
 #include "estimation/identify.h"
 #include "estimation/status.h"
+#include "datasets/obstacle.h"
 #include "model/campbell.h"
+#include "model/lug_excitation.h"
 #include "model/modal.h"
 #include "model/archive.h"
 
 namespace ringid {
 
 // Raised whenever a field is renamed, removed or changes meaning.
-inline constexpr int kReportSchemaVersion = 16;
+inline constexpr int kReportSchemaVersion = 17;
 
 enum class ReportKind {
   kIdentify, kPredict, kIdentifiability, kCompare, kDiagnose, kCampaign, kForces,
@@ -153,6 +155,10 @@ struct PredictBody {
   std::optional<std::vector<SpeedModes>> conditions;
   // Where the parameters came from: a .tir's derived values and warnings.
   std::optional<std::vector<std::string>> parameter_notes;
+  // With --lug_profile and --speeds: the tread's lugs, and at each speed the
+  // forces per lug order they put on the ring and the axle's response.
+  std::optional<ObstacleProfileFields> lug_profile;
+  std::optional<std::vector<LugExcitation>> lug_excitation;
 
   static PredictBody From(const ModalSolution& solution);
   // The modes as a table (mode, plane, Hz, zeta) and the overdamped labels;
@@ -170,8 +176,17 @@ struct PredictBody {
     a->VisitIfSet("critical_speeds", &critical_speeds);
     a->VisitIfSet("conditions", &conditions);
     a->VisitIfSet("parameter_notes", &parameter_notes);
+    a->VisitIfSet("lug_profile", &lug_profile);
+    a->VisitIfSet("lug_excitation", &lug_excitation);
   }
 };
+
+// The lug excitation as its tables show it (text and page): per order the
+// amplitudes of F_x, F_z, F_y and of the outputs, and the mean forces, each
+// below 1e-9 of its column's largest shown as 0 (round-off).
+inline constexpr int kLugColumns = 3 + kNumTimeOutputs;
+std::vector<std::array<double, kLugColumns>> ShownAmplitudes(const LugExcitation& e);
+std::array<double, 3> ShownMeans(const LugExcitation& e);
 
 // One dataset of a campaign: its report file and the summary's columns.
 struct CampaignRow {

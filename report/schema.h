@@ -91,8 +91,20 @@ class SchemaWriter {
              TypeName<typename T::mapped_type>();
     } else if constexpr (detail::IsEigen<T>::value) {
       return T::ColsAtCompileTime == 1 ? "list of numbers" : "list of rows (lists of numbers)";
+    } else if constexpr (detail::IsVariant<T>::value) {
+      return VariantName<T, 0>();
     } else {
       return "object";
+    }
+  }
+  // "A or B or ...", the alternatives from I on.
+  template <class T, size_t I>
+  std::string VariantName() const {
+    const std::string here = TypeName<std::variant_alternative_t<I, T>>();
+    if constexpr (I + 1 < std::variant_size_v<T>) {
+      return here + " or " + VariantName<T, I + 1>();
+    } else {
+      return here;
     }
   }
 
@@ -102,7 +114,7 @@ class SchemaWriter {
     return std::is_class_v<T> && !std::is_same_v<T, std::string> &&
            !std::is_same_v<T, std::complex<double>> && !detail::IsOptional<T>::value &&
            !detail::IsVector<T>::value && !detail::IsPair<T>::value &&
-           !detail::IsMap<T>::value && !detail::IsEigen<T>::value;
+           !detail::IsMap<T>::value && !detail::IsEigen<T>::value && !detail::IsVariant<T>::value;
   }
   template <class K>
   static std::string KeyName() {

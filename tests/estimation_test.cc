@@ -85,7 +85,7 @@ Dataset WellPosed(const Parameters& truth, std::mt19937_64* rng) {
                                         0.02, rng);
   for (int i = 0; i < kNumParams; ++i) {
     const Param p = ParamAt(i);
-    if (Info(p).group == Group::kEffect) continue;
+    if (!IsBaseline(p)) continue;
     d.known[p] = truth[p];
   }
   for (Param p : kFree) {
@@ -315,7 +315,7 @@ TEST(IdentifyTest, StructuralFreedomIsDecidedExactlyAndNamed) {
     std::string why;
     ASSERT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &why)) << why;
     for (int i = 0; i < kNumParams; ++i) {
-      if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+      if (IsBaseline(ParamAt(i))) d.known[ParamAt(i)] = truth[ParamAt(i)];
     }
     for (Param p : {Param::K_cx, Param::sigma_cx, Param::k_bx, Param::k_btheta}) {
       d.known.erase(p);
@@ -361,7 +361,7 @@ TEST(KnownDependenceTest, EachOneIsTheStructuralFreedomOfTheProblemWithThatParam
   const Parameters truth = ExampleCarTire();
   ASSERT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &car, &why)) << why;
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) car.known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) car.known[ParamAt(i)] = truth[ParamAt(i)];
   }
   for (Param p : {Param::K_cx, Param::k_bx, Param::k_btheta, Param::c_bx, Param::K_cy,
                   Param::k_by, Param::r_e0}) {
@@ -613,7 +613,7 @@ Dataset StandingCarTire(std::vector<Param> free) {
   std::string error;
   EXPECT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &error)) << error;
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) d.known[ParamAt(i)] = truth[ParamAt(i)];
   }
   for (Param p : free) {
     d.known.erase(p);

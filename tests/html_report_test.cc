@@ -1011,6 +1011,30 @@ TEST(HtmlReportTest, PredictAtSpeedsDrawsTheCampbellDiagramAndListsTheCriticalSp
   EXPECT_NE(m.html.find("Critical speeds"), std::string::npos);
 }
 
+// The lug excitation's table: a row per speed and order, each amplitude as
+// the report holds it (|complex| of forces and response).
+TEST(HtmlReportTest, PredictWithALugProfileTablesEachOrdersForcesAndResponse) {
+  RINGID_REQUIRE_TOOL(HaveGnuplot(), "gnuplot");
+  const Made m = Make("predict_lugs", "predict --parameters=" +
+                                          SourcePath("datasets/examples/car_tire.json") +
+                                          " --lug_profile=" +
+                                          SourcePath("datasets/examples/cross_stitch_lugs.json") +
+                                          " --speeds=6,12 --max_order=3");
+  ExpectWellFormed(m.html, 1);
+  EXPECT_NE(m.html.find("Lug excitation"), std::string::npos);
+  ASSERT_EQ(m.report["lug_excitation"].size(), 2u);
+  for (const json& at : m.report["lug_excitation"]) {
+    ASSERT_EQ(at["orders"].size(), 3u);
+    for (const json& k : at["orders"]) {
+      if (k["order"].get<int>() % 2 == 0) continue;  // cross-stitch: F_y at odd orders only
+      const json& fy = k["forces"]["F_y"];
+      char text[32];
+      std::snprintf(text, sizeof text, "%.4g", std::hypot(fy["re"].get<double>(), fy["im"].get<double>()));
+      EXPECT_NE(m.html.find(std::string(">") + text + "<"), std::string::npos) << text;
+    }
+  }
+}
+
 // The forces page gives each condition's model range and flags the orders
 // above it: the shipped response under car_tire.json, whose range ends at
 // 1.5 x 117.888 Hz (drum_6: orders 3-5 above; drum_18: every order).

@@ -112,7 +112,7 @@ Dataset WellPosed(const Parameters& truth, std::mt19937_64* rng,
     }
   }
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) d.known[ParamAt(i)] = truth[ParamAt(i)];
   }
   for (Param p : free) {
     d.known.erase(p);
@@ -492,7 +492,7 @@ Dataset CarTireTest(const std::vector<double>& speeds, unsigned seed) {
   std::string error;
   EXPECT_TRUE(Simulate(RigidRingModel(), truth, SimulateOptions(), &rng, &d, &error)) << error;
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) d.known[ParamAt(i)] = truth[ParamAt(i)];
   }
   for (Param p : {Param::k_bx, Param::c_bx, Param::K_cx, Param::sigma_cx, Param::k_by,
                   Param::K_cy, Param::sigma_cy}) {

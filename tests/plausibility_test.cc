@@ -58,6 +58,10 @@ Parameters CarTire() {
   p[Param::K_cx] = 8e4;  // 20 F_cz0
   p[Param::sigma_cx] = 0.1;
   p[Param::r_e0] = 0.3;
+  p[Param::a_e] = 0.45;  // the tandem cam: 1.5 and 1 r_e0, l_s near 0.8 of a contact length
+  p[Param::b_e] = 0.3;
+  p[Param::c_e] = 1.6;
+  p[Param::l_s] = 0.11;
   p[Param::k_cz] = 2e5;
   p[Param::k_by] = 2e5;
   p[Param::k_bgamma] = 5e3;
@@ -88,7 +92,7 @@ Parameters PaperSet() {
 
 TEST(PlausibilityTest, ATypicalCarTireRaisesNoFlag) {
   const std::vector<PlausibilityFlag> flags =
-      CheckPlausibility(CarTire(), RigidRingModel().parameters());
+      CheckPlausibility(CarTire(), AllParams());
   for (const PlausibilityFlag& f : flags) ADD_FAILURE() << f.rule << ": " << f.reason;
 }
 
@@ -215,6 +219,19 @@ const std::vector<Case> kCases = {
     {"lateral_slip_stiffness_vs_load", Param::K_cy, 2.1e5, true},
     {"lateral_slip_stiffness_vs_load", Param::K_cy, 1.9e5, false},
     {"lateral_slip_stiffness_vs_load", Param::F_cz0, 1e5, true},
+    // r_e0 = 0.3 m: the cam's lengths 0.5-3, 0.3-2 and 0.05-1 of it.
+    {"cam_length_vs_radius", Param::a_e, 0.1, true},
+    {"cam_length_vs_radius", Param::a_e, 1.0, true},
+    {"cam_length_vs_radius", Param::a_e, 0.2, false},
+    {"cam_height_vs_radius", Param::b_e, 0.05, true},
+    {"cam_height_vs_radius", Param::b_e, 0.7, true},
+    {"cam_height_vs_radius", Param::b_e, 0.1, false},
+    {"cam_order_range", Param::c_e, 1.1, true},
+    {"cam_order_range", Param::c_e, 3.5, true},
+    {"cam_order_range", Param::c_e, 2.0, false},
+    {"cam_distance_vs_radius", Param::l_s, 0.01, true},
+    {"cam_distance_vs_radius", Param::l_s, 0.4, true},
+    {"cam_distance_vs_radius", Param::l_s, 0.05, false},
 };
 
 TEST(PlausibilityTest, EachRuleFiresOutsideItsRangeNamingTheParameterAndNotInside) {

@@ -15,6 +15,7 @@
 #include "apps/reference_doc.h"
 #include "apps/schema_doc.h"
 #include "datasets/frf_spec.h"
+#include "datasets/obstacle.h"
 #include "datasets/parameter_files.h"
 #include "datasets/response_dataset.h"
 #include "datasets/uff_dataset.h"
@@ -323,7 +324,8 @@ TEST(ReportTest, DocsInputsMdGivesEachFilesFormatToWrite) {
   const std::vector<std::string> formats = {
       ringid::kDatasetFormat1, ringid::kDatasetFormat2, ringid::kDatasetFormat3, ringid::kParameterSetFormat,
       ringid::kTruthFormat,    ringid::kResponseFormat, ringid::kLugForcesFormat,
-      ringid::kUffMapFormat,   ringid::kUffMapFormat2, ringid::kFrfSpecFormat};
+      ringid::kUffMapFormat,   ringid::kUffMapFormat2, ringid::kFrfSpecFormat,
+      ringid::kObstacleSpecFormat, ringid::kLugProfileFormat};
   size_t lines = 0;
   for (size_t at = md.find("- `format`: "); at != std::string::npos;
        at = md.find("- `format`: ", at + 1)) {

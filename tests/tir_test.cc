@@ -285,7 +285,7 @@ Parameters MeetsTheFormat(std::mt19937_64* rng) {
   Parameters p = ExampleCarTire();
   for (int i = 0; i < kNumParams; ++i) {
     const Param q = ParamAt(i);
-    if (Info(q).group != Group::kEffect && p.IsSet(q)) p[q] *= std::pow(10.0, decades(*rng));
+    if (IsBaseline(q) && p.IsSet(q)) p[q] *= std::pow(10.0, decades(*rng));
   }
   p[P::I_bz] = p[P::I_bx];
   p[P::k_bz] = p[P::k_bx];

@@ -142,7 +142,7 @@ Status SpeedCarTire(const std::vector<double>& speeds, Dataset* d) {
     return Status::InvalidInput(error);
   }
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) d->known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) d->known[ParamAt(i)] = truth[ParamAt(i)];
   }
   d->ties = {{Param::c_bz, Param::c_bx}, {Param::k_bz, Param::k_bx},
              {Param::c_bpsi, Param::c_bgamma}, {Param::k_bpsi, Param::k_bgamma}};

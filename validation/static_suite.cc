@@ -19,7 +19,7 @@ Parameters ScatteredTire(std::mt19937_64* rng) {
   Parameters p = ExampleCarTire();
   for (int i = 0; i < kNumParams; ++i) {
     const Param q = ParamAt(i);
-    if (!p.IsSet(q) || Info(q).group == Group::kEffect || Info(q).domain != Domain::kPositive) {
+    if (!p.IsSet(q) || !IsBaseline(q) || Info(q).domain != Domain::kPositive) {
       continue;
     }
     const bool inertia = IsMassOrInertia(q);

@@ -119,7 +119,7 @@ Status RunSyntheticSuite(const SuiteOptions& o, SyntheticSuite* suite) {
     for (int k = 0; k < o.replicates; ++k) {
       Dataset d = Simulated(truth, kFrequencyNoise, kDampingNoise, kShapeNoise, &rng, true, true);
       for (int i = 0; i < kNumParams; ++i) {
-        if (Info(ParamAt(i)).group != Group::kEffect) d.known[ParamAt(i)] = truth[ParamAt(i)];
+        if (IsBaseline(ParamAt(i))) d.known[ParamAt(i)] = truth[ParamAt(i)];
       }
       for (Param p : kSyntheticFree) {  // start dampers low and stiffnesses high
         d.known.erase(p);
@@ -222,7 +222,7 @@ Status RollingDataset(const Parameters& truth, const std::vector<double>& speeds
   std::string why;
   if (!Simulate(RigidRingModel(), truth, so, rng, d, &why)) return Status::InvalidInput(why);
   for (int i = 0; i < kNumParams; ++i) {
-    if (Info(ParamAt(i)).group != Group::kEffect) d->known[ParamAt(i)] = truth[ParamAt(i)];
+    if (IsBaseline(ParamAt(i))) d->known[ParamAt(i)] = truth[ParamAt(i)];
   }
   for (const auto& [tied, to] : kRollingTies) {
     d->known.erase(tied);

@@ -120,6 +120,39 @@ void PredictPage(const PredictReport& report, Page* page) {
   page->TableSection("Critical speeds: where a lug order meets a mode",
                      {"order", "mode", "speed (m/s)", "frequency (Hz)", "damping ratio there"},
                      critical);
+  if (r.lug_excitation) {
+    page->Heading("Lug excitation");
+    if (r.lug_profile) {
+      const ObstacleProfileFields& l = *r.lug_profile;
+      page->Facts({{"lug height (m)", NumberCell(l.height_m, "%.4g")},
+                   {"lug length (m)", NumberCell(l.length_m, "%.4g")},
+                   {"pitch (m)", NumberCell(l.pitch_m, "%.4g")},
+                   {"tread width (m)", NumberCell(l.width_m, "%.4g")},
+                   {"angle (deg)", NumberCell(l.angle_deg, "%.4g")},
+                   {"pattern", TextCell(l.pattern ? ToString(*l.pattern) : "")}});
+    }
+    std::vector<std::string> head = {"speed (m/s)", "order", "frequency (Hz)", "|F_x| (N)",
+                                     "|F_z| (N)", "|F_y| (N)"};
+    for (int c = 0; c < kNumTimeOutputs; ++c) head.push_back(std::string("|") + TimeOutputName(c) + "|");
+    std::vector<Row> means, rows;
+    for (const LugExcitation& e : *r.lug_excitation) {
+      const std::array<double, 3> mean = ShownMeans(e);
+      means.push_back({NumberCell(e.speed_m_s, "%.3g"), NumberCell(mean[0], "%.4g"),
+                       NumberCell(mean[1], "%.4g"), NumberCell(mean[2], "%.4g")});
+      const auto shown = ShownAmplitudes(e);
+      for (size_t k = 0; k < e.orders.size(); ++k) {
+        Row row = {NumberCell(e.speed_m_s, "%.3g"), NumberCell(e.orders[k].order, "%.0f"),
+                   NumberCell(e.orders[k].frequency_hz, "%.2f")};
+        for (double a : shown[k]) row.push_back(NumberCell(a, "%.4g"));
+        rows.push_back(std::move(row));
+      }
+    }
+    page->TableSection("Mean forces: a static offset, apart from the orders",
+                       {"speed (m/s)", "F_x (N)", "F_z (N)", "F_y (N)"}, means);
+    page->TableSection("The forces of each lug order on the ring, and the axle's response (N, "
+                       "N m; rim_speed rad/s; below 1e-9 of a column's largest: 0, round-off)",
+                       head, rows);
+  }
 }
 
 void ProvenanceSection(const Provenance& p, Page* page) {
