@@ -11,12 +11,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-targets=${*:-dataset dataset3 model identify tir forces uff uff58}
+targets=${*:-dataset dataset3 model identify tir forces uff uff58 obstacle}
 sanitizers=${FUZZ_SANITIZERS:-address,undefined}
 build=build-asan
 [ "$sanitizers" = address,undefined ] || build=build-fuzz-${sanitizers//,/-}
 fuzzers=(dataset_fuzzer dataset3_fuzzer model_fuzzer identify_fuzzer tir_fuzzer forces_fuzzer
-         uff_fuzzer uff58_fuzzer)
+         uff_fuzzer uff58_fuzzer obstacle_fuzzer)
 bash scripts/sanitized_build.sh "$build" "$sanitizers" "${fuzzers[@]}"
 export ASAN_OPTIONS=detect_leaks=1
 for target in $targets; do
@@ -26,6 +26,7 @@ for target in $targets; do
   [ "$target" = dataset ] && cp datasets/paper/*.json "$work"/
   [ "$target" = tir ] && cp datasets/examples/*.tir "$work"/
   [ "$target" = uff ] && cp datasets/examples/*.uff "$work"/
+  [ "$target" = obstacle ] && cp datasets/examples/cleat_spec.json datasets/examples/cross_stitch_lugs.json "$work"/
   echo "fuzzing $target for ${seconds}s" >&2
   # The last status line carries the executions reached over all workers.
   log=$build/fuzz-$target.log

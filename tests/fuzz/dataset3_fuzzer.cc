@@ -1,5 +1,5 @@
-// Arbitrary bytes -> a format-3 dataset (contract §10: modes, frf and static
-// per condition) or a clean one-line error. One that loads writes back to
+// Arbitrary bytes -> a format-3 dataset (contract §10: modes, frf, static and
+// obstacle per condition) or a clean one-line error. One that loads writes back to
 // bytes that read back and write again the same, and its residuals at the
 // start evaluate or fail cleanly (the static solve included).
 #include <cstdint>
@@ -27,6 +27,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   for (size_t c = 0; c < d.conditions.size(); ++c) {
     if (again.conditions[c].frf.has_value() != d.conditions[c].frf.has_value()) std::abort();
+    if (again.conditions[c].obstacle.has_value() != d.conditions[c].obstacle.has_value()) {
+      std::abort();
+    }
   }
   Status status;
   const RigidRingModel model;
