@@ -89,9 +89,7 @@ Truth MakeTruth(const RigidRingModel& model, const Parameters& truth, const Data
   std::vector<Param> used = model.parameters();
   if (std::any_of(d.conditions.begin(), d.conditions.end(),
                   [](const Condition& c) { return c.obstacle.has_value(); })) {
-    for (int i = 0; i < kNumParams; ++i) {
-      if (Info(ParamAt(i)).group == Group::kEnvelope) used.push_back(ParamAt(i));
-    }
+    used.insert(used.end(), CamParameters().begin(), CamParameters().end());
   }
   for (Param q : used) {
     if (!d.IsPerCondition(q)) t.parameters[ParamName(q)].value = truth[q];

@@ -11,6 +11,7 @@
 
 #include "datasets/frf_spec.h"
 #include "datasets/measurement.h"
+#include "model/plausibility.h"
 #include "model/time_response.h"
 
 namespace ringid {
@@ -277,12 +278,6 @@ std::string CompactNumber(double v) {
   return text;
 }
 
-// "%.4g" of v.
-std::string Short(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
 
 }  // namespace
 
@@ -314,23 +309,23 @@ bool SimulateObstacles(const RigidRingModel& model, const Parameters& truth,
     if (r.reaches_at_t0) {
       error->field = "position_at_t0_m";
       error->message = "a cam reaches the profile at t = 0: start below " +
-                       Short(FirstContact(run.profile, run.cam)) + " m, where the road under " +
+                       FormatSignificant3(FirstContact(run.profile, run.cam)) + " m, where the road under " +
                        "every cam is flat (contract §11)";
       return false;
     }
     if (!(r.lowest_contact_force_n > 0)) {
       error->field = "profile";
       error->message = "condition " + c.name + ": the tire leaves the road at t = " +
-                       Short(r.lowest_at_s) + " s (contact force " +
-                       Short(r.lowest_contact_force_n) + " N): the linear model does not hold " +
+                       FormatSignificant3(r.lowest_at_s) + " s (contact force " +
+                       FormatSignificant3(r.lowest_contact_force_n) + " N): the linear model does not hold " +
                        "(contract §11): a lower obstacle or a higher load";
       return false;
     }
     if (r.largest_load_change > kLargeLoadChange) {
       warnings->push_back("condition " + c.name + ": the contact force changes by " +
-                          Short(100 * r.largest_load_change) + " % of F_cz0 at t = " +
-                          Short(r.largest_at_s) + " s, more than " +
-                          Short(100 * kLargeLoadChange) + " %: the linear model is stretched");
+                          FormatSignificant3(100 * r.largest_load_change) + " % of F_cz0 at t = " +
+                          FormatSignificant3(r.largest_at_s) + " s, more than " +
+                          FormatSignificant3(100 * kLargeLoadChange) + " %: the linear model is stretched");
     }
     ObstacleTest test;
     test.profile = spec.profile;

@@ -86,22 +86,18 @@ ParameterKey ParameterSetup::key(int i) const {
 }
 
 double ParameterSetup::ToPhysical(int i, double x) const {
-  if (is_above_one(i)) return 1 + std::exp(x);
   return is_log(i) ? std::exp(x) : x * TypicalScale(free_[i]);
 }
 
 double ParameterSetup::ToCoordinate(int i, double value) const {
-  if (is_above_one(i)) return std::log(value - 1);
   return is_log(i) ? std::log(value) : value / TypicalScale(free_[i]);
 }
 
 double ParameterSetup::PhysicalStd(int i, double x, double sd) const {
-  if (is_above_one(i)) return std::exp(x) * sd;
   return is_log(i) ? std::exp(x) * sd : sd * TypicalScale(free_[i]);
 }
 
 std::pair<double, double> ParameterSetup::Interval95(int i, double x, double sd) const {
-  if (is_above_one(i)) return {1 + std::exp(x - kNormal95 * sd), 1 + std::exp(x + kNormal95 * sd)};
   if (is_log(i)) return {std::exp(x - kNormal95 * sd), std::exp(x + kNormal95 * sd)};
   const double v = ToPhysical(i, x), half = kNormal95 * PhysicalStd(i, x, sd);
   return {v - half, v + half};

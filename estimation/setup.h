@@ -1,6 +1,5 @@
 // Free, fixed and tied parameters, and the coordinates the optimisers move:
-// log(value) for positive parameters, log(value - 1) for those above 1,
-// value / TypicalScale otherwise.
+// log(value) for positive parameters, value / TypicalScale otherwise.
 // Shared coordinates come first, then each condition's own (docs/conventions.md §7).
 #ifndef RINGID_ESTIMATION_SETUP_H_
 #define RINGID_ESTIMATION_SETUP_H_
@@ -45,10 +44,6 @@ class ParameterSetup {
   const std::map<Param, Param>& ties() const { return ties_; }
   bool is_log(int i) const {
     return Info(free_[i]).domain == Domain::kPositive;
-  }
-  // Coordinate i is log(value - 1) (c_e > 1).
-  bool is_above_one(int i) const {
-    return Info(free_[i]).domain == Domain::kAboveOne;
   }
   // Coordinate i at x as a parameter value, and a coordinate standard
   // deviation there in the parameter's units (delta method for log).

@@ -2,20 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include "model/plausibility.h"
 
 namespace ringid {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// "%g" of v.
-std::string Short(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
 
 // A linear piece of the profile over [x0, x1] (closed: a jump's higher side
 // counts at the jump, as the sup in H does).
@@ -91,17 +86,17 @@ LanePattern ObstacleProfile::Pattern() const {
 
 std::string ObstacleProfile::Invalid() const {
   const auto within = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
-  const std::string height = "must be a height of at most " + Short(kMostObstacleHeight) + " m either way";
+  const std::string height = "must be a height of at most " + FormatSignificant3(kMostObstacleHeight) + " m either way";
   if (kind != ProfileKind::kPoints) {
     if (!within(height_m, -kMostObstacleHeight, kMostObstacleHeight)) return "height_m: " + height;
     if (!within(length_m, kShortestObstacle, kLongestObstacle)) {
-      return "length_m: must lie in [" + Short(kShortestObstacle) + ", " + Short(kLongestObstacle) + "] m";
+      return "length_m: must lie in [" + FormatSignificant3(kShortestObstacle) + ", " + FormatSignificant3(kLongestObstacle) + "] m";
     }
   }
   if (kind == ProfileKind::kLugs &&
       !(within(pitch_m, kShortestPitch, kLongestPitch) && pitch_m > length_m)) {
-    return "pitch_m: must exceed length_m (a lug's length) and lie in [" + Short(kShortestPitch) +
-           ", " + Short(kLongestPitch) + "] m";
+    return "pitch_m: must exceed length_m (a lug's length) and lie in [" + FormatSignificant3(kShortestPitch) +
+           ", " + FormatSignificant3(kLongestPitch) + "] m";
   }
   if (kind == ProfileKind::kPoints) {
     if (x_m.size() < 2 || x_m.size() != h_m.size()) {
@@ -110,19 +105,19 @@ std::string ObstacleProfile::Invalid() const {
     if (x_m.size() > kMostPoints) return "x_m: at most " + std::to_string(kMostPoints) + " points";
     for (size_t i = 0; i < x_m.size(); ++i) {
       if (!within(x_m[i], -kFarthestX, kFarthestX)) {
-        return "x_m: must lie within " + Short(kFarthestX) + " m of 0";
+        return "x_m: must lie within " + FormatSignificant3(kFarthestX) + " m of 0";
       }
       if (!within(h_m[i], -kMostObstacleHeight, kMostObstacleHeight)) return "h_m: " + height;
       if (i > 0 && !(x_m[i] - x_m[i - 1] >= kShortestObstacle * (1 - 1e-9))) {
-        return "x_m: must increase by at least " + Short(kShortestObstacle) + " m";
+        return "x_m: must increase by at least " + FormatSignificant3(kShortestObstacle) + " m";
       }
     }
   }
   if (width_m && !within(*width_m, kShortestObstacle, kWidestTread)) {
-    return "width_m: must lie in [" + Short(kShortestObstacle) + ", " + Short(kWidestTread) + "] m";
+    return "width_m: must lie in [" + FormatSignificant3(kShortestObstacle) + ", " + FormatSignificant3(kWidestTread) + "] m";
   }
   if (!within(angle_deg, -kSteepestAngleDeg, kSteepestAngleDeg)) {
-    return "angle_deg: must lie in [-" + Short(kSteepestAngleDeg) + ", " + Short(kSteepestAngleDeg) + "]";
+    return "angle_deg: must lie in [-" + FormatSignificant3(kSteepestAngleDeg) + ", " + FormatSignificant3(kSteepestAngleDeg) + "]";
   }
   if (lanes < 1 || lanes > kMostLanes) return "lanes: must lie in [1, " + std::to_string(kMostLanes) + "]";
   if (Pattern() == LanePattern::kAlternating) {
@@ -135,11 +130,11 @@ std::string ObstacleProfile::Invalid() const {
 
 std::string TandemCam::Invalid() const {
   const auto length = [](double v) { return v > 0 && v <= kLongestCam; };
-  const std::string most = "m, at most " + Short(kLongestCam) + " m";
+  const std::string most = "m, at most " + FormatSignificant3(kLongestCam) + " m";
   if (!length(a_e)) return "a_e: must be a positive length of " + most;
   if (!length(b_e)) return "b_e: must be a positive length of " + most;
   if (!(c_e > 1 && c_e <= kHighestCamOrder)) {
-    return "c_e: must exceed 1 and be at most " + Short(kHighestCamOrder);
+    return "c_e: must exceed 1 and be at most " + FormatSignificant3(kHighestCamOrder);
   }
   if (!length(l_s)) return "l_s: must be a positive length of " + most;
   return "";
@@ -239,7 +234,7 @@ std::pair<double, double> Reach(const ObstacleProfile& profile, const TandemCam&
 }
 
 double FirstContact(const ObstacleProfile& profile, const TandemCam& cam) {
-  return profile.kind == ProfileKind::kLugs ? -kInf : Reach(profile, cam).first;
+  return Reach(profile, cam).first;
 }
 
 }  // namespace ringid

@@ -17,6 +17,17 @@ const std::array<ParameterInfo, kNumParams> kCatalogue = {{
 
 const ParameterInfo& Info(Param p) { return kCatalogue[static_cast<int>(p)]; }
 
+const std::vector<Param>& CamParameters() {
+  static const std::vector<Param> cam = [] {
+    std::vector<Param> out;
+    for (int i = 0; i < kNumParams; ++i) {
+      if (Info(ParamAt(i)).group == Group::kEnvelope) out.push_back(ParamAt(i));
+    }
+    return out;
+  }();
+  return cam;
+}
+
 double TypicalScale(Param p) {
   switch (p) {
     case Param::dk_bz: return 1e4;      // N/m, a few % of k_bz

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <ceres/jet.h>
 
@@ -12,8 +13,9 @@
 
 namespace ringid {
 
-// How a parameter may vary. Estimation works in log space for kPositive and
-// in log(value - 1) for kAboveOne.
+// How a parameter may vary. Estimation works in log space for kPositive.
+// kAboveOne (the cam's c_e) is read only by obstacle conditions, which no fit
+// takes yet.
 enum class Domain { kPositive, kNonNegative, kReal, kAboveOne };
 
 // Which part of the model a parameter belongs to. kEnvelope: the tandem cam
@@ -129,6 +131,9 @@ inline bool IsDamping(Param p) {
 inline bool IsBaseline(Param p) {
   return Info(p).group != Group::kEffect && Info(p).group != Group::kEnvelope;
 }
+
+// The tandem cam's parameters (Group::kEnvelope), in catalogue order.
+const std::vector<Param>& CamParameters();
 
 // The belt's mass and the belt's and rim's inertias: what a force-calibrated
 // FRF weighs and modes cannot (they carry no scale).

@@ -150,8 +150,12 @@ std::vector<double> TravelGrid(const std::vector<double>& times, double speed, d
       grid.push_back(k == steps ? to : from + (to - from) * static_cast<double>(k) / steps);
     }
   };
-  // The times at which X enters and leaves the reach.
-  const double enter = (reach.first - x0) / speed, leave = (reach.second - x0) / speed;
+  // The times at which X enters and leaves the reach, a step early and late:
+  // at its edge H may jump (a cam's tip on an obstacle above b_e), and the
+  // held forces must ramp to it over one fine step from a point where they
+  // are 0.
+  const double enter = (reach.first - kTravelStep - x0) / speed,
+               leave = (reach.second + kTravelStep - x0) / speed;
   for (double t : times) {
     const double from = grid.back();
     if (t > from) {

@@ -124,8 +124,8 @@ bool PredictBodyOf(const Parameters& parameters, const Dataset* d, const Predict
   }
   if (!s.lug_profile.empty()) {
     std::vector<Param> cam;
-    for (int i = 0; i < kNumParams; ++i) {
-      if (Info(ParamAt(i)).group == Group::kEnvelope && !p.IsSet(ParamAt(i))) cam.push_back(ParamAt(i));
+    for (Param q : CamParameters()) {
+      if (!p.IsSet(q)) cam.push_back(q);
     }
     if (!cam.empty()) {
       *error = MissingParameters(source, cam, notes);

@@ -83,9 +83,7 @@ bool AddObstacles(const std::string& path, const std::string& parameters,
     return false;
   }
   std::vector<Param> cam;
-  for (int i = 0; i < kNumParams; ++i) {
-    const Param q = ParamAt(i);
-    if (Info(q).group != Group::kEnvelope) continue;
+  for (Param q : CamParameters()) {
     if (!truth.IsSet(q)) cam.push_back(q);
     d->known[q] = truth[q];
   }

@@ -239,12 +239,12 @@ TEST(TimeResponseTest, AlternatingLugsShakeTheAxleVerticallyAtEvenOrdersAndLater
 
 // A cleat at 15 m/s sampled at 2 kHz (7.5 mm of travel, held on 8 steps of
 // the 1 mm grid) against samples 0.094 mm apart: the grid is fine enough.
-TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
+void ExpectConvergedOnTheMillimetreGrid(const TandemCam& cam, double tolerance) {
   ObstacleRun run;
   run.speed_m_s = 15;
   run.profile.height_m = 0.015;
   run.profile.length_m = 0.02;
-  run.cam = {0.12, 0.30, 1.8, 0.10};
+  run.cam = cam;
   run.position_at_t0_m = -0.3;
   ObstacleRun fine = run;
   for (int k = 0; k < 100; ++k) run.times_s.push_back(k * 5e-4);
@@ -259,9 +259,21 @@ TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
   for (int o = 0; o < kNumTimeOutputs; ++o) {
     const double peak = z.row(o).cwiseAbs().maxCoeff();
     for (int k = 0; k < 100; ++k) {
-      EXPECT_NEAR(y(o, k), z(o, 80 * k), 1e-3 * peak) << o << " " << k;
+      EXPECT_NEAR(y(o, k), z(o, 80 * k), tolerance * peak) << o << " " << k;
     }
   }
+}
+
+TEST(TimeResponseTest, ACleatsResponseOnTheMillimetreGridIsConverged) {
+  ExpectConvergedOnTheMillimetreGrid({0.12, 0.30, 1.8, 0.10}, 1e-3);
+}
+
+// A cleat higher than the cam's half-height b_e: where the cam's tip, b_e
+// below its centre, meets an edge of the cleat, H jumps by h - b_e, and the
+// held forces ramp each jump over one step. On the 1 mm grid, against 0.094
+// mm, that costs 1.4 % of the peak here.
+TEST(TimeResponseTest, ACleatAboveTheCamsHalfHeightIsStruckWithinAMillimetre) {
+  ExpectConvergedOnTheMillimetreGrid({0.12, 0.01, 1.8, 0.10}, 2e-2);
 }
 
 // Slowly over a long, low cleat the belt follows statically: the contact
